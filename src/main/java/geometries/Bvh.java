@@ -1,0 +1,378 @@
+package geometries;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import primitives.Point;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * A bounding volume hierarchy: just another {@link Intersectable}. Built once from the leaves of
+ * a {@link Geometries} (a mesh contributes each triangle as a primitive), by the binned
+ * surface-area heuristic, and flattened into arrays in depth-first order so that a walk touches
+ * no objects but the primitives it tests. Unbounded leaves (planes, tubes, empty containers) are
+ * kept in a short list beside the tree.
+ *
+ * <p>Immutable after {@link #build}; any number of threads may query it. The build is
+ * deterministic: the same scene gives the same tree.
+ */
+public final class Bvh extends Intersectable {
+    private static final int BINS = 16;
+    private static final int MAX_LEAF = 4;
+    /** Cost of visiting a node relative to testing one primitive, for the SAH. */
+    private static final double TRAVERSAL_COST = 1.0;
+
+    private final Intersectable[] unbounded;
+    // Per primitive, in leaf order: its owner and its index within the owner.
+    private final Intersectable[] owner;
+    private final int[] prim;
+    // Per node, depth-first: the box (6 doubles: min xyz, max xyz); for a leaf (count > 0) its first
+    // primitive; for an inner node (count == 0) its right child (the left child is the next node),
+    // and the split axis; skip = the first node after this node's subtree.
+    private final double[] box;
+    private final int[] firstOrRight;
+    private final int[] count;
+    private final byte[] axis;
+    private final int[] skip;
+    private final int nodeCount;
+    private final int depth;
+
+    /** Indexes the leaves of {@code geometries} as they are now. */
+    public static Bvh build(Geometries geometries) {
+        return new Bvh(geometries);
+    }
+
+    private Bvh(Geometries geometries) {
+        List<Intersectable> leaves = new ArrayList<>();
+        geometries.collectLeaves(leaves);
+        List<Intersectable> free = new ArrayList<>();
+        int total = 0;
+        for (Intersectable leaf : leaves) {
+            if (leaf.getBoundingBox() == null) free.add(leaf);
+            else total += leaf.primitiveCount();
+        }
+        unbounded = free.toArray(new Intersectable[0]);
+
+        Builder b = new Builder(total);
+        for (Intersectable leaf : leaves) {
+            if (leaf.getBoundingBox() == null) continue;
+            for (int i = 0, n = leaf.primitiveCount(); i < n; ++i) b.addPrimitive(leaf, i, leaf.primitiveBounds(i));
+        }
+        b.build();
+        owner = b.orderedOwner;
+        prim = b.orderedPrim;
+        nodeCount = b.nodes;
+        box = b.box;
+        firstOrRight = b.firstOrRight;
+        count = b.count;
+        axis = b.axis;
+        skip = b.skip;
+        depth = b.maxDepth + 1;
+    }
+
+    /** @return the number of nodes in the tree (0 when nothing is bounded) */
+    public int nodeCount() {
+        return nodeCount;
+    }
+
+    /** @return the number of bounded primitives indexed */
+    public int primitiveTotal() {
+        return prim.length;
+    }
+
+    /** @return the number of unbounded geometries tested beside the tree */
+    public int unboundedCount() {
+        return unbounded.length;
+    }
+
+    /** @return the depth of the tree (1 for a single leaf, 0 when empty) */
+    public int depth() {
+        return nodeCount == 0 ? 0 : depth;
+    }
+
+    private boolean boxHit(int node, double ox, double oy, double oz, double ix, double iy, double iz, double tMax) {
+        int o = node * 6;
+        double[] bx = box;
+        double t0 = 0, t1 = tMax;
+        double a = (bx[o] - ox) * ix, b = (bx[o + 3] - ox) * ix;
+        if (a > b) { double s = a; a = b; b = s; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        a = (bx[o + 1] - oy) * iy;
+        b = (bx[o + 4] - oy) * iy;
+        if (a > b) { double s = a; a = b; b = s; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        a = (bx[o + 2] - oz) * iz;
+        b = (bx[o + 5] - oz) * iz;
+        if (a > b) { double s = a; a = b; b = s; }
+        if (a > t0) t0 = a;
+        if (b < t1) t1 = b;
+        return t0 <= t1;
+    }
+
+    @Override
+    public boolean closestHit(Ray ray, Hit hit) {
+        boolean found = false;
+        for (Intersectable u : unbounded) found |= u.closestHit(ray, hit);
+        if (nodeCount == 0) return found;
+        Point h = ray.getHead();
+        Vector d = ray.getDirection();
+        double ox = h.getX(), oy = h.getY(), oz = h.getZ();
+        double ix = 1 / d.getX(), iy = 1 / d.getY(), iz = 1 / d.getZ();
+        int negative = (ix < 0 ? 1 : 0) | (iy < 0 ? 2 : 0) | (iz < 0 ? 4 : 0); // direction sign bits
+        int[] stack = hit.stack;
+        if (stack.length < depth) stack = hit.stack = new int[depth];
+        int top = 0;
+        int node = 0;
+        while (true) {
+            if (boxHit(node, ox, oy, oz, ix, iy, iz, hit.t)) {
+                int n = count[node];
+                if (n > 0) {
+                    for (int k = firstOrRight[node], end = k + n; k < end; ++k)
+                        found |= owner[k].closestHit(prim[k], ray, hit);
+                } else {
+                    // Nearer child first: when the ray goes down the split axis, the right (upper) child is nearer.
+                    if ((negative >> axis[node] & 1) != 0) {
+                        stack[top++] = node + 1;
+                        node = firstOrRight[node];
+                    } else {
+                        stack[top++] = firstOrRight[node];
+                        node = node + 1;
+                    }
+                    continue;
+                }
+            }
+            if (top == 0) return found;
+            node = stack[--top];
+        }
+    }
+
+    /** The stackless walk: order does not matter for an any-hit query, so skip links suffice. */
+    @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        for (Intersectable u : unbounded)
+            if (!u.visitHits(ray, maxDistance, visitor)) return false;
+        Point h = ray.getHead();
+        Vector d = ray.getDirection();
+        double ox = h.getX(), oy = h.getY(), oz = h.getZ();
+        double ix = 1 / d.getX(), iy = 1 / d.getY(), iz = 1 / d.getZ();
+        // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
+        double limit = maxDistance * (1 + 1e-9) + 1e-9;
+        int node = 0;
+        while (node < nodeCount) {
+            if (boxHit(node, ox, oy, oz, ix, iy, iz, limit)) {
+                int n = count[node];
+                if (n == 0) {
+                    ++node;
+                    continue;
+                }
+                for (int k = firstOrRight[node], end = k + n; k < end; ++k)
+                    if (!owner[k].visitHits(prim[k], ray, maxDistance, visitor)) return false;
+            }
+            node = skip[node];
+        }
+        return true;
+    }
+
+    @Override
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        List<GeoPoint> result = new ArrayList<>();
+        visitHits(ray, maxDistance, (geometry, t) -> result.add(new GeoPoint(geometry, ray.getPoint(t))));
+        return result;
+    }
+
+    @Override
+    public BoundingBox getBoundingBox() {
+        if (unbounded.length > 0 || nodeCount == 0) return null;
+        return new BoundingBox(box[0], box[1], box[2], box[3], box[4], box[5]);
+    }
+
+    /** The top-down binned-SAH builder; its arrays become the tree's. */
+    private static final class Builder {
+        private final Intersectable[] owners;
+        private final int[] prims;
+        private final double[] bounds; // 6 per primitive
+        private final double[] centroid; // 3 per primitive
+        private int added;
+        private int[] order; // primitive ids, permuted into leaf order
+
+        Intersectable[] orderedOwner;
+        int[] orderedPrim;
+        double[] box;
+        int[] firstOrRight;
+        int[] count;
+        byte[] axis;
+        int[] skip;
+        int nodes;
+        int maxDepth;
+
+        Builder(int total) {
+            owners = new Intersectable[total];
+            prims = new int[total];
+            bounds = new double[total * 6];
+            centroid = new double[total * 3];
+        }
+
+        void addPrimitive(Intersectable leaf, int index, BoundingBox b) {
+            int i = added++;
+            owners[i] = leaf;
+            prims[i] = index;
+            // Pad each box by a relative epsilon so that rounding in the slab test never culls a hit
+            // the primitive's own test accepts (flat boxes of axis-aligned triangles included).
+            double eps = 1e-9 * (1 + Math.max(Math.max(Math.abs(b.minX), Math.abs(b.maxX)),
+                    Math.max(Math.max(Math.abs(b.minY), Math.abs(b.maxY)), Math.max(Math.abs(b.minZ), Math.abs(b.maxZ)))));
+            int o = i * 6;
+            bounds[o] = b.minX - eps;
+            bounds[o + 1] = b.minY - eps;
+            bounds[o + 2] = b.minZ - eps;
+            bounds[o + 3] = b.maxX + eps;
+            bounds[o + 4] = b.maxY + eps;
+            bounds[o + 5] = b.maxZ + eps;
+            centroid[i * 3] = (b.minX + b.maxX) / 2;
+            centroid[i * 3 + 1] = (b.minY + b.maxY) / 2;
+            centroid[i * 3 + 2] = (b.minZ + b.maxZ) / 2;
+        }
+
+        void build() {
+            int n = added;
+            order = new int[n];
+            for (int i = 0; i < n; ++i) order[i] = i;
+            int capacity = Math.max(1, 2 * n);
+            box = new double[capacity * 6];
+            firstOrRight = new int[capacity];
+            count = new int[capacity];
+            axis = new byte[capacity];
+            skip = new int[capacity];
+            if (n > 0) buildNode(0, n, 0);
+            orderedOwner = new Intersectable[n];
+            orderedPrim = new int[n];
+            for (int i = 0; i < n; ++i) {
+                orderedOwner[i] = owners[order[i]];
+                orderedPrim[i] = prims[order[i]];
+            }
+        }
+
+        /** Builds the subtree over order[start, end) and returns its node index. */
+        private int buildNode(int start, int end, int level) {
+            int node = nodes++;
+            maxDepth = Math.max(maxDepth, level);
+            double[] nb = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
+                    Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
+            double[] cb = nb.clone();
+            for (int i = start; i < end; ++i) {
+                int p = order[i];
+                for (int a = 0; a < 3; ++a) {
+                    nb[a] = Math.min(nb[a], bounds[p * 6 + a]);
+                    nb[a + 3] = Math.max(nb[a + 3], bounds[p * 6 + a + 3]);
+                    cb[a] = Math.min(cb[a], centroid[p * 3 + a]);
+                    cb[a + 3] = Math.max(cb[a + 3], centroid[p * 3 + a]);
+                }
+            }
+            System.arraycopy(nb, 0, box, node * 6, 6);
+            int n = end - start;
+            int mid = -1;
+            int splitAxis = 0;
+            if (n > 1) {
+                double leafCost = n;
+                double bestCost = Double.POSITIVE_INFINITY;
+                int bestAxis = -1, bestBin = -1;
+                double parentArea = halfArea(nb, 0);
+                int[] binCount = new int[BINS];
+                double[] binBox = new double[BINS * 6];
+                double[] rightArea = new double[BINS];
+                for (int a = 0; a < 3; ++a) {
+                    double lo = cb[a], extent = cb[a + 3] - lo;
+                    if (!(extent > 0)) continue;
+                    java.util.Arrays.fill(binCount, 0);
+                    for (int k = 0; k < BINS; ++k) resetBox(binBox, k);
+                    double scale = BINS / extent;
+                    for (int i = start; i < end; ++i) {
+                        int p = order[i];
+                        int k = bin(centroid[p * 3 + a], lo, scale);
+                        binCount[k]++;
+                        growBox(binBox, k, bounds, p);
+                    }
+                    // Sweep from the right to get the areas of every right part, then from the left.
+                    double[] acc = new double[6];
+                    resetBox(acc, 0);
+                    for (int k = BINS - 1; k > 0; --k) {
+                        growBox(acc, 0, binBox, k);
+                        rightArea[k] = binCount[k] == 0 && acc[0] > acc[3] ? 0 : halfArea(acc, 0);
+                    }
+                    resetBox(acc, 0);
+                    int leftCount = 0;
+                    for (int k = 0; k < BINS - 1; ++k) {
+                        growBox(acc, 0, binBox, k);
+                        leftCount += binCount[k];
+                        int rightCount = n - leftCount;
+                        if (leftCount == 0 || rightCount == 0) continue;
+                        double cost = TRAVERSAL_COST + (halfArea(acc, 0) * leftCount + rightArea[k + 1] * rightCount) / parentArea;
+                        if (cost < bestCost) {
+                            bestCost = cost;
+                            bestAxis = a;
+                            bestBin = k;
+                        }
+                    }
+                }
+                if (bestAxis >= 0 && (bestCost < leafCost || n > MAX_LEAF)) {
+                    splitAxis = bestAxis;
+                    double lo = cb[bestAxis], scale = BINS / (cb[bestAxis + 3] - lo);
+                    // Stable partition keeps the build deterministic and the order reproducible.
+                    int[] tmp = new int[n];
+                    int l = 0, r = n;
+                    for (int i = start; i < end; ++i) {
+                        int p = order[i];
+                        if (bin(centroid[p * 3 + bestAxis], lo, scale) <= bestBin) tmp[l++] = p;
+                        else tmp[--r] = p;
+                    }
+                    for (int i = 0; i < l; ++i) order[start + i] = tmp[i];
+                    for (int i = n - 1, j = l; i >= r; --i, ++j) order[start + j] = tmp[i];
+                    mid = start + l;
+                } else if (n > MAX_LEAF) {
+                    // All centroids coincide: split the range in half to bound leaf size.
+                    mid = start + n / 2;
+                    double[] e = { nb[3] - nb[0], nb[4] - nb[1], nb[5] - nb[2] };
+                    splitAxis = e[0] >= e[1] && e[0] >= e[2] ? 0 : e[1] >= e[2] ? 1 : 2;
+                }
+            }
+            if (mid < 0) {
+                firstOrRight[node] = start;
+                count[node] = n;
+            } else {
+                count[node] = 0;
+                axis[node] = (byte) splitAxis;
+                buildNode(start, mid, level + 1);
+                firstOrRight[node] = buildNode(mid, end, level + 1);
+            }
+            skip[node] = nodes;
+            return node;
+        }
+
+        private static int bin(double c, double lo, double scale) {
+            int k = (int) ((c - lo) * scale);
+            return k < 0 ? 0 : Math.min(k, BINS - 1);
+        }
+
+        private static void resetBox(double[] b, int k) {
+            int o = k * 6;
+            b[o] = b[o + 1] = b[o + 2] = Double.POSITIVE_INFINITY;
+            b[o + 3] = b[o + 4] = b[o + 5] = Double.NEGATIVE_INFINITY;
+        }
+
+        private static void growBox(double[] b, int k, double[] src, int s) {
+            int o = k * 6, so = s * 6;
+            for (int a = 0; a < 3; ++a) {
+                b[o + a] = Math.min(b[o + a], src[so + a]);
+                b[o + a + 3] = Math.max(b[o + a + 3], src[so + a + 3]);
+            }
+        }
+
+        private static double halfArea(double[] b, int k) {
+            int o = k * 6;
+            double dx = b[o + 3] - b[o], dy = b[o + 4] - b[o + 1], dz = b[o + 5] - b[o + 2];
+            return dx * dy + dy * dz + dz * dx;
+        }
+    }
+}

@@ -1,0 +1,83 @@
+package geometries;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Objects;
+
+import primitives.Ray;
+
+/**
+ * A composite of intersectables (the course's flat list). The renderer does not walk this list
+ * directly when the BVH is on: it indexes the leaves ({@link #collectLeaves}) in a {@link Bvh}.
+ */
+public class Geometries extends Intersectable {
+    private final List<Intersectable> items = new ArrayList<>();
+
+    public Geometries() {
+    }
+
+    public Geometries(Intersectable... geometries) {
+        add(geometries);
+    }
+
+    /** @throws NullPointerException naming the index of a null element */
+    public void add(Intersectable... geometries) {
+        for (int i = 0; i < geometries.length; ++i)
+            items.add(Objects.requireNonNull(geometries[i], "geometry #" + i + " to add is null"));
+    }
+
+    /** @return a read-only view of the direct children */
+    public List<Intersectable> getItems() {
+        return Collections.unmodifiableList(items);
+    }
+
+    public boolean isEmpty() {
+        return items.isEmpty();
+    }
+
+    @Override
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        List<GeoPoint> result = null;
+        for (Intersectable item : items) {
+            List<GeoPoint> found = item.findGeoIntersections(ray, maxDistance);
+            if (found != null) {
+                if (result == null) result = new ArrayList<>(found);
+                else result.addAll(found);
+            }
+        }
+        return result;
+    }
+
+    @Override
+    public boolean closestHit(Ray ray, Hit hit) {
+        boolean found = false;
+        for (int i = 0, n = items.size(); i < n; ++i)
+            found |= items.get(i).closestHit(ray, hit);
+        return found;
+    }
+
+    @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        for (int i = 0, n = items.size(); i < n; ++i)
+            if (!items.get(i).visitHits(ray, maxDistance, visitor)) return false;
+        return true;
+    }
+
+    /** @return the union of the children's boxes; null when empty or when any child is unbounded */
+    @Override
+    public BoundingBox getBoundingBox() {
+        BoundingBox box = null;
+        for (Intersectable item : items) {
+            BoundingBox b = item.getBoundingBox();
+            if (b == null) return null;
+            box = box == null ? b : box.union(b);
+        }
+        return box;
+    }
+
+    @Override
+    void collectLeaves(List<Intersectable> out) {
+        for (Intersectable item : items) item.collectLeaves(out);
+    }
+}

@@ -1,0 +1,46 @@
+package geometries;
+
+import java.util.Objects;
+
+import primitives.Color;
+import primitives.Material;
+import primitives.Point;
+import primitives.Vector;
+
+/**
+ * A shape with an emission colour and a material. Set both while building the scene; the
+ * renderer treats them as constant during a render.
+ */
+public abstract class Geometry extends Intersectable {
+    private Color emission = Color.BLACK;
+    private Material material = new Material();
+
+    public Color getEmission() {
+        return emission;
+    }
+
+    public Geometry setEmission(Color emission) {
+        this.emission = Objects.requireNonNull(emission, "emission");
+        return this;
+    }
+
+    public Material getMaterial() {
+        return material;
+    }
+
+    public Geometry setMaterial(Material material) {
+        this.material = Objects.requireNonNull(material, "material");
+        return this;
+    }
+
+    /** @return the outward unit normal at {@code point}, which must lie on the surface */
+    public abstract Vector getNormal(Point point);
+
+    /**
+     * The unit normal at a closest-hit point; meshes override it to use the triangle and
+     * barycentric coordinates recorded in {@code hit}.
+     */
+    Vector normalAt(Point point, Hit hit) {
+        return getNormal(point);
+    }
+}

@@ -1,0 +1,12 @@
+package geometries;
+
+/** Receives the intersections of an any-hit walk; see {@link Intersectable#visitHits}. */
+@FunctionalInterface
+public interface HitVisitor {
+    /**
+     * @param geometry the geometry hit
+     * @param t        the hit distance from the ray head
+     * @return true to go on visiting, false to stop the walk
+     */
+    boolean visit(Geometry geometry, double t);
+}

@@ -1,0 +1,98 @@
+package geometries;
+
+import java.util.List;
+
+import primitives.Point;
+import primitives.Ray;
+import primitives.Util;
+import primitives.Vector;
+
+/** An infinite plane: a point on it and a unit normal. Unbounded, so it has no bounding box. */
+public class Plane extends Geometry {
+    private final Point q;
+    private final Vector normal;
+
+    /**
+     * The plane through three points.
+     *
+     * @throws IllegalArgumentException when two points coincide or all three are collinear
+     */
+    public Plane(Point p1, Point p2, Point p3) {
+        this.q = p1;
+        this.normal = normalOf(p1, p2, p3, "plane");
+    }
+
+    /** @param normal any non-zero vector; it is normalized */
+    public Plane(Point q, Vector normal) {
+        this.q = q;
+        this.normal = normal.normalize();
+    }
+
+    /**
+     * The unit normal (p2 − p1) × (p3 − p1) of three points, with the precise complaint when they
+     * do not span a plane.
+     */
+    static Vector normalOf(Point p1, Point p2, Point p3, String what) {
+        if (p1.equals(p2) || p1.equals(p3) || p2.equals(p3))
+            throw new IllegalArgumentException(what + " points must be distinct, got " + p1 + ", " + p2 + ", " + p3);
+        Vector v1 = p2.subtract(p1);
+        Vector v2 = p3.subtract(p1);
+        double cx = v1.getY() * v2.getZ() - v1.getZ() * v2.getY();
+        double cy = v1.getZ() * v2.getX() - v1.getX() * v2.getZ();
+        double cz = v1.getX() * v2.getY() - v1.getY() * v2.getX();
+        // Collinearity relative to the edge lengths, so that the test does not depend on scale.
+        double rel = Math.sqrt(cx * cx + cy * cy + cz * cz) / (v1.length() * v2.length());
+        if (rel < 1e-10)
+            throw new IllegalArgumentException(what + " points must not be collinear, got " + p1 + ", " + p2 + ", " + p3);
+        return new Vector(cx, cy, cz).normalize();
+    }
+
+    /** @return a point on the plane */
+    public Point getQ() {
+        return q;
+    }
+
+    /** @return the unit normal */
+    public Vector getNormal() {
+        return normal;
+    }
+
+    @Override
+    public Vector getNormal(Point point) {
+        return normal;
+    }
+
+    /**
+     * @return the hit distance, or NaN when the ray is parallel to the plane or starts on it
+     */
+    double distanceTo(Ray ray) {
+        Point h = ray.getHead();
+        Vector d = ray.getDirection();
+        double nd = Util.alignZero(normal.getX() * d.getX() + normal.getY() * d.getY() + normal.getZ() * d.getZ());
+        if (nd == 0) return Double.NaN;
+        double nqh = Util.alignZero(normal.getX() * (q.getX() - h.getX()) + normal.getY() * (q.getY() - h.getY())
+                + normal.getZ() * (q.getZ() - h.getZ()));
+        if (nqh == 0) return Double.NaN;
+        return nqh / nd;
+    }
+
+    @Override
+    public boolean closestHit(Ray ray, Hit hit) {
+        double t = distanceTo(ray);
+        if (!inRange(t, hit.t)) return false;
+        hit.set(t, this, 0, 0, 0);
+        return true;
+    }
+
+    @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        double t = distanceTo(ray);
+        return !within(t, maxDistance) || visitor.visit(this, t);
+    }
+
+    @Override
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        double t = distanceTo(ray);
+        return within(t, maxDistance) ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
+    }
+}

@@ -1,0 +1,100 @@
+package geometries;
+
+import java.util.ArrayList;
+import java.util.List;
+
+import primitives.Point;
+import primitives.Ray;
+import primitives.Util;
+import primitives.Vector;
+
+/** A sphere given by its centre and a positive radius. */
+public class Sphere extends Geometry {
+    private final Point center;
+    private final double radius;
+    private final double radiusSquared;
+
+    /** @throws IllegalArgumentException when the radius is not a positive finite number */
+    public Sphere(Point center, double radius) {
+        this.center = center;
+        this.radius = Util.requirePositive(radius, "sphere radius");
+        this.radiusSquared = radius * radius;
+    }
+
+    /** Argument order of older course versions. */
+    public Sphere(double radius, Point center) {
+        this(center, radius);
+    }
+
+    public Point getCenter() {
+        return center;
+    }
+
+    public double getRadius() {
+        return radius;
+    }
+
+    @Override
+    public Vector getNormal(Point point) {
+        return point.subtract(center).normalize();
+    }
+
+    /** Distance along the ray to the point nearest the centre: the middle of the two roots. */
+    private double projection(Ray ray) {
+        Point h = ray.getHead();
+        Vector d = ray.getDirection();
+        return (center.getX() - h.getX()) * d.getX() + (center.getY() - h.getY()) * d.getY()
+                + (center.getZ() - h.getZ()) * d.getZ();
+    }
+
+    /**
+     * Half the chord length: the roots of |head + t·dir − center|² = r² are {@code tm ± th}
+     * (the geometric method, stable for far spheres).
+     *
+     * @return th, or NaN when the ray misses or only touches the sphere (a tangent is no hit)
+     */
+    private double halfChord(Ray ray, double tm) {
+        Point h = ray.getHead();
+        double ux = center.getX() - h.getX(), uy = center.getY() - h.getY(), uz = center.getZ() - h.getZ();
+        double th2 = radiusSquared - (ux * ux + uy * uy + uz * uz - tm * tm);
+        return Util.alignZero(th2) <= 0 ? Double.NaN : Math.sqrt(th2);
+    }
+
+    @Override
+    public boolean closestHit(Ray ray, Hit hit) {
+        double tm = projection(ray);
+        double th = halfChord(ray, tm);
+        if (Double.isNaN(th)) return false;
+        double t = tm - th;
+        if (!(Util.alignZero(t) > 0)) t = tm + th;
+        if (!inRange(t, hit.t)) return false;
+        hit.set(t, this, 0, 0, 0);
+        return true;
+    }
+
+    @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        double tm = projection(ray);
+        double th = halfChord(ray, tm);
+        if (Double.isNaN(th)) return true;
+        if (within(tm - th, maxDistance) && !visitor.visit(this, tm - th)) return false;
+        return !within(tm + th, maxDistance) || visitor.visit(this, tm + th);
+    }
+
+    @Override
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        double tm = projection(ray);
+        double th = halfChord(ray, tm);
+        if (Double.isNaN(th)) return null;
+        List<GeoPoint> result = new ArrayList<>(2);
+        if (within(tm - th, maxDistance)) result.add(new GeoPoint(this, ray.getPoint(tm - th)));
+        if (within(tm + th, maxDistance)) result.add(new GeoPoint(this, ray.getPoint(tm + th)));
+        return result;
+    }
+
+    @Override
+    public BoundingBox getBoundingBox() {
+        return new BoundingBox(center.getX() - radius, center.getY() - radius, center.getZ() - radius,
+                center.getX() + radius, center.getY() + radius, center.getZ() + radius);
+    }
+}

@@ -1,0 +1,78 @@
+package geometries;
+
+import java.util.List;
+
+import primitives.Point;
+import primitives.Ray;
+import primitives.Util;
+import primitives.Vector;
+
+/**
+ * A triangle: a polygon of three vertices, intersected with the Möller–Trumbore kernel that
+ * {@link TriangleMesh} shares, so a mesh and the same triangles as objects render identically.
+ */
+public class Triangle extends Polygon {
+    private final double ax, ay, az, e1x, e1y, e1z, e2x, e2y, e2z;
+
+    /** @throws IllegalArgumentException when points repeat or are collinear */
+    public Triangle(Point p1, Point p2, Point p3) {
+        super(p1, p2, p3);
+        ax = p1.getX();
+        ay = p1.getY();
+        az = p1.getZ();
+        e1x = p2.getX() - ax;
+        e1y = p2.getY() - ay;
+        e1z = p2.getZ() - az;
+        e2x = p3.getX() - ax;
+        e2y = p3.getY() - ay;
+        e2z = p3.getZ() - az;
+    }
+
+    /**
+     * Möller–Trumbore. A ray through an edge or a vertex (a barycentric coordinate within the
+     * zero tolerance) or parallel to the plane misses; so does a ray starting on the triangle.
+     *
+     * @return the hit distance (possibly ≤ 0: the caller checks the range), or NaN on a miss
+     */
+    static double intersect(Ray ray, double ax, double ay, double az,
+                            double e1x, double e1y, double e1z, double e2x, double e2y, double e2z) {
+        Point h = ray.getHead();
+        Vector d = ray.getDirection();
+        double dx = d.getX(), dy = d.getY(), dz = d.getZ();
+        double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
+        double det = e1x * px + e1y * py + e1z * pz;
+        if (Util.isZero(det)) return Double.NaN;
+        double inv = 1.0 / det;
+        double tx = h.getX() - ax, ty = h.getY() - ay, tz = h.getZ() - az;
+        double u = (tx * px + ty * py + tz * pz) * inv;
+        if (Util.alignZero(u) <= 0 || Util.alignZero(u - 1) >= 0) return Double.NaN;
+        double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
+        double v = (dx * qx + dy * qy + dz * qz) * inv;
+        if (Util.alignZero(v) <= 0 || Util.alignZero(u + v - 1) >= 0) return Double.NaN;
+        return (e2x * qx + e2y * qy + e2z * qz) * inv;
+    }
+
+    private double distanceTo(Ray ray) {
+        return intersect(ray, ax, ay, az, e1x, e1y, e1z, e2x, e2y, e2z);
+    }
+
+    @Override
+    public boolean closestHit(Ray ray, Hit hit) {
+        double t = distanceTo(ray);
+        if (!inRange(t, hit.t)) return false;
+        hit.set(t, this, 0, 0, 0);
+        return true;
+    }
+
+    @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        double t = distanceTo(ray);
+        return !within(t, maxDistance) || visitor.visit(this, t);
+    }
+
+    @Override
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        double t = distanceTo(ray);
+        return within(t, maxDistance) ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
+    }
+}

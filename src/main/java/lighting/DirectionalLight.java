@@ -1,0 +1,31 @@
+package lighting;
+
+import primitives.Color;
+import primitives.Point;
+import primitives.Vector;
+
+/** A light at infinity: the same intensity and direction everywhere, no attenuation. */
+public class DirectionalLight extends Light implements LightSource {
+    private final Vector direction;
+
+    /** @param direction the direction the light travels (normalized here) */
+    public DirectionalLight(Color intensity, Vector direction) {
+        super(intensity);
+        this.direction = direction.normalize();
+    }
+
+    @Override
+    public Color getIntensity(Point p) {
+        return intensity;
+    }
+
+    @Override
+    public Vector getL(Point p) {
+        return direction;
+    }
+
+    @Override
+    public double getDistance(Point p) {
+        return Double.POSITIVE_INFINITY;
+    }
+}

@@ -1,0 +1,19 @@
+package lighting;
+
+import java.util.Objects;
+
+import primitives.Color;
+
+/** The part every light shares: its intensity. */
+abstract class Light {
+    /** The emitted intensity, on the colour scale (0..255 per channel is "full"). */
+    protected final Color intensity;
+
+    protected Light(Color intensity) {
+        this.intensity = Objects.requireNonNull(intensity, "light intensity");
+    }
+
+    public Color getIntensity() {
+        return intensity;
+    }
+}

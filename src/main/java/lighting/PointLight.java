@@ -1,0 +1,87 @@
+package lighting;
+
+import java.util.Objects;
+
+import primitives.Color;
+import primitives.Point;
+import primitives.Util;
+import primitives.Vector;
+
+/**
+ * A light at a position, attenuated with distance d by 1 / (kC + kL·d + kQ·d²). Given a radius it
+ * becomes a disk facing the shaded point, for soft shadows.
+ */
+public class PointLight extends Light implements LightSource {
+    protected final Point position;
+    private double kC = 1;
+    private double kL = 0;
+    private double kQ = 0;
+    private double radius = 0;
+
+    public PointLight(Color intensity, Point position) {
+        super(intensity);
+        this.position = Objects.requireNonNull(position, "light position");
+    }
+
+    /** @param kC constant attenuation, ≥ 0 */
+    public PointLight setKc(double kC) {
+        this.kC = Util.requireNonNegative(kC, "kC");
+        return this;
+    }
+
+    /** @param kL linear attenuation per unit distance, ≥ 0 */
+    public PointLight setKl(double kL) {
+        this.kL = Util.requireNonNegative(kL, "kL");
+        return this;
+    }
+
+    /** @param kQ quadratic attenuation per squared unit distance, ≥ 0 */
+    public PointLight setKq(double kQ) {
+        this.kQ = Util.requireNonNegative(kQ, "kQ");
+        return this;
+    }
+
+    /**
+     * @param radius the radius of the light's disk in scene units, ≥ 0; 0 (the default) is a point
+     *               light with hard shadows
+     */
+    public PointLight setRadius(double radius) {
+        this.radius = Util.requireNonNegative(radius, "light radius");
+        return this;
+    }
+
+    @Override
+    public double getRadius() {
+        return radius;
+    }
+
+    @Override
+    public Point getPosition() {
+        return position;
+    }
+
+    /** The distance attenuation factor 1 / (kC + kL·d + kQ·d²). */
+    protected double attenuation(Point p) {
+        double d2 = p.distanceSquared(position);
+        double denominator = kC + kL * Math.sqrt(d2) + kQ * d2;
+        if (!(denominator > 0))
+            throw new IllegalArgumentException("point light attenuation kC + kL·d + kQ·d² must be positive, got "
+                    + denominator + " (kC=" + kC + ", kL=" + kL + ", kQ=" + kQ + ") at " + p);
+        return 1 / denominator;
+    }
+
+    @Override
+    public Color getIntensity(Point p) {
+        return intensity.scale(attenuation(p));
+    }
+
+    @Override
+    public Vector getL(Point p) {
+        return p.subtract(position).normalize();
+    }
+
+    @Override
+    public double getDistance(Point p) {
+        return p.distance(position);
+    }
+}

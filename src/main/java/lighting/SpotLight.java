@@ -1,0 +1,58 @@
+package lighting;
+
+import primitives.Color;
+import primitives.Point;
+import primitives.Util;
+import primitives.Vector;
+
+/**
+ * A point light with a direction: intensity is scaled by max(0, direction · l)^narrowBeam, so a
+ * larger narrow-beam exponent gives a tighter spot.
+ */
+public class SpotLight extends PointLight {
+    private final Vector direction;
+    private double narrowBeam = 1;
+
+    public SpotLight(Color intensity, Point position, Vector direction) {
+        super(intensity, position);
+        this.direction = direction.normalize();
+    }
+
+    @Override
+    public SpotLight setKc(double kC) {
+        super.setKc(kC);
+        return this;
+    }
+
+    @Override
+    public SpotLight setKl(double kL) {
+        super.setKl(kL);
+        return this;
+    }
+
+    @Override
+    public SpotLight setKq(double kQ) {
+        super.setKq(kQ);
+        return this;
+    }
+
+    @Override
+    public SpotLight setRadius(double radius) {
+        super.setRadius(radius);
+        return this;
+    }
+
+    /** @param narrowBeam the beam exponent, a positive number; 1 (the default) is the plain cosine */
+    public SpotLight setNarrowBeam(double narrowBeam) {
+        this.narrowBeam = Util.requirePositive(narrowBeam, "spot light narrow beam");
+        return this;
+    }
+
+    @Override
+    public Color getIntensity(Point p) {
+        double cos = Util.alignZero(direction.dotProduct(getL(p)));
+        if (cos <= 0) return Color.BLACK;
+        double factor = narrowBeam == 1 ? cos : Math.pow(cos, narrowBeam);
+        return intensity.scale(factor * attenuation(p));
+    }
+}

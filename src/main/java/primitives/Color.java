@@ -1,0 +1,119 @@
+package primitives;
+
+/**
+ * An immutable RGB colour with non-negative components on the 0..255 scale of the course.
+ * Components may exceed 255 while light accumulates; {@link #getColor()} clamps when writing.
+ * There is deliberately no tolerant {@code equals}: compare colours with {@link #distance(Color)}.
+ */
+public final class Color {
+    private final double r;
+    private final double g;
+    private final double b;
+
+    /** Black: (0, 0, 0). */
+    public static final Color BLACK = new Color(0, 0, 0, true);
+
+    /** Internal constructor for results known to be valid (sums and non-negative scalings). */
+    private Color(double r, double g, double b, boolean trusted) {
+        this.r = r;
+        this.g = g;
+        this.b = b;
+    }
+
+    /**
+     * @throws IllegalArgumentException for a negative or non-finite component
+     */
+    public Color(double r, double g, double b) {
+        this(r, g, b, true);
+        if (!(r >= 0) || !(g >= 0) || !(b >= 0) || Double.isInfinite(r) || Double.isInfinite(g) || Double.isInfinite(b))
+            throw new IllegalArgumentException("colour components must be finite and non-negative, got (" + r + "," + g + "," + b + ")");
+    }
+
+    /** From an AWT colour (0..255 per channel). */
+    public Color(java.awt.Color other) {
+        this(other.getRed(), other.getGreen(), other.getBlue(), true);
+    }
+
+    public double getR() {
+        return r;
+    }
+
+    public double getG() {
+        return g;
+    }
+
+    public double getB() {
+        return b;
+    }
+
+    /** @return the AWT colour, each channel rounded down and clamped to 0..255 */
+    public java.awt.Color getColor() {
+        return new java.awt.Color(clamp(r), clamp(g), clamp(b));
+    }
+
+    /** @return the colour packed as 0xRRGGBB, each channel clamped to 0..255 */
+    public int toRgb() {
+        return (clamp(r) << 16) | (clamp(g) << 8) | clamp(b);
+    }
+
+    private static int clamp(double c) {
+        return c >= 255 ? 255 : (int) c;
+    }
+
+    /** @return the sum of this colour and all of {@code colors} */
+    public Color add(Color... colors) {
+        double rr = r, gg = g, bb = b;
+        for (Color c : colors) {
+            rr += c.r;
+            gg += c.g;
+            bb += c.b;
+        }
+        return new Color(rr, gg, bb, true);
+    }
+
+    /** The sum of two colours without the varargs array (used by the tracer). */
+    public Color add(Color c) {
+        return new Color(r + c.r, g + c.g, b + c.b, true);
+    }
+
+    /** @throws IllegalArgumentException for a negative or non-finite factor */
+    public Color scale(double k) {
+        if (!(k >= 0) || Double.isInfinite(k))
+            throw new IllegalArgumentException("colour scale factor must be finite and non-negative, got " + k);
+        return new Color(r * k, g * k, b * k, true);
+    }
+
+    /** Per-channel scaling. @throws IllegalArgumentException for a negative or non-finite factor */
+    public Color scale(Double3 k) {
+        if (!(k.d1 >= 0) || !(k.d2 >= 0) || !(k.d3 >= 0)
+                || Double.isInfinite(k.d1) || Double.isInfinite(k.d2) || Double.isInfinite(k.d3))
+            throw new IllegalArgumentException("colour scale factors must be finite and non-negative, got " + k);
+        return new Color(r * k.d1, g * k.d2, b * k.d3, true);
+    }
+
+    /** @throws IllegalArgumentException when {@code k} is not positive */
+    public Color reduce(int k) {
+        if (k <= 0) throw new IllegalArgumentException("colour reduce factor must be positive, got " + k);
+        return new Color(r / k, g / k, b / k, true);
+    }
+
+    /** Divides every channel by a positive real (averaging a weighted sum). */
+    public Color reduce(double k) {
+        if (!(k > 0) || Double.isInfinite(k))
+            throw new IllegalArgumentException("colour reduce factor must be a positive finite number, got " + k);
+        return new Color(r / k, g / k, b / k, true);
+    }
+
+    /**
+     * The largest per-channel absolute difference, on the 0..255 scale: the measure adaptive
+     * anti-aliasing compares against its threshold.
+     */
+    public double distance(Color other) {
+        return Math.max(Math.abs(r - other.r), Math.max(Math.abs(g - other.g), Math.abs(b - other.b)));
+    }
+
+    @Override
+    public String toString() {
+        return "rgb:(" + r + "," + g + "," + b + ")";
+    }
+}

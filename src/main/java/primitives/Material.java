@@ -1,0 +1,94 @@
+package primitives;
+
+/**
+ * Surface coefficients of the Phong model plus the Whitted tracer's reflection and transparency.
+ * The public fields are the course's contract; set them with the validating fluent setters while
+ * building a scene, and leave them alone during a render.
+ */
+public class Material {
+    /** Diffuse reflection coefficient per channel, each ≥ 0. */
+    public Double3 kD = Double3.ZERO;
+    /** Specular reflection coefficient per channel, each ≥ 0. */
+    public Double3 kS = Double3.ZERO;
+    /** Transparency (transmission) coefficient per channel, each in [0, 1]. */
+    public Double3 kT = Double3.ZERO;
+    /** Mirror reflection coefficient per channel, each in [0, 1]. */
+    public Double3 kR = Double3.ZERO;
+    /** Phong shininess exponent, ≥ 0. */
+    public int nShininess = 0;
+    /**
+     * Glossy reflection spread: the radius of the disk, at unit distance along the mirror
+     * direction, that reflected rays aim at (the tangent of the cone half-angle). 0 is a perfect
+     * mirror. Scale-independent: the same value blurs the same angle in any scene.
+     */
+    public double reflectionSpread = 0;
+    /** Diffuse-glass spread: like {@link #reflectionSpread} around the transmitted direction. 0 is clear glass. */
+    public double transmissionSpread = 0;
+
+    public Material setKd(double kd) {
+        return setKd(new Double3(kd));
+    }
+
+    public Material setKd(Double3 kd) {
+        this.kD = check(kd, "kD", false);
+        return this;
+    }
+
+    public Material setKs(double ks) {
+        return setKs(new Double3(ks));
+    }
+
+    public Material setKs(Double3 ks) {
+        this.kS = check(ks, "kS", false);
+        return this;
+    }
+
+    public Material setKt(double kt) {
+        return setKt(new Double3(kt));
+    }
+
+    public Material setKt(Double3 kt) {
+        this.kT = check(kt, "kT", true);
+        return this;
+    }
+
+    public Material setKr(double kr) {
+        return setKr(new Double3(kr));
+    }
+
+    public Material setKr(Double3 kr) {
+        this.kR = check(kr, "kR", true);
+        return this;
+    }
+
+    public Material setShininess(int nShininess) {
+        if (nShininess < 0)
+            throw new IllegalArgumentException("shininess must be non-negative, got " + nShininess);
+        this.nShininess = nShininess;
+        return this;
+    }
+
+    /** @see #reflectionSpread */
+    public Material setReflectionSpread(double spread) {
+        this.reflectionSpread = Util.requireNonNegative(spread, "reflection spread");
+        return this;
+    }
+
+    /** @see #transmissionSpread */
+    public Material setTransmissionSpread(double spread) {
+        this.transmissionSpread = Util.requireNonNegative(spread, "transmission spread");
+        return this;
+    }
+
+    private static Double3 check(Double3 k, String name, boolean atMostOne) {
+        checkComponent(k.d1, k, name, atMostOne);
+        checkComponent(k.d2, k, name, atMostOne);
+        checkComponent(k.d3, k, name, atMostOne);
+        return k;
+    }
+
+    private static void checkComponent(double c, Double3 k, String name, boolean atMostOne) {
+        if (!(c >= 0) || Double.isInfinite(c) || (atMostOne && c > 1))
+            throw new IllegalArgumentException(name + " components must be " + (atMostOne ? "in [0, 1]" : "finite and non-negative") + ", got " + k);
+    }
+}

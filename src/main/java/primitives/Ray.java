@@ -1,0 +1,98 @@
+package primitives;
+
+import java.util.List;
+
+import geometries.Intersectable.GeoPoint;
+
+/**
+ * An immutable half-line: a head point and a unit direction. Points on it are
+ * {@code head + t·direction} for {@code t ≥ 0}, so {@code t} is a distance.
+ */
+public final class Ray {
+    /**
+     * How far (in scene units) a secondary ray's head is pushed off its surface along the normal,
+     * so that it does not hit the surface it leaves (the course's value).
+     */
+    public static final double DELTA = 0.1;
+
+    private final Point head;
+    private final Vector direction;
+
+    /** @param direction any non-zero vector; it is normalized */
+    public Ray(Point head, Vector direction) {
+        this.head = head;
+        this.direction = direction.normalize();
+    }
+
+    /**
+     * A secondary ray leaving a surface: the head is moved by {@link #DELTA} along {@code normal},
+     * to the side {@code direction} goes (against the normal when the direction enters the surface).
+     * A direction tangent to the surface keeps the head in place.
+     */
+    public Ray(Point head, Vector direction, Vector normal) {
+        this.direction = direction.normalize();
+        double nd = Util.alignZero(normal.dotProduct(this.direction));
+        this.head = nd == 0 ? head : head.add(normal.scale(nd > 0 ? DELTA : -DELTA));
+    }
+
+    public Point getHead() {
+        return head;
+    }
+
+    /** @return the unit direction */
+    public Vector getDirection() {
+        return direction;
+    }
+
+    /** @return {@code head + t·direction}; {@code t = 0} (within tolerance) gives the head itself */
+    public Point getPoint(double t) {
+        if (Util.isZero(t)) return head;
+        return new Point(head.x + direction.x * t, head.y + direction.y * t, head.z + direction.z * t);
+    }
+
+    /** @return the point of {@code points} closest to the head, or null for a null or empty list */
+    public Point findClosestPoint(List<Point> points) {
+        if (points == null || points.isEmpty()) return null;
+        Point closest = null;
+        double best = Double.POSITIVE_INFINITY;
+        for (Point p : points) {
+            double d = p.distanceSquared(head);
+            if (d < best) {
+                best = d;
+                closest = p;
+            }
+        }
+        return closest;
+    }
+
+    /** @return the intersection closest to the head, or null for a null or empty list */
+    public GeoPoint findClosestGeoPoint(List<GeoPoint> points) {
+        if (points == null || points.isEmpty()) return null;
+        GeoPoint closest = null;
+        double best = Double.POSITIVE_INFINITY;
+        for (GeoPoint gp : points) {
+            double d = gp.point.distanceSquared(head);
+            if (d < best) {
+                best = d;
+                closest = gp;
+            }
+        }
+        return closest;
+    }
+
+    @Override
+    public boolean equals(Object obj) {
+        if (this == obj) return true;
+        return obj instanceof Ray other && head.equals(other.head) && direction.equals(other.direction);
+    }
+
+    @Override
+    public int hashCode() {
+        return 11;
+    }
+
+    @Override
+    public String toString() {
+        return "Ray{" + head + " " + direction + "}";
+    }
+}

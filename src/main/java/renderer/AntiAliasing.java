@@ -1,0 +1,18 @@
+package renderer;
+
+/**
+ * How each pixel is sampled. Chosen with {@link Camera.Builder#setAntiAliasing(AntiAliasing)}.
+ */
+public enum AntiAliasing {
+    /** One ray through the pixel centre: the plain course render. */
+    NONE,
+    /** An m×n grid of cells, one ray through a random point of each (jittered supersampling). */
+    RANDOM,
+    /** The centre and the four corners, averaged; corners are shared with the neighbouring pixels. */
+    CORNERS,
+    /**
+     * The centre and the four corners; each quadrant whose corner differs from the centre by more
+     * than the threshold is subdivided the same way, down to the maximum depth. Samples are reused.
+     */
+    ADAPTIVE
+}

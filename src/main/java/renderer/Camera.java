@@ -1,0 +1,454 @@
+package renderer;
+
+import java.io.PrintStream;
+import java.util.MissingResourceException;
+import java.util.Objects;
+
+import primitives.Color;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Util;
+import primitives.Vector;
+
+/**
+ * A pinhole (or thin-lens) camera: where it stands, where it looks, its view plane, and how a
+ * render samples and runs. Immutable; made by {@link Builder#build()}. The pixel loop itself
+ * lives in {@code RenderLoop}, the sampling strategies in the samplers.
+ */
+public final class Camera {
+    // View. Units are scene units; vTo, vUp and vRight are unit length and mutually orthogonal.
+    private final Point location;
+    private final Vector vTo;
+    private final Vector vUp;
+    private final Vector vRight;
+    /** View-plane width and height, and its distance from the location along vTo. */
+    private final double vpWidth, vpHeight, vpDistance;
+
+    private final ImageWriter imageWriter;
+    private final RayTracerBase rayTracer;
+
+    // Sampling.
+    private final AntiAliasing antiAliasing;
+    private final int gridColumns, gridRows; // RANDOM
+    private final int adaptiveDepth; // ADAPTIVE: sub-pixels down to 1/2^depth of the pixel side
+    private final double adaptiveThreshold; // ADAPTIVE: colour distance on the 0..255 scale
+    /** Thin lens: 0 aperture is a pinhole; the focal plane is focalDistance along vTo. */
+    private final double focalDistance, aperture;
+    private final int lensSamples; // rays per pixel with depth of field and NONE
+    private final long seed;
+
+    // Execution.
+    private final int threads; // 0: the calling thread
+    private final double debugPrint; // percent between progress lines; 0: none
+    private final boolean summary;
+    private final PrintStream output;
+
+    private Camera(Builder b, Vector vTo, Vector vUp) {
+        location = b.location;
+        this.vTo = vTo;
+        this.vUp = vUp;
+        this.vRight = vTo.crossProduct(vUp).normalize();
+        vpWidth = b.vpWidth;
+        vpHeight = b.vpHeight;
+        vpDistance = b.vpDistance;
+        imageWriter = b.imageWriter;
+        rayTracer = b.rayTracer;
+        antiAliasing = b.antiAliasing;
+        gridColumns = b.gridColumns;
+        gridRows = b.gridRows;
+        adaptiveDepth = b.adaptiveDepth;
+        adaptiveThreshold = b.adaptiveThreshold;
+        focalDistance = b.focalDistance;
+        aperture = b.aperture;
+        lensSamples = b.lensSamples;
+        seed = b.seed;
+        threads = b.threads == -2 ? Runtime.getRuntime().availableProcessors() : b.threads;
+        debugPrint = b.debugPrint;
+        summary = b.summary;
+        output = b.output;
+    }
+
+    /** @return a new builder with the defaults: no anti-aliasing, pinhole, calling thread, seed 0 */
+    public static Builder getBuilder() {
+        return new Builder();
+    }
+
+    public Point getLocation() {
+        return location;
+    }
+
+    public Vector getVTo() {
+        return vTo;
+    }
+
+    public Vector getVUp() {
+        return vUp;
+    }
+
+    public Vector getVRight() {
+        return vRight;
+    }
+
+    /**
+     * The ray from the camera through the centre of pixel (column j, row i) of a view plane cut
+     * into nX × nY pixels.
+     *
+     * @throws IllegalArgumentException for a non-positive resolution or a pixel outside it
+     */
+    public Ray constructRay(int nX, int nY, int j, int i) {
+        if (nX <= 0 || nY <= 0) throw new IllegalArgumentException("resolution must be positive, got " + nX + "x" + nY);
+        if (j < 0 || j >= nX || i < 0 || i >= nY)
+            throw new IllegalArgumentException("pixel (" + j + "," + i + ") is outside the " + nX + "x" + nY + " view plane");
+        return pinholeRay((j - (nX - 1) / 2.0) * (vpWidth / nX), -(i - (nY - 1) / 2.0) * (vpHeight / nY));
+    }
+
+    /**
+     * The ray through the view-plane point at (xOffset, yOffset) from the plane's centre, along
+     * vRight and vUp. Operations are in the course's order so that pixel centres give exactly
+     * the rays of {@link #constructRay}.
+     */
+    private Ray pinholeRay(double xOffset, double yOffset) {
+        return new Ray(location, viewPlaneDirection(xOffset, yOffset));
+    }
+
+    private Vector viewPlaneDirection(double xOffset, double yOffset) {
+        double px = location.getX() + vTo.getX() * vpDistance;
+        double py = location.getY() + vTo.getY() * vpDistance;
+        double pz = location.getZ() + vTo.getZ() * vpDistance;
+        if (xOffset != 0) {
+            px += vRight.getX() * xOffset;
+            py += vRight.getY() * xOffset;
+            pz += vRight.getZ() * xOffset;
+        }
+        if (yOffset != 0) {
+            px += vUp.getX() * yOffset;
+            py += vUp.getY() * yOffset;
+            pz += vUp.getZ() * yOffset;
+        }
+        return new Vector(px - location.getX(), py - location.getY(), pz - location.getZ());
+    }
+
+    /**
+     * The colour seen through image point (px, py), in pixels from the image's top-left corner
+     * (pixel (x, y)'s centre is (x + 0.5, y + 0.5)). With depth of field, the lens point is drawn
+     * from {@code ctx.random}, which the sampler has positioned for this sample.
+     */
+    Color trace(double px, double py, TraceContext ctx) {
+        int nX = imageWriter.getNx(), nY = imageWriter.getNy();
+        double xOffset = (px - nX / 2.0) * (vpWidth / nX);
+        double yOffset = -(py - nY / 2.0) * (vpHeight / nY);
+        ctx.cameraRays++;
+        if (aperture == 0) return rayTracer.traceRay(pinholeRay(xOffset, yOffset), ctx);
+        // Thin lens: every ray through the lens meets the pinhole ray where it crosses the focal plane.
+        Vector d = viewPlaneDirection(xOffset, yOffset).normalize();
+        double t = focalDistance / d.dotProduct(vTo);
+        double fx = location.getX() + d.getX() * t, fy = location.getY() + d.getY() * t, fz = location.getZ() + d.getZ() * t;
+        double r = aperture * Math.sqrt(ctx.random.nextDouble());
+        double a = 2 * Math.PI * ctx.random.nextDouble();
+        double lu = r * Math.cos(a), lv = r * Math.sin(a);
+        double lx = location.getX() + vRight.getX() * lu + vUp.getX() * lv;
+        double ly = location.getY() + vRight.getY() * lu + vUp.getY() * lv;
+        double lz = location.getZ() + vRight.getZ() * lu + vUp.getZ() * lv;
+        return rayTracer.traceRay(new Ray(new Point(lx, ly, lz), new Vector(fx - lx, fy - ly, fz - lz)), ctx);
+    }
+
+    /** A new sampler (one per worker) for this camera's anti-aliasing settings. */
+    PixelSampler newSampler() {
+        return switch (antiAliasing) {
+            case NONE -> new CenterSampler(this, aperture == 0 ? 1 : lensSamples);
+            case RANDOM -> new GridSampler(this, gridColumns, gridRows);
+            case CORNERS -> new LatticeSampler(this, false, 0, 0);
+            case ADAPTIVE -> new LatticeSampler(this, true, adaptiveDepth, adaptiveThreshold);
+        };
+    }
+
+    long seed() {
+        return seed;
+    }
+
+    int threads() {
+        return threads;
+    }
+
+    double debugPrint() {
+        return debugPrint;
+    }
+
+    PrintStream output() {
+        return output;
+    }
+
+    ImageWriter imageWriter() {
+        return imageWriter;
+    }
+
+    RayTracerBase rayTracer() {
+        return rayTracer;
+    }
+
+    /**
+     * Renders the image into the image writer and returns what it did; prints the one-line
+     * summary unless silenced.
+     *
+     * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
+     */
+    public RenderStats render() {
+        RenderStats stats = new RenderLoop(this).run();
+        if (summary) output.println("render " + imageWriter.getImageName() + " " + imageWriter.getNx() + "x"
+                + imageWriter.getNy() + " [" + describe() + "]: " + stats);
+        return stats;
+    }
+
+    /** Renders the image (see {@link #render()}). @return this camera, for chaining */
+    public Camera renderImage() {
+        render();
+        return this;
+    }
+
+    /** @return the sampling settings in words, for summaries and benchmark tables */
+    public String describe() {
+        String aa = switch (antiAliasing) {
+            case NONE -> "NONE";
+            case RANDOM -> "RANDOM " + gridColumns + "x" + gridRows;
+            case CORNERS -> "CORNERS";
+            case ADAPTIVE -> "ADAPTIVE depth " + adaptiveDepth + " threshold " + adaptiveThreshold;
+        };
+        String dof = aperture == 0 ? "" : ", DOF focal " + focalDistance + " aperture " + aperture
+                + (antiAliasing == AntiAliasing.NONE ? " x" + lensSamples : "");
+        return aa + dof + ", " + rayTracer.describe() + ", seed " + seed;
+    }
+
+    /**
+     * Paints a grid over the image: every pixel whose column or row is a multiple of
+     * {@code interval}.
+     *
+     * @throws IllegalArgumentException when {@code interval} is not positive
+     */
+    public Camera printGrid(int interval, Color color) {
+        if (interval <= 0) throw new IllegalArgumentException("grid interval must be positive, got " + interval);
+        Objects.requireNonNull(color, "grid color");
+        for (int i = 0; i < imageWriter.getNy(); ++i)
+            for (int j = 0; j < imageWriter.getNx(); ++j)
+                if (i % interval == 0 || j % interval == 0) imageWriter.writePixel(j, i, color);
+        return this;
+    }
+
+    /** Writes the image to images/&lt;name&gt;.png. */
+    public void writeToImage() {
+        imageWriter.writeToImage();
+    }
+
+    /**
+     * Collects camera settings; each setter validates at once, {@link #build()} checks that nothing
+     * is missing. A builder can be reused: each build returns an independent camera.
+     */
+    public static final class Builder {
+        private Point location;
+        private Vector to, up;
+        private Point target;
+        private double vpWidth, vpHeight, vpDistance;
+        private ImageWriter imageWriter;
+        private RayTracerBase rayTracer;
+        private AntiAliasing antiAliasing = AntiAliasing.NONE;
+        private int gridColumns = 4, gridRows = 4;
+        private int adaptiveDepth = 3;
+        private double adaptiveThreshold = 8;
+        private double focalDistance, aperture;
+        private int lensSamples = 16;
+        private long seed;
+        private int threads;
+        private double debugPrint;
+        private boolean summary = true;
+        private PrintStream output = System.out;
+
+        private Builder() {
+        }
+
+        /** The camera's position. */
+        public Builder setLocation(Point location) {
+            this.location = Objects.requireNonNull(location, "camera location");
+            return this;
+        }
+
+        /**
+         * Looks along {@code to} with {@code up} as the image's up direction.
+         *
+         * @throws IllegalArgumentException when the two are not orthogonal
+         */
+        public Builder setDirection(Vector to, Vector up) {
+            Objects.requireNonNull(to, "camera direction 'to'");
+            Objects.requireNonNull(up, "camera direction 'up'");
+            if (!Util.isZero(to.normalize().dotProduct(up.normalize())))
+                throw new IllegalArgumentException("camera 'to' " + to + " and 'up' " + up + " must be orthogonal");
+            this.to = to.normalize();
+            this.up = up.normalize();
+            this.target = null;
+            return this;
+        }
+
+        /**
+         * Looks at {@code target}; {@code up} need not be orthogonal to the view direction: the
+         * image's up is its part orthogonal to it.
+         */
+        public Builder setDirection(Point target, Vector up) {
+            this.target = Objects.requireNonNull(target, "camera target");
+            this.up = Objects.requireNonNull(up, "camera up").normalize();
+            this.to = null;
+            return this;
+        }
+
+        /** Looks at {@code target} with +y as up (+z when looking straight along y). */
+        public Builder setDirection(Point target) {
+            this.target = Objects.requireNonNull(target, "camera target");
+            this.up = null;
+            this.to = null;
+            return this;
+        }
+
+        /** @throws IllegalArgumentException when a size is not a positive finite number */
+        public Builder setVpSize(double width, double height) {
+            this.vpWidth = Util.requirePositive(width, "view plane width");
+            this.vpHeight = Util.requirePositive(height, "view plane height");
+            return this;
+        }
+
+        /** @throws IllegalArgumentException when the distance is not a positive finite number */
+        public Builder setVpDistance(double distance) {
+            this.vpDistance = Util.requirePositive(distance, "view plane distance");
+            return this;
+        }
+
+        public Builder setImageWriter(ImageWriter imageWriter) {
+            this.imageWriter = Objects.requireNonNull(imageWriter, "image writer");
+            return this;
+        }
+
+        public Builder setRayTracer(RayTracerBase rayTracer) {
+            this.rayTracer = Objects.requireNonNull(rayTracer, "ray tracer");
+            return this;
+        }
+
+        /** How pixels are sampled (default NONE). */
+        public Builder setAntiAliasing(AntiAliasing mode) {
+            this.antiAliasing = Objects.requireNonNull(mode, "anti-aliasing mode");
+            return this;
+        }
+
+        /**
+         * RANDOM anti-aliasing with a grid of columns × rows jittered samples per pixel (one line
+         * for both settings).
+         */
+        public Builder setAntiAliasing(AntiAliasing mode, int columns, int rows) {
+            setAntiAliasing(mode);
+            return setAntiAliasingGrid(columns, rows);
+        }
+
+        /** The RANDOM grid: columns × rows samples per pixel (default 4×4), each at least 1. */
+        public Builder setAntiAliasingGrid(int columns, int rows) {
+            if (columns < 1 || rows < 1)
+                throw new IllegalArgumentException("anti-aliasing grid must be at least 1x1, got " + columns + "x" + rows);
+            this.gridColumns = columns;
+            this.gridRows = rows;
+            return this;
+        }
+
+        /**
+         * ADAPTIVE settings: sub-pixels down to 1/2^maxDepth of the pixel side (1..6, default 3,
+         * i.e. up to 8×8), subdividing a quadrant whose corner and centre differ by more than
+         * {@code threshold} in some channel (0..255 scale, default 8).
+         */
+        public Builder setAdaptive(int maxDepth, double threshold) {
+            if (maxDepth < 1 || maxDepth > 6)
+                throw new IllegalArgumentException("adaptive depth must be in 1..6, got " + maxDepth);
+            this.adaptiveDepth = maxDepth;
+            this.adaptiveThreshold = Util.requireNonNegative(threshold, "adaptive threshold");
+            return this;
+        }
+
+        /**
+         * Depth of field with a thin lens: objects at {@code focalDistance} (along the view
+         * direction, scene units) stay sharp, the blur grows with {@code apertureRadius}
+         * (scene units). Aperture 0 is the pinhole camera.
+         */
+        public Builder setDepthOfField(double focalDistance, double apertureRadius) {
+            this.focalDistance = Util.requirePositive(focalDistance, "focal distance");
+            this.aperture = Util.requireNonNegative(apertureRadius, "aperture radius");
+            return this;
+        }
+
+        /** Lens samples per pixel with depth of field and no anti-aliasing (default 16). */
+        public Builder setDepthOfFieldSamples(int samples) {
+            if (samples < 1) throw new IllegalArgumentException("depth-of-field samples must be at least 1, got " + samples);
+            this.lensSamples = samples;
+            return this;
+        }
+
+        /** The seed every random number of the render derives from (default 0). */
+        public Builder setSeed(long seed) {
+            this.seed = seed;
+            return this;
+        }
+
+        /**
+         * @param threads 0: render on the calling thread; n &gt; 0: n worker threads; -2: one per
+         *                available core
+         */
+        public Builder setMultithreading(int threads) {
+            if (threads < -2 || threads == -1)
+                throw new IllegalArgumentException("thread count must be 0 (calling thread), a positive number or -2 (all cores), got " + threads);
+            this.threads = threads;
+            return this;
+        }
+
+        /** @param percentStep print a progress line each time this much more is done (0..100]; 0: none */
+        public Builder setDebugPrint(double percentStep) {
+            if (!(percentStep >= 0 && percentStep <= 100))
+                throw new IllegalArgumentException("progress step must be in [0, 100] percent, got " + percentStep);
+            this.debugPrint = percentStep;
+            return this;
+        }
+
+        /** Whether to print the one-line summary after each render (default true). */
+        public Builder setSummary(boolean on) {
+            this.summary = on;
+            return this;
+        }
+
+        /** Where progress lines and the summary go (default System.out). */
+        public Builder setOutput(PrintStream output) {
+            this.output = Objects.requireNonNull(output, "output stream");
+            return this;
+        }
+
+        /**
+         * @throws MissingResourceException naming the first missing part
+         * @throws IllegalArgumentException when the settings contradict each other
+         */
+        public Camera build() {
+            final String missing = "Missing rendering data";
+            final String camera = "Camera";
+            if (location == null) throw new MissingResourceException(missing + ": location", camera, "location");
+            if (to == null && target == null) throw new MissingResourceException(missing + ": direction", camera, "direction");
+            if (vpWidth == 0) throw new MissingResourceException(missing + ": view plane size", camera, "vpSize");
+            if (vpDistance == 0) throw new MissingResourceException(missing + ": view plane distance", camera, "vpDistance");
+            if (imageWriter == null) throw new MissingResourceException(missing + ": image writer", camera, "imageWriter");
+            if (rayTracer == null) throw new MissingResourceException(missing + ": ray tracer", camera, "rayTracer");
+            Vector vTo, vUp;
+            if (to != null) {
+                vTo = to;
+                vUp = up;
+            } else {
+                if (target.equals(location))
+                    throw new IllegalArgumentException("camera target " + target + " is the camera location");
+                vTo = target.subtract(location).normalize();
+                Vector upHint = up != null ? up : Vector.AXIS_Y;
+                if (up == null && Util.isZero(Math.abs(vTo.dotProduct(upHint)) - 1)) upHint = Vector.AXIS_Z;
+                if (Util.isZero(Math.abs(vTo.dotProduct(upHint)) - 1))
+                    throw new IllegalArgumentException("camera up " + up + " is parallel to the view direction " + vTo);
+                Vector right = vTo.crossProduct(upHint).normalize();
+                vUp = right.crossProduct(vTo).normalize();
+            }
+            return new Camera(this, vTo, vUp);
+        }
+    }
+}

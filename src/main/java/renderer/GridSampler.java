@@ -1,0 +1,38 @@
+package renderer;
+
+import primitives.Color;
+
+/**
+ * {@link AntiAliasing#RANDOM}: the pixel cut into columns × rows cells, one ray through a random
+ * point of each cell (jittered, so the samples are stratified and never line up).
+ */
+final class GridSampler implements PixelSampler {
+    private final Camera camera;
+    private final int columns;
+    private final int rows;
+
+    GridSampler(Camera camera, int columns, int rows) {
+        this.camera = camera;
+        this.columns = columns;
+        this.rows = rows;
+    }
+
+    @Override
+    public Color sample(int x, int y, TraceContext ctx) {
+        double r = 0, g = 0, b = 0;
+        SampleStream rnd = ctx.random;
+        for (int row = 0, s = 0; row < rows; ++row) {
+            for (int col = 0; col < columns; ++col, ++s) {
+                rnd.reset(camera.seed(), x, y, s);
+                double px = x + (col + rnd.nextDouble()) / columns;
+                double py = y + (row + rnd.nextDouble()) / rows;
+                Color c = camera.trace(px, py, ctx);
+                r += c.getR();
+                g += c.getG();
+                b += c.getB();
+            }
+        }
+        int n = columns * rows;
+        return new Color(r / n, g / n, b / n);
+    }
+}

@@ -1,0 +1,120 @@
+package renderer;
+
+import java.awt.image.BufferedImage;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.file.AtomicMoveNotSupportedException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.Objects;
+
+import javax.imageio.ImageIO;
+
+import primitives.Color;
+
+/**
+ * A pixel buffer of {@code nX × nY} pixels written as a PNG. {@code x} is the column (0 at the
+ * left) and {@code y} the row (0 at the top). Different threads may write different pixels; the
+ * render loop publishes them before {@link #writeToImage()} is called.
+ */
+public class ImageWriter {
+    /** Where images go, relative to the working directory (the project root in tests). */
+    public static final Path IMAGES = Path.of("images");
+
+    private final String imageName;
+    private final int nX;
+    private final int nY;
+    /** Packed 0xRRGGBB per pixel, row-major. */
+    private final int[] pixels;
+
+    /**
+     * @param imageName the file name without ".png"; may contain sub-folders ("golden/spheres")
+     * @throws IllegalArgumentException for a blank name or a non-positive size
+     */
+    public ImageWriter(String imageName, int nX, int nY) {
+        Objects.requireNonNull(imageName, "image name");
+        if (imageName.isBlank()) throw new IllegalArgumentException("image name must not be blank");
+        if (nX <= 0 || nY <= 0)
+            throw new IllegalArgumentException("image size must be positive, got " + nX + "x" + nY);
+        if ((long) nX * nY > Integer.MAX_VALUE - 8)
+            throw new IllegalArgumentException("image size " + nX + "x" + nY + " has too many pixels");
+        this.imageName = imageName;
+        this.nX = nX;
+        this.nY = nY;
+        this.pixels = new int[nX * nY];
+    }
+
+    /** @return the number of columns */
+    public int getNx() {
+        return nX;
+    }
+
+    /** @return the number of rows */
+    public int getNy() {
+        return nY;
+    }
+
+    public String getImageName() {
+        return imageName;
+    }
+
+    /** Sets pixel (column x, row y), clamping each channel to 0..255. */
+    public void writePixel(int x, int y, Color color) {
+        pixels[index(x, y)] = color.toRgb();
+    }
+
+    /** @return pixel (column x, row y) as 0xRRGGBB */
+    public int getRgb(int x, int y) {
+        return pixels[index(x, y)];
+    }
+
+    private int index(int x, int y) {
+        if (x < 0 || x >= nX || y < 0 || y >= nY)
+            throw new IndexOutOfBoundsException("pixel (" + x + "," + y + ") is outside the " + nX + "x" + nY + " image");
+        return y * nX + x;
+    }
+
+    /** @return the path {@link #writeToImage()} writes: images/&lt;name&gt;.png */
+    public Path getPath() {
+        return IMAGES.resolve(imageName + ".png");
+    }
+
+    /** Writes images/&lt;name&gt;.png, creating folders as needed. */
+    public void writeToImage() {
+        writeToImage(getPath());
+    }
+
+    /**
+     * Writes the PNG to {@code file} atomically: into a temporary file beside it, then moved into
+     * place, so a reader never sees a half-written image and a failure leaves no file behind.
+     *
+     * @throws UncheckedIOException naming the file when it cannot be written
+     */
+    public void writeToImage(Path file) {
+        BufferedImage image = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
+        image.setRGB(0, 0, nX, nY, pixels, 0, nX);
+        Path target = file.toAbsolutePath();
+        Path tmp = null;
+        try {
+            Files.createDirectories(target.getParent());
+            tmp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".tmp");
+            if (!ImageIO.write(image, "png", tmp.toFile()))
+                throw new IOException("no PNG writer available");
+            try {
+                Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
+            }
+        } catch (IOException e) {
+            if (tmp != null) {
+                try {
+                    Files.deleteIfExists(tmp);
+                } catch (IOException cleanup) {
+                    e.addSuppressed(cleanup);
+                }
+            }
+            throw new UncheckedIOException("cannot write image " + target + ": " + e.getMessage(), e);
+        }
+    }
+}

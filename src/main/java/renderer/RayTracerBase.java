@@ -1,0 +1,40 @@
+package renderer;
+
+import java.util.Objects;
+
+import primitives.Color;
+import primitives.Ray;
+import scene.Scene;
+
+/** Computes the colour a ray sees in a scene. */
+public abstract class RayTracerBase {
+    /** The scene traced; read-only while rendering. */
+    protected final Scene scene;
+
+    protected RayTracerBase(Scene scene) {
+        this.scene = Objects.requireNonNull(scene, "scene");
+    }
+
+    /** @return the colour seen along {@code ray} */
+    public abstract Color traceRay(Ray ray);
+
+    /**
+     * Called once on the render's thread before the workers start: the scene is complete now,
+     * so this is where acceleration structures are built.
+     */
+    void prepare() {
+    }
+
+    /**
+     * The render loop's entry: like {@link #traceRay(Ray)}, with the worker's scratch state and
+     * the sample's random stream. Tracers outside this package simply get {@link #traceRay(Ray)}.
+     */
+    Color traceRay(Ray ray, TraceContext context) {
+        return traceRay(ray);
+    }
+
+    /** A short description of the tracer's settings for the render summary. */
+    String describe() {
+        return getClass().getSimpleName();
+    }
+}

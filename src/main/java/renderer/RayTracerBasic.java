@@ -1,0 +1,285 @@
+package renderer;
+
+import geometries.Bvh;
+import geometries.Geometry;
+import geometries.Hit;
+import geometries.Intersectable;
+import lighting.LightSource;
+import primitives.Color;
+import primitives.Double3;
+import primitives.Material;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Util;
+import primitives.Vector;
+import scene.Scene;
+
+/**
+ * The Whitted tracer of the course: emission, ambient light, Phong diffuse and specular per
+ * light, shadows attenuated by the product of kT of the occluders up to the light, and mirror
+ * reflection and (direction-keeping) refraction recursing to {@link #MAX_CALC_COLOR_LEVEL} while
+ * the accumulated coefficient stays above {@link #MIN_CALC_COLOR_K}.
+ *
+ * <p>Extensions, each one fluent line and off by default in effect:
+ * <ul>
+ * <li>{@link #setBvh(boolean)}: the bounding volume hierarchy (on by default; off gives the same
+ * image, slower);</li>
+ * <li>glossy reflection and diffuse glass, when a material has a non-zero spread: each such
+ * bounce traces a beam of {@link #setBeamSize(int)} rays; see {@link #setBeamSize(int)} for the
+ * cost policy;</li>
+ * <li>soft shadows, when a light has a non-zero radius: {@link #setShadowSamples(int)} shadow
+ * rays to points of the light's disk, their transparencies averaged.</li>
+ * </ul>
+ * Settings are made before rendering; the tracer is then only read, by any number of threads.
+ */
+public class RayTracerBasic extends RayTracerBase {
+    /** The recursion depth limit of reflection and refraction. */
+    public static final int MAX_CALC_COLOR_LEVEL = 10;
+    /** Below this accumulated coefficient (in every channel) a contribution is not traced. */
+    public static final double MIN_CALC_COLOR_K = 0.001;
+    private static final Double3 INITIAL_K = Double3.ONE;
+    /** The golden-ratio conjugate: spreads beam samples evenly in angle (a Fibonacci lattice). */
+    private static final double PHI = 0.6180339887498949;
+
+    private boolean useBvh = true;
+    private int beamSize = 16;
+    private int shadowSamples = 16;
+
+    /** The scene's geometry as the render queries it (a BVH or the flat list); set by prepare(). */
+    private volatile Intersectable world;
+    private volatile LightSource[] lights;
+
+    public RayTracerBasic(Scene scene) {
+        super(scene);
+    }
+
+    /** Switches the bounding volume hierarchy on (the default) or off, to compare. */
+    public RayTracerBasic setBvh(boolean on) {
+        this.useBvh = on;
+        this.world = null;
+        return this;
+    }
+
+    /**
+     * The number of rays in a glossy-reflection or diffuse-glass beam (default 16).
+     * <p>Cost policy: the first glossy or diffuse-glass bounce on the way from the camera traces
+     * the full beam; every bounce below a beam traces one ray (drawn from the sample's own random
+     * stream). The cost per camera sample thus grows like {@code beamSize × depth}, not
+     * {@code beamSize^depth}, and as the beam grows the deeper bounces are averaged over more
+     * parents, so the image converges to the same result.
+     *
+     * @throws IllegalArgumentException when {@code rays < 1}
+     */
+    public RayTracerBasic setBeamSize(int rays) {
+        if (rays < 1) throw new IllegalArgumentException("beam size must be at least 1 ray, got " + rays);
+        this.beamSize = rays;
+        return this;
+    }
+
+    /**
+     * The number of shadow rays toward a light with a radius (default 16); lights of radius 0 always
+     * use one.
+     *
+     * @throws IllegalArgumentException when {@code samples < 1}
+     */
+    public RayTracerBasic setShadowSamples(int samples) {
+        if (samples < 1) throw new IllegalArgumentException("shadow samples must be at least 1, got " + samples);
+        this.shadowSamples = samples;
+        return this;
+    }
+
+    public boolean isBvh() {
+        return useBvh;
+    }
+
+    public int getBeamSize() {
+        return beamSize;
+    }
+
+    public int getShadowSamples() {
+        return shadowSamples;
+    }
+
+    @Override
+    void prepare() {
+        lights = scene.lights.toArray(new LightSource[0]);
+        world = useBvh ? Bvh.build(scene.geometries) : scene.geometries;
+    }
+
+    /** The prepared geometry, built on first use when the tracer is called outside a render. */
+    private Intersectable world() {
+        Intersectable w = world;
+        if (w == null) {
+            synchronized (this) {
+                if (world == null) prepare();
+                w = world;
+            }
+        }
+        return w;
+    }
+
+    @Override
+    String describe() {
+        return "bvh " + (useBvh ? "on" : "off") + ", beam " + beamSize + ", shadow samples " + shadowSamples;
+    }
+
+    @Override
+    public Color traceRay(Ray ray) {
+        return traceRay(ray, new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K));
+    }
+
+    @Override
+    Color traceRay(Ray ray, TraceContext ctx) {
+        Intersectable w = world();
+        Hit hit = ctx.hit(MAX_CALC_COLOR_LEVEL, Double.POSITIVE_INFINITY);
+        if (!w.closestHit(ray, hit)) return scene.background;
+        return calcColor(hit, ray, MAX_CALC_COLOR_LEVEL, INITIAL_K, beamSize, ctx)
+                .add(scene.ambientLight.getIntensity());
+    }
+
+    /**
+     * @param budget rays a glossy beam below this point may use (see {@link #setBeamSize(int)})
+     */
+    private Color calcColor(Hit hit, Ray ray, int level, Double3 k, int budget, TraceContext ctx) {
+        Geometry geometry = hit.getGeometry();
+        Point p = hit.point(ray);
+        Vector n = hit.normal(p);
+        Vector v = ray.getDirection();
+        double nv = Util.alignZero(n.dotProduct(v));
+        Material material = geometry.getMaterial();
+        Color color = geometry.getEmission();
+        if (nv != 0) color = color.add(localEffects(p, n, v, nv, material, k, ctx));
+        if (level == 1) return color;
+        return color.add(globalEffects(p, n, v, nv, material, level, k, budget, ctx));
+    }
+
+    private Color localEffects(Point p, Vector n, Vector v, double nv, Material material, Double3 k,
+                               TraceContext ctx) {
+        Color color = Color.BLACK;
+        for (LightSource light : lights) {
+            Vector l = light.getL(p);
+            double nl = Util.alignZero(n.dotProduct(l));
+            if (nl * nv <= 0) continue; // the light is on the other side of the surface from the viewer
+            Double3 ktr = transparency(p, light, l, n, ctx);
+            if (ktr.product(k).lowerThan(MIN_CALC_COLOR_K)) continue;
+            // Phong: kD·|n·l| + kS·max(0, −r·v)^shininess, with r = l − 2(n·l)n.
+            double rx = l.getX() - 2 * nl * n.getX(), ry = l.getY() - 2 * nl * n.getY(), rz = l.getZ() - 2 * nl * n.getZ();
+            double minusVR = -Util.alignZero(rx * v.getX() + ry * v.getY() + rz * v.getZ());
+            double spec = minusVR <= 0 ? 0 : Math.pow(minusVR, material.nShininess);
+            double absNl = Math.abs(nl);
+            Double3 kd = material.kD, ks = material.kS;
+            Double3 factor = new Double3(kd.getD1() * absNl + ks.getD1() * spec, kd.getD2() * absNl + ks.getD2() * spec,
+                    kd.getD3() * absNl + ks.getD3() * spec);
+            color = color.add(light.getIntensity(p).scale(ktr).scale(factor));
+        }
+        return color;
+    }
+
+    /**
+     * The product of kT of the occluders between {@code p} and the light: the course's hard
+     * shadow for a point light, or the average over {@link #shadowSamples} points of its disk.
+     */
+    private Double3 transparency(Point p, LightSource light, Vector l, Vector n, TraceContext ctx) {
+        double radius = light.getRadius();
+        Intersectable w = world;
+        Transmittance tr = ctx.transmittance;
+        if (radius == 0) {
+            ctx.shadowRays++;
+            w.visitHits(new Ray(p, l.scale(-1), n), light.getDistance(p), tr.reset());
+            return tr.r == 1 && tr.g == 1 && tr.b == 1 ? Double3.ONE : new Double3(tr.r, tr.g, tr.b);
+        }
+        // Soft shadow: stratified points on the disk of the light facing p.
+        Point c = light.getPosition();
+        Vector toLight = l.scale(-1);
+        Vector a = perpendicular(toLight);
+        Vector b = toLight.crossProduct(a);
+        double side = n.dotProduct(toLight);
+        double sr = 0, sg = 0, sb = 0;
+        SampleStream rnd = ctx.random;
+        double offset = rnd.nextDouble();
+        for (int i = 0; i < shadowSamples; ++i) {
+            double rad = radius * Math.sqrt((i + rnd.nextDouble()) / shadowSamples);
+            double ang = 2 * Math.PI * frac(offset + i * PHI);
+            double sx = c.getX() + rad * (Math.cos(ang) * a.getX() + Math.sin(ang) * b.getX());
+            double sy = c.getY() + rad * (Math.cos(ang) * a.getY() + Math.sin(ang) * b.getY());
+            double sz = c.getZ() + rad * (Math.cos(ang) * a.getZ() + Math.sin(ang) * b.getZ());
+            double dx = sx - p.getX(), dy = sy - p.getY(), dz = sz - p.getZ();
+            double dist = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            // A point of the disk below the surface's horizon sends no light to p.
+            if (dist == 0 || (dx * n.getX() + dy * n.getY() + dz * n.getZ()) * side <= 0) continue;
+            ctx.shadowRays++;
+            w.visitHits(new Ray(p, new Vector(dx, dy, dz), n), dist, tr.reset());
+            sr += tr.r;
+            sg += tr.g;
+            sb += tr.b;
+        }
+        return new Double3(sr / shadowSamples, sg / shadowSamples, sb / shadowSamples);
+    }
+
+    private Color globalEffects(Point p, Vector n, Vector v, double nv, Material material, int level, Double3 k,
+                                int budget, TraceContext ctx) {
+        Color color = Color.BLACK;
+        Double3 kkr = k.product(material.kR);
+        if (!kkr.lowerThan(MIN_CALC_COLOR_K)) {
+            Vector r = nv == 0 ? v : v.subtract(n.scale(2 * nv));
+            color = color.add(beam(p, n, r, material.reflectionSpread, material.kR, kkr, level, budget, ctx));
+        }
+        Double3 kkt = k.product(material.kT);
+        if (!kkt.lowerThan(MIN_CALC_COLOR_K))
+            color = color.add(beam(p, n, v, material.transmissionSpread, material.kT, kkt, level, budget, ctx));
+        return color;
+    }
+
+    /**
+     * One secondary ray along {@code dir}, or, for a spread surface, the average of a beam of rays
+     * aimed at a disk of radius {@code spread} at unit distance along {@code dir}, stratified
+     * over the disk. A sample that would cross to the wrong side of the surface is mirrored back
+     * across it (keeping its weight, so the average neither gains nor loses energy).
+     */
+    private Color beam(Point p, Vector n, Vector dir, double spread, Double3 kx, Double3 kkx, int level, int budget,
+                       TraceContext ctx) {
+        if (spread == 0) return secondary(new Ray(p, dir, n), level, kx, kkx, budget, ctx);
+        Vector a = perpendicular(dir);
+        Vector b = dir.crossProduct(a);
+        double side = n.dotProduct(dir);
+        SampleStream rnd = ctx.random;
+        double offset = rnd.nextDouble();
+        double sr = 0, sg = 0, sb = 0;
+        for (int i = 0; i < budget; ++i) {
+            double rad = spread * Math.sqrt((i + rnd.nextDouble()) / budget);
+            double ang = 2 * Math.PI * frac(offset + i * PHI);
+            double cx = rad * Math.cos(ang), cy = rad * Math.sin(ang);
+            double dx = dir.getX() + cx * a.getX() + cy * b.getX();
+            double dy = dir.getY() + cx * a.getY() + cy * b.getY();
+            double dz = dir.getZ() + cx * a.getZ() + cy * b.getZ();
+            double dn = dx * n.getX() + dy * n.getY() + dz * n.getZ();
+            if (dn * side < 0) {
+                dx -= 2 * dn * n.getX();
+                dy -= 2 * dn * n.getY();
+                dz -= 2 * dn * n.getZ();
+            }
+            Color c = secondary(new Ray(p, new Vector(dx, dy, dz), n), level, kx, kkx, 1, ctx);
+            sr += c.getR();
+            sg += c.getG();
+            sb += c.getB();
+        }
+        return new Color(sr / budget, sg / budget, sb / budget);
+    }
+
+    private Color secondary(Ray ray, int level, Double3 kx, Double3 kkx, int budget, TraceContext ctx) {
+        ctx.secondaryRays++;
+        Hit hit = ctx.hit(level - 1, Double.POSITIVE_INFINITY);
+        Color c = world.closestHit(ray, hit) ? calcColor(hit, ray, level - 1, kkx, budget, ctx) : scene.background;
+        return c.scale(kx);
+    }
+
+    /** A unit vector orthogonal to {@code v}. */
+    private static Vector perpendicular(Vector v) {
+        Vector axis = Math.abs(v.getX()) < 0.9 ? Vector.AXIS_X : Vector.AXIS_Y;
+        return v.crossProduct(axis).normalize();
+    }
+
+    private static double frac(double x) {
+        return x - Math.floor(x);
+    }
+}

@@ -1,0 +1,125 @@
+package renderer;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CancellationException;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import primitives.Color;
+
+/**
+ * The one render loop. The image is cut into square tiles; workers claim tiles from an atomic
+ * counter (no lock per pixel) and sample every pixel of a tile with their own
+ * {@link PixelSampler} and {@link TraceContext}. Which worker renders a tile does not change its
+ * pixels: every random number comes from streams keyed by the pixel, so images are identical
+ * for any thread count.
+ */
+final class RenderLoop {
+    private final Camera camera;
+    private final ImageWriter image;
+    private final int nX;
+    private final int nY;
+    private final int tile;
+    private final int tilesX;
+    private final int tileCount;
+    private final AtomicInteger nextTile = new AtomicInteger();
+    private final AtomicBoolean cancelled = new AtomicBoolean();
+    private final RenderStats.Counter counter = new RenderStats.Counter();
+    private final Progress progress;
+
+    RenderLoop(Camera camera) {
+        this.camera = camera;
+        this.image = camera.imageWriter();
+        this.nX = image.getNx();
+        this.nY = image.getNy();
+        this.tile = camera.newSampler().tileSize();
+        this.tilesX = (nX + tile - 1) / tile;
+        this.tileCount = tilesX * ((nY + tile - 1) / tile);
+        this.progress = new Progress("render " + image.getImageName(), (long) nX * nY, camera.debugPrint(),
+                camera.output());
+    }
+
+    /**
+     * Renders every pixel into the image writer.
+     *
+     * @throws CancellationException when the calling thread is interrupted (its interrupt flag is
+     *                               kept set); the workers stop within a tile
+     */
+    RenderStats run() {
+        camera.rayTracer().prepare();
+        int threads = camera.threads();
+        if (threads == 0) {
+            worker().run();
+        } else {
+            ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
+                Thread t = new Thread(r, "render-" + image.getImageName());
+                t.setDaemon(true);
+                return t;
+            });
+            try {
+                List<Future<?>> futures = new ArrayList<>(threads);
+                for (int i = 0; i < threads; ++i) futures.add(pool.submit(worker()));
+                for (Future<?> f : futures) f.get();
+            } catch (InterruptedException e) {
+                cancelled.set(true);
+                Thread.currentThread().interrupt();
+                throw new CancellationException("render of " + image.getImageName() + " was interrupted");
+            } catch (ExecutionException e) {
+                cancelled.set(true);
+                Throwable cause = e.getCause();
+                if (cause instanceof RuntimeException re) throw re;
+                if (cause instanceof Error err) throw err;
+                throw new IllegalStateException("render worker failed: " + cause, cause);
+            } finally {
+                pool.shutdownNow();
+                awaitQuietly(pool);
+            }
+        }
+        return counter.stats(progress.elapsedSeconds(), (long) nX * nY, threads);
+    }
+
+    /** Waits for the workers to stop so that none writes pixels after the call returns. */
+    private static void awaitQuietly(ExecutorService pool) {
+        boolean interrupted = false;
+        while (true) {
+            try {
+                if (pool.awaitTermination(1, TimeUnit.MINUTES)) break;
+            } catch (InterruptedException e) {
+                interrupted = true;
+            }
+        }
+        if (interrupted) Thread.currentThread().interrupt();
+    }
+
+    private Runnable worker() {
+        return () -> {
+            PixelSampler sampler = camera.newSampler();
+            TraceContext ctx = new TraceContext(RayTracerBasic.MAX_CALC_COLOR_LEVEL, RayTracerBasic.MIN_CALC_COLOR_K);
+            try {
+                for (int t = nextTile.getAndIncrement(); t < tileCount; t = nextTile.getAndIncrement()) {
+                    if (cancelled.get() || Thread.currentThread().isInterrupted()) {
+                        cancelled.set(true);
+                        throw new CancellationException("render of " + image.getImageName() + " was interrupted");
+                    }
+                    int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
+                    int x1 = Math.min(nX, x0 + tile), y1 = Math.min(nY, y0 + tile);
+                    sampler.beginTile(x0, y0, x1, y1);
+                    for (int y = y0; y < y1; ++y)
+                        for (int x = x0; x < x1; ++x) {
+                            Color c = sampler.sample(x, y, ctx);
+                            image.writePixel(x, y, c);
+                        }
+                    progress.advance((long) (x1 - x0) * (y1 - y0));
+                }
+            } finally {
+                ctx.addTo(counter);
+            }
+        };
+    }
+}

@@ -1,0 +1,57 @@
+package renderer;
+
+import java.util.Locale;
+
+/**
+ * What a render did: its wall time and the rays it traced by kind. Returned by
+ * {@link Camera#render()} and printed as the render's one-line summary.
+ *
+ * @param seconds       wall-clock time of the render loop (without writing the PNG)
+ * @param pixels        pixels rendered
+ * @param cameraRays    rays from the camera (one per pixel sample)
+ * @param shadowRays    rays from a hit point toward a light
+ * @param secondaryRays reflected and refracted rays
+ * @param threads       worker threads used (0: the calling thread)
+ */
+public record RenderStats(double seconds, long pixels, long cameraRays, long shadowRays, long secondaryRays,
+                          int threads) {
+
+    public long totalRays() {
+        return cameraRays + shadowRays + secondaryRays;
+    }
+
+    /** @return millions of rays of every kind per second of wall time */
+    public double mraysPerSecond() {
+        return seconds > 0 ? totalRays() / seconds / 1e6 : 0;
+    }
+
+    /** @return camera rays per pixel (the anti-aliasing and depth-of-field sample count) */
+    public double samplesPerPixel() {
+        return pixels > 0 ? (double) cameraRays / pixels : 0;
+    }
+
+    @Override
+    public String toString() {
+        return String.format(Locale.ROOT,
+                "%.3f s, %d px, rays: camera %d, shadow %d, secondary %d (%.2f per px), %.2f Mrays/s, %s",
+                seconds, pixels, cameraRays, shadowRays, secondaryRays, samplesPerPixel(), mraysPerSecond(),
+                threads == 0 ? "calling thread" : threads + " threads");
+    }
+
+    /** Thread-safe accumulation of the workers' counters. */
+    static final class Counter {
+        private long camera;
+        private long shadow;
+        private long secondary;
+
+        synchronized void add(long cameraRays, long shadowRays, long secondaryRays) {
+            camera += cameraRays;
+            shadow += shadowRays;
+            secondary += secondaryRays;
+        }
+
+        synchronized RenderStats stats(double seconds, long pixels, int threads) {
+            return new RenderStats(seconds, pixels, camera, shadow, secondary, threads);
+        }
+    }
+}

@@ -1,0 +1,39 @@
+package renderer;
+
+import geometries.Geometry;
+import geometries.HitVisitor;
+import primitives.Double3;
+
+/**
+ * The shadow-ray accumulator of the any-hit walk: the product of kT of every occluder crossing
+ * between a point and a light. Stops the walk once every channel is below the tracer's
+ * threshold, because kT ≤ 1 means the product can only shrink further.
+ */
+final class Transmittance implements HitVisitor {
+    double r;
+    double g;
+    double b;
+    private final double threshold;
+
+    Transmittance(double threshold) {
+        this.threshold = threshold;
+    }
+
+    Transmittance reset() {
+        r = g = b = 1;
+        return this;
+    }
+
+    @Override
+    public boolean visit(Geometry geometry, double t) {
+        Double3 kT = geometry.getMaterial().kT;
+        r *= kT.getD1();
+        g *= kT.getD2();
+        b *= kT.getD3();
+        if (r < threshold && g < threshold && b < threshold) {
+            r = g = b = 0;
+            return false;
+        }
+        return true;
+    }
+}
