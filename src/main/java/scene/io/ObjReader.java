@@ -16,6 +16,7 @@ import java.util.Map;
 import java.util.Objects;
 
 import geometries.TriangleMesh;
+import primitives.Util;
 
 /**
  * Reads the geometry of a Wavefront OBJ file into one {@link TriangleMesh}.
@@ -48,8 +49,9 @@ import geometries.TriangleMesh;
  * every default {@link Locale} ({@code 1.5}, never {@code 1,5}), and exactly as
  * {@link Double#parseDouble} would read them.
  *
- * <p>Speed: a hand-written tokenizer over each line, no regular expressions and no string per
- * number in the common case; a million-triangle file loads in about a second.
+ * <p>Speed: a hand-written tokenizer over each line, no regular expressions, and no string per
+ * number for up to 15 significant digits. A million-triangle file (500,000 vertices, 39 MB) loads
+ * in about 2 s in a fresh JVM and 0.3 s once the JIT has compiled the reader (2-core machine).
  */
 public final class ObjReader {
     /** Powers of ten exactly representable as doubles, for the exact fast path of number parsing. */
@@ -205,7 +207,9 @@ public final class ObjReader {
             else if (n == 2) z = d;
         }
         if (n != 3) throw error("a vertex normal needs x y z, got " + n + " numbers");
-        if (x == 0 && y == 0 && z == 0) throw error("vertex normal (0,0,0) has zero length");
+        // The mesh's own test of a zero normal, so that the mesh never rejects what the reader passed.
+        if (Util.isZero(x) && Util.isZero(y) && Util.isZero(z))
+            throw error("vertex normal (" + x + "," + y + "," + z + ") has zero length");
         if (3 * normalCount + 3 > normals.length) normals = Arrays.copyOf(normals, 2 * normals.length);
         normals[3 * normalCount] = x;
         normals[3 * normalCount + 1] = y;
@@ -228,7 +232,7 @@ public final class ObjReader {
             if (TriangleMesh.isDegenerate(positions, a, b, c))
                 throw error((n == 3 ? "degenerate face" : "degenerate triangle (corners 1, " + (j + 1) + ", " + (j + 2)
                         + ") of a " + n + "-vertex face") + ": vertices " + vertex(a) + ", " + vertex(b) + ", "
-                        + vertex(c) + " coincide or are collinear");
+                        + vertex(c) + " coincide or are collinear (or enclose an area below the zero tolerance)");
         }
         int triangles = n - 2;
         if (cornerCount + 3 * triangles > cornerVertex.length) {
