@@ -29,7 +29,8 @@ import primitives.Vector;
  * normals). A closed mesh has about half as many vertices as triangles, so that is about 24 bytes
  * per triangle (36 with normals). Edge vectors are not stored: precomputing the kernel's nine
  * doubles would cost 72 more bytes per triangle, while recomputing them costs six subtractions
- * next to a test of about thirty flops. (The BVH over the mesh takes more than the mesh itself.)
+ * next to a test of about thirty flops. Measured on a 1,000,000-triangle sphere: 25 bytes per
+ * triangle for the mesh, about 130 more for the {@link Bvh} over it.
  *
  * <p>Immutable: the constructor copies its arrays.
  */
