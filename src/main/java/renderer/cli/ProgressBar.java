@@ -79,7 +79,7 @@ final class ProgressBar extends OutputStream {
 
     /** Seconds as "4.2 s", "3 min 05 s" or "2 h 03 min". */
     static String duration(double seconds) {
-        if (seconds < 60) return String.format(Locale.ROOT, "%.1f s", seconds);
+        if (seconds < 59.95) return String.format(Locale.ROOT, "%.1f s", seconds); // not "60.0 s"
         long s = Math.round(seconds);
         if (s < 3600) return String.format(Locale.ROOT, "%d min %02d s", s / 60, s % 60);
         return String.format(Locale.ROOT, "%d h %02d min", s / 3600, s / 60 % 60);

@@ -25,8 +25,8 @@ import org.xml.sax.helpers.DefaultHandler;
  * Parses scene-file text with the JDK's SAX parser into {@link XmlElement}s that know their
  * position. Hardened against hostile files: DOCTYPE declarations (and with them every external
  * entity, external DTD and entity-expansion bomb) are refused, XInclude is off, and the JDK's
- * secure-processing limits apply. Parser messages are requested in English so that the one-line
- * error does not depend on the machine's locale.
+ * secure-processing limits apply. Parser messages are requested in the base (English) language so
+ * that the one-line error does not depend on the machine's locale.
  */
 final class XmlTreeBuilder extends DefaultHandler {
     private static final String DISALLOW_DOCTYPE = "http://apache.org/xml/features/disallow-doctype-decl";
@@ -102,7 +102,9 @@ final class XmlTreeBuilder extends DefaultHandler {
             factory.setFeature("http://xml.org/sax/features/external-parameter-entities", false);
             factory.setFeature("http://apache.org/xml/features/nonvalidating/load-external-dtd", false);
             XMLReader reader = factory.newSAXParser().getXMLReader();
-            reader.setProperty(PARSER_LOCALE, Locale.ENGLISH);
+            // ROOT, not ENGLISH: there is no English bundle, so ENGLISH would fall back to the
+            // default locale's (German on a German machine); ROOT selects the base bundle.
+            reader.setProperty(PARSER_LOCALE, Locale.ROOT);
             return reader;
         } catch (ParserConfigurationException e) {
             throw new IllegalStateException("the JDK's SAX parser does not support the secure configuration", e);
