@@ -20,6 +20,7 @@ import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -64,7 +65,7 @@ public final class XmlSceneReader {
     private static final List<String> SCENE_CHILDREN = List.of("ambient-light", "geometries", "lights", "camera",
             "image", "render");
     private static final List<String> GEOMETRIES = List.of("sphere", "plane", "polygon", "triangle", "tube",
-            "cylinder");
+            "cylinder", "mesh");
     private static final List<String> LIGHTS = List.of("directional-light", "point-light", "spot-light");
     private static final List<String> RENDER_CHILDREN = List.of("anti-aliasing", "depth-of-field");
     /** Attributes a schema-aware editor adds to the root; they do not concern the scene. */
@@ -272,6 +273,10 @@ public final class XmlSceneReader {
                 return construct(e, "a positive radius, a point on the axis and the axis direction",
                         () -> new Tube(radius, axis));
             }
+            case "mesh" -> {
+                e.allowAttributes(List.of("file", "emission"));
+                return mesh(e);
+            }
             default -> { // cylinder
                 e.allowAttributes(List.of("radius", "origin", "axis", "height", "emission"));
                 double radius = e.required("radius", POSITIVE);
@@ -280,6 +285,24 @@ public final class XmlSceneReader {
                 return construct(e, "a positive radius, the centre of the base, the axis direction and a positive height",
                         () -> new Cylinder(radius, axis, height));
             }
+        }
+    }
+
+    /**
+     * A triangle mesh from an OBJ file, whose path is relative to the scene file's folder (or
+     * absolute). A missing or malformed OBJ file is reported at the {@code file} attribute.
+     */
+    private Geometry mesh(XmlElement e) throws SceneFormatException {
+        String expected = "an OBJ file; a relative path starts at the scene file's folder";
+        Path obj = file.resolveSibling(e.required("file", TEXT));
+        try {
+            return ObjReader.read(obj);
+        } catch (ObjFormatException ex) {
+            throw e.errorAt("file", e.quote("file") + ": " + ex.getMessage() + " (expected " + expected + ")");
+        } catch (NoSuchFileException ex) {
+            throw e.errorAt("file", e.quote("file") + ": cannot read " + obj + ": no such file (expected " + expected + ")");
+        } catch (IOException ex) {
+            throw e.errorAt("file", e.quote("file") + ": cannot read " + obj + ": " + ex + " (expected " + expected + ")");
         }
     }
 

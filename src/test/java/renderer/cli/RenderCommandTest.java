@@ -169,6 +169,8 @@ class RenderCommandTest {
                             ":3:28: <sphere radius=\"Infinity\">: 'Infinity' is not a finite number"),
                     Arguments.of("collinear triangle", head + "<triangle p0=\"0 0 0\" p1=\"1 0 0\" p2=\"2 0 0\"/>" + tail,
                             ":3:5: invalid <triangle>: polygon points must not be collinear"),
+                    Arguments.of("missing mesh file", head + "<mesh file=\"teapot.obj\"/>" + tail,
+                            ":3:11: <mesh file=\"teapot.obj\">: cannot read "),
                     Arguments.of("no camera", "<scene>\n</scene>\n", ":1:1: the scene has no <camera>"));
         }
 

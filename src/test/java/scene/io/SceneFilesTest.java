@@ -17,6 +17,9 @@ import geometries.Intersectable;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
+import lighting.PointLight;
+import primitives.Material;
 import lighting.AmbientLight;
 import primitives.Color;
 import primitives.Double3;
@@ -140,6 +143,26 @@ class SceneFilesTest {
         int[] expected = pixels(render(javaCamera, "java", 32, 32));
         assertThat(distinct(expected).size()).as("a real picture").isGreaterThan(100);
         assertThat(pixels(render(loaded.requireCamera(), "file", 32, 32))).isEqualTo(expected);
+    }
+
+    @Test
+    @DisplayName("teapot.xml: the course's teapot mesh, material, light and camera")
+    void teapot() throws Exception {
+        LoadedScene loaded = XmlSceneReader.read(SCENES.resolve("teapot.xml"));
+        assertThat(loaded.scene().geometries.getItems()).hasSize(1);
+        TriangleMesh fromFile = (TriangleMesh) loaded.scene().geometries.getItems().get(0);
+        assertThat(fromFile.triangleCount()).isEqualTo(992);
+
+        // The same scene in Java, from the OBJ file's header.
+        Scene scene = new Scene("teapot");
+        scene.geometries.add(ObjReader.read(SCENES.resolve("teapot.obj")).setEmission(new Color(200, 0, 0))
+                .setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(60)));
+        scene.lights.add(new PointLight(new Color(500, 500, 500), new Point(100, 0, -100)).setKq(1e-6));
+        Camera.Builder camera = Camera.getBuilder().setLocation(new Point(0, 0, -1000)).setDirection(Point.ZERO, Vector.AXIS_Y)
+                .setVpSize(200, 200).setVpDistance(1000).setRayTracer(new RayTracerBasic(scene));
+        int[] expected = pixels(render(camera, "java", 24, 24));
+        assertThat(distinct(expected).size()).as("a lit teapot").isGreaterThan(10);
+        assertThat(pixels(render(loaded.requireCamera(), "file", 24, 24))).isEqualTo(expected);
     }
 
     @Test

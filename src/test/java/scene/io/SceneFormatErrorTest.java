@@ -47,7 +47,7 @@ class SceneFormatErrorTest {
                         2, 10, "a DOCTYPE declaration (expected a scene file without DTD or entities"),
                 Arguments.of("wrong root element", "<scenes/>\n", 1, 1, "the root element is <scenes> (expected <scene>)"),
                 Arguments.of("unknown element", inGeometries("<spher center=\"0 0 -100\" radius=\"5\"/>"), 3, 5,
-                        "unknown element <spher> in <geometries> (expected one of: sphere, plane, polygon, triangle, tube, cylinder"),
+                        "unknown element <spher> in <geometries> (expected one of: sphere, plane, polygon, triangle, tube, cylinder, mesh)"),
                 Arguments.of("unknown child of a geometry",
                         inGeometries("<sphere center=\"0 0 0\" radius=\"5\"> <materials/> </sphere>"), 3, 40,
                         "unknown element <materials> in <sphere> (expected one of: material)"),
@@ -132,6 +132,28 @@ class SceneFormatErrorTest {
         assertThat(new int[] { e.getLine(), e.getColumn() }).as("line and column").containsExactly(line, column);
         assertThat(e.getMessage()).isEqualTo(file + ":" + line + ":" + column + ": " + e.getReason())
                 .doesNotContain("\n");
+    }
+
+    @Test
+    @DisplayName("a mesh file that does not exist: reported at the file attribute, with the resolved path")
+    void missingMesh() throws IOException {
+        Path file = dir.resolve("mesh.xml");
+        Files.writeString(file, inGeometries("<mesh file=\"models/absent.obj\"/>"));
+        SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+        assertThat(e.getMessage()).isEqualTo(file + ":3:11: <mesh file=\"models/absent.obj\">: cannot read "
+                + dir.resolve("models/absent.obj") + ": no such file"
+                + " (expected an OBJ file; a relative path starts at the scene file's folder)");
+    }
+
+    @Test
+    @DisplayName("a malformed mesh file: the OBJ reader's message with the OBJ line")
+    void malformedMesh() throws IOException {
+        Path file = dir.resolve("mesh.xml");
+        Files.writeString(dir.resolve("bad.obj"), "v 0 0 0\nv 1 0 0\nv 0 one 0\nf 1 2 3\n");
+        Files.writeString(file, inGeometries("<mesh file=\"bad.obj\"/>"));
+        SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+        assertThat(e.getMessage()).startsWith(file + ":3:11: <mesh file=\"bad.obj\">: " + dir.resolve("bad.obj") + ":3: ")
+                .endsWith("(expected an OBJ file; a relative path starts at the scene file's folder)");
     }
 
     @Test

@@ -22,6 +22,7 @@ import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import geometries.Tube;
 import lighting.DirectionalLight;
 import lighting.LightSource;
@@ -208,6 +209,21 @@ class XmlSceneReaderTest {
             assertThat(c.getHeight()).isEqualTo(7);
             assertPoint(c.getAxis().getHead(), 0, 0, 0);
             assertPoint(c.getAxis().getDirection(), 0, 1, 0);
+        }
+
+        @Test
+        @DisplayName("mesh from an OBJ file, found relative to the scene file, with emission and material")
+        void mesh() throws Exception {
+            Files.createDirectories(dir.resolve("models"));
+            Files.writeString(dir.resolve("models/quad.obj"), "v 0 0 0\nv 2 0 0\nv 2 2 0\nv 0 2 0\nf 1 2 3 4\n");
+            TriangleMesh mesh = geometry("""
+                    <mesh file="models/quad.obj" emission="1 2 3"><material kd="0.25"/></mesh>""", TriangleMesh.class);
+            assertThat(mesh.triangleCount()).isEqualTo(2);
+            assertPoint(mesh.getVertex(2), 2, 2, 0);
+            assertColor(mesh.getEmission(), 1, 2, 3);
+            assertThat(mesh.getMaterial().kD).isEqualTo(new Double3(0.25));
+            assertThat(hits(mesh, new Point(1.5, 0.5, 5), new Vector(0, 0, -1))).isTrue();
+            assertThat(hits(mesh, new Point(2.5, 0.5, 5), new Vector(0, 0, -1))).isFalse();
         }
 
         @Test
