@@ -5,6 +5,8 @@ import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
@@ -161,9 +163,8 @@ public final class RenderCommand implements Callable<Integer> {
         PrintStream progress = out;
         ProgressBar bar = null;
         try {
-            settings.applyTo(job.camera(), job.scene());
-            image = new ImageWriter(settings.imageName(), settings.width(), settings.height());
-            job.camera().setImageWriter(image).setSummary(!quiet);
+            image = settings.newImageWriter();
+            settings.applyTo(job.camera(), job.scene(), image).setSummary(!quiet);
             if (quiet) {
                 job.camera().setDebugPrint(0);
             } else if (terminal) {
@@ -256,6 +257,8 @@ public final class RenderCommand implements Callable<Integer> {
 
     private static String reason(IOException e) {
         if (e instanceof NoSuchFileException) return "no such file";
+        if (e instanceof AccessDeniedException) return "access denied";
+        if (e instanceof FileSystemException f && f.getReason() != null) return f.getReason();
         return describe(e);
     }
 

@@ -131,7 +131,20 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * @throws IllegalArgumentException for a value the camera or tracer refuses
      */
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene) {
-        camera.setImageWriter(new ImageWriter(imageName, width, height))
+        return applyTo(camera, scene, newImageWriter());
+    }
+
+    /** @return a new, black image writer of this name and size */
+    public ImageWriter newImageWriter() {
+        return new ImageWriter(imageName, width, height);
+    }
+
+    /**
+     * As {@link #applyTo(Camera.Builder, Scene)}, with an image writer of the caller's (which
+     * keeps a reference to it, e.g. to write it elsewhere than images/).
+     */
+    public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
+        camera.setImageWriter(image)
                 .setRayTracer(new RayTracerBasic(scene).setBvh(bvh).setBeamSize(beamSize).setShadowSamples(shadowSamples))
                 .setAntiAliasing(antiAliasing, aaColumns, aaRows)
                 .setAdaptive(adaptiveDepth, adaptiveThreshold)

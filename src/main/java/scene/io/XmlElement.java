@@ -87,7 +87,7 @@ final class XmlElement {
         try {
             return type.parse(text);
         } catch (IllegalArgumentException e) {
-            throw errorAt(attribute, quote(attribute) + ": " + e.getMessage() + " (expected " + type.expected() + ")");
+            throw errorAt(attribute, quote(attribute) + ": " + e.getMessage() + " (expected " + type.expected() + ")", e);
         }
     }
 
@@ -101,7 +101,7 @@ final class XmlElement {
         try {
             setter.accept(value);
         } catch (IllegalArgumentException e) {
-            throw errorAt(attribute, quote(attribute) + ": " + e.getMessage() + " (expected " + type.expected() + ")");
+            throw errorAt(attribute, quote(attribute) + ": " + e.getMessage() + " (expected " + type.expected() + ")", e);
         }
     }
 
@@ -122,9 +122,14 @@ final class XmlElement {
 
     /** An error at the attribute's name in the start tag (at the tag when it cannot be found). */
     SceneFormatException errorAt(String attribute, String reason) {
+        return errorAt(attribute, reason, null);
+    }
+
+    /** An error at the attribute, caused by {@code cause}. */
+    SceneFormatException errorAt(String attribute, String reason, Throwable cause) {
         Integer offset = attributeOffsets().get(attribute);
-        if (offset == null) return error(reason);
-        return new SceneFormatException(file, source.line(offset), source.column(offset), reason);
+        if (offset == null) return error(reason, cause);
+        return new SceneFormatException(file, source.line(offset), source.column(offset), reason, cause);
     }
 
     /**
