@@ -16,7 +16,8 @@ import static scene.io.ValueType.VECTOR;
 
 import java.io.IOException;
 import java.nio.ByteBuffer;
-import java.nio.charset.CharacterCodingException;
+import java.nio.CharBuffer;
+import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.AccessDeniedException;
@@ -98,18 +99,29 @@ public final class XmlSceneReader {
      *                              place and what was expected)
      */
     public static LoadedScene read(Path file) throws IOException, SceneFormatException {
-        byte[] bytes = Files.readAllBytes(file);
-        String text;
-        try {
-            text = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
-                    .onUnmappableCharacter(CodingErrorAction.REPORT).decode(ByteBuffer.wrap(bytes)).toString();
-        } catch (CharacterCodingException e) {
-            throw new SceneFormatException(file.toString(), 0, 0,
-                    "the file is not UTF-8 text (expected an XML scene file encoded in UTF-8)", e);
-        }
+        String text = decodeUtf8(Files.readAllBytes(file), file.toString());
         if (text.startsWith("\uFEFF")) text = text.substring(1); // a byte-order mark is not content
         XmlSceneReader reader = new XmlSceneReader(file);
         return reader.scene(XmlTreeBuilder.parse(text, reader.fileName));
+    }
+
+    /**
+     * Decodes strictly: the parser is given text, so bytes that are not UTF-8 are reported here,
+     * at their line and column.
+     */
+    private static String decodeUtf8(byte[] bytes, String fileName) throws SceneFormatException {
+        ByteBuffer in = ByteBuffer.wrap(bytes);
+        CharBuffer out = CharBuffer.allocate(bytes.length); // UTF-8 never decodes to more chars than bytes
+        CoderResult result = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
+                .onUnmappableCharacter(CodingErrorAction.REPORT).decode(in, out, true);
+        if (result.isError()) {
+            String before = out.flip().toString();
+            SourceText decoded = new SourceText(before);
+            int line = decoded.line(before.length());
+            throw new SceneFormatException(fileName, line, decoded.column(before.length()),
+                    "bytes that are not UTF-8 (expected an XML scene file encoded in UTF-8)");
+        }
+        return out.flip().toString();
     }
 
     private LoadedScene scene(XmlElement root) throws SceneFormatException {

@@ -4,8 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.DisplayName;
@@ -160,9 +162,17 @@ class SceneFormatErrorTest {
     @DisplayName("bytes that are not UTF-8")
     void notUtf8() throws IOException {
         Path file = dir.resolve("latin1.xml");
-        Files.write(file, new byte[] { '<', 's', 'c', 'e', 'n', 'e', ' ', 'n', 'a', 'm', 'e', '=', '"', (byte) 0xE9, '"', '/', '>' });
+        // The byte E9 alone (an ISO-8859-1 'é') is not UTF-8; it follows '<image name="é' (a
+        // UTF-8 'é', 2 bytes but one column) on line 2: column 15.
+        byte[] head = "<scene>\n<image name=\"é".getBytes(StandardCharsets.UTF_8);
+        byte[] bytes = Arrays.copyOf(head, head.length + 4);
+        bytes[head.length] = (byte) 0xE9;
+        bytes[head.length + 1] = '"';
+        bytes[head.length + 2] = '/';
+        bytes[head.length + 3] = '>';
+        Files.write(file, bytes);
         SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
-        assertThat(e.getMessage()).isEqualTo(file + ": the file is not UTF-8 text (expected an XML scene file encoded in UTF-8)");
+        assertThat(e.getMessage()).isEqualTo(file + ":2:15: bytes that are not UTF-8 (expected an XML scene file encoded in UTF-8)");
     }
 
     @Test
