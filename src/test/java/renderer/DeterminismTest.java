@@ -30,8 +30,10 @@ class DeterminismTest {
                 Arguments.of("NONE", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.NONE)),
                 Arguments.of("RANDOM 3x3", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.RANDOM, 3, 3)),
                 Arguments.of("CORNERS", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.CORNERS)),
-                Arguments.of("ADAPTIVE depth 3", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE)
-                        .setAdaptive(3, 8)),
+                // Depth 2: the noisy glossy floor and penumbrae subdivide nearly everywhere, and the
+                // property does not depend on the depth.
+                Arguments.of("ADAPTIVE depth 2", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE)
+                        .setAdaptive(2, 8)),
                 Arguments.of("NONE + depth of field", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.NONE)
                         .setDepthOfField(10, 0.2).setDepthOfFieldSamples(4)),
                 Arguments.of("RANDOM 2x2 + depth of field", (UnaryOperator<Camera.Builder>) b -> b
