@@ -25,19 +25,21 @@ import scene.Scene;
 class DeterminismTest {
     private static final int NX = 60, NY = 40;
 
+    private static Arguments mode(String name, UnaryOperator<Camera.Builder> settings) {
+        return Arguments.of(name, settings);
+    }
+
     static Stream<Arguments> modes() {
         return Stream.of(
-                Arguments.of("NONE", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.NONE)),
-                Arguments.of("RANDOM 3x3", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.RANDOM, 3, 3)),
-                Arguments.of("CORNERS", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.CORNERS)),
+                mode("NONE", b -> b.setAntiAliasing(AntiAliasing.NONE)),
+                mode("RANDOM 3x3", b -> b.setAntiAliasing(AntiAliasing.RANDOM, 3, 3)),
+                mode("CORNERS", b -> b.setAntiAliasing(AntiAliasing.CORNERS)),
                 // Depth 2: the noisy glossy floor and penumbrae subdivide nearly everywhere, and the
                 // property does not depend on the depth.
-                Arguments.of("ADAPTIVE depth 2", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE)
-                        .setAdaptive(2, 8)),
-                Arguments.of("NONE + depth of field", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.NONE)
-                        .setDepthOfField(10, 0.2).setDepthOfFieldSamples(4)),
-                Arguments.of("RANDOM 2x2 + depth of field", (UnaryOperator<Camera.Builder>) b -> b
-                        .setAntiAliasing(AntiAliasing.RANDOM, 2, 2).setDepthOfField(11, 0.3)));
+                mode("ADAPTIVE depth 2", b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(2, 8)),
+                mode("NONE + depth of field", b -> b.setDepthOfField(10, 0.2).setDepthOfFieldSamples(4)),
+                mode("RANDOM 2x2 + depth of field", b -> b.setAntiAliasing(AntiAliasing.RANDOM, 2, 2)
+                        .setDepthOfField(11, 0.3)));
     }
 
     private static int[] render(UnaryOperator<Camera.Builder> mode, int threads, long seed) {

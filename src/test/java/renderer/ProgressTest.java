@@ -45,7 +45,8 @@ class ProgressTest {
         List<String> lines = printed(b -> b.setDebugPrint(25).setSummary(true).setMultithreading(threads));
         assertThat(lines).hasSize(5);
         List<String> progress = lines.subList(0, 4);
-        assertThat(progress).allSatisfy(line -> assertThat(line).startsWith("render tiles: ").contains("elapsed").contains("ETA"));
+        assertThat(progress).allSatisfy(line ->
+                assertThat(line).startsWith("render tiles: ").contains("elapsed").contains("ETA"));
         double previous = 0;
         for (String line : progress) {
             double p = percent(line);
