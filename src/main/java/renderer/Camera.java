@@ -356,8 +356,9 @@ public final class Camera {
 
         /**
          * ADAPTIVE settings: sub-pixels down to 1/2^maxDepth of the pixel side (1..6, default 3,
-         * i.e. up to 8×8), subdividing a quadrant whose corner and centre differ by more than
-         * {@code threshold} in some channel (0..255 scale, default 8).
+         * i.e. up to 8×8), subdividing a square into its four quadrants when one of its corners
+         * differs from its centre by more than {@code threshold} in some channel (0..255 scale,
+         * default 8).
          */
         public Builder setAdaptive(int maxDepth, double threshold) {
             if (maxDepth < 1 || maxDepth > 6)

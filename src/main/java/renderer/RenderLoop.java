@@ -10,6 +10,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 
 import primitives.Color;
 
@@ -30,6 +31,8 @@ final class RenderLoop {
     private final int tileCount;
     private final AtomicInteger nextTile = new AtomicInteger();
     private final AtomicBoolean cancelled = new AtomicBoolean();
+    /** The first exception a worker failed with; the others then stop and it is rethrown. */
+    private final AtomicReference<Throwable> failure = new AtomicReference<>();
     private final RenderStats.Counter counter = new RenderStats.Counter();
     private final Progress progress;
 
@@ -50,6 +53,8 @@ final class RenderLoop {
      *
      * @throws CancellationException when the calling thread is interrupted (its interrupt flag is
      *                               kept set); the workers stop within a tile
+     * @throws RuntimeException      the first exception a worker fails with (the tracer's); the
+     *                               other workers stop within a tile
      */
     RenderStats run() {
         camera.rayTracer().prepare();
@@ -72,7 +77,9 @@ final class RenderLoop {
                 throw new CancellationException("render of " + image.getImageName() + " was interrupted");
             } catch (ExecutionException e) {
                 cancelled.set(true);
-                Throwable cause = e.getCause();
+                // Not necessarily this future's exception: a worker stopped by another's failure
+                // ends with a CancellationException, and the failure is what the caller needs.
+                Throwable cause = failure.get() != null ? failure.get() : e.getCause();
                 if (cause instanceof RuntimeException re) throw re;
                 if (cause instanceof Error err) throw err;
                 throw new IllegalStateException("render worker failed: " + cause, cause);
@@ -117,6 +124,13 @@ final class RenderLoop {
                         }
                     progress.advance((long) (x1 - x0) * (y1 - y0));
                 }
+            } catch (CancellationException e) {
+                throw e;
+            } catch (RuntimeException | Error e) {
+                // Stop the other workers at their next tile instead of finishing the image.
+                failure.compareAndSet(null, e);
+                cancelled.set(true);
+                throw e;
             } finally {
                 ctx.addTo(counter);
             }
