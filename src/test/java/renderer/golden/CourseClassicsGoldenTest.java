@@ -6,9 +6,12 @@ import static java.awt.Color.RED;
 import static java.awt.Color.WHITE;
 import static java.awt.Color.YELLOW;
 import static org.assertj.core.api.Assertions.assertThat;
+import static renderer.golden.FloorScene.FLOOR_BASE;
+import static renderer.golden.FloorScene.FLOOR_KD;
+import static renderer.golden.FloorScene.floor;
 import static renderer.golden.Golden.assertPixel;
 import static renderer.golden.Golden.blue;
-import static renderer.golden.Golden.luma;
+import static renderer.golden.Golden.lumaAt;
 import static renderer.golden.Golden.red;
 
 import org.junit.jupiter.api.DisplayName;
@@ -20,7 +23,6 @@ import geometries.Sphere;
 import geometries.Triangle;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
-import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
 import primitives.Color;
@@ -93,46 +95,15 @@ class CourseClassicsGoldenTest {
         assertPixel(image, FRONT.pixelOf(new Point(70, 70, -100), FRONT_SIZE), 0, 0, 0, 0, "black background");
     }
 
-    /**
-     * A sphere resting on a floor, seen from above and in front. The floor is matte (kS 0) so its
-     * colour is emission + ambient + kD·|n·l|·I_L, computable by hand.
-     */
+    /** Each kind of light on the floor-and-sphere stage. */
     @Nested
     @DisplayName("lights on a floor with a sphere")
     class Lights {
-        static final Golden.View VIEW = new Golden.View(new Point(0, 80, 250), new Point(0, 20, 0), 150, 250);
-        static final int SIZE = 150;
-        /** Floor emission 20 + ambient 0.1 × 255 = 25.5 per channel. */
-        static final double FLOOR_BASE = 20 + 25.5;
-        static final double FLOOR_KD = 0.5;
-
-        static Scene floorAndSphere(String name, LightSource light) {
-            Scene scene = new Scene(name).setBackground(new Color(10, 12, 30))
-                    .setAmbientLight(new AmbientLight(new Color(WHITE), 0.1));
-            scene.geometries.add(new Plane(Point.ZERO, Vector.AXIS_Y).setEmission(new Color(20, 20, 20))
-                            .setMaterial(new Material().setKd(FLOOR_KD)),
-                    new Sphere(new Point(0, 30, 0), 30).setEmission(new Color(70, 20, 20))
-                            .setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(60)));
-            scene.lights.add(light);
-            return scene;
-        }
-
-        static ImageWriter render(String what, Scene scene) {
-            ImageWriter image = Golden.image(what, SIZE, SIZE);
-            VIEW.builder().setImageWriter(image).setRayTracer(new RayTracerBasic(scene)).build()
-                    .renderImage().writeToImage();
-            return image;
-        }
-
-        int[] floor(double x, double z) {
-            return VIEW.pixelOf(new Point(x, 0, z), SIZE);
-        }
-
         @Test
         @DisplayName("directional: the whole lit floor has one colour, the shadow only emission + ambient")
         void directional() {
-            ImageWriter image = render("light-directional",
-                    floorAndSphere("directional", new DirectionalLight(new Color(200, 200, 200), new Vector(1, -1, -1))));
+            ImageWriter image = FloorScene.render("light-directional",
+                    FloorScene.create("directional", new DirectionalLight(new Color(200, 200, 200), new Vector(1, -1, -1))));
             int lit = (int) (FLOOR_BASE + FLOOR_KD * 200 / Math.sqrt(3)); // |n·l| = 1/√3
             assertPixel(image, floor(-50, 60), lit, lit, lit, 0, "lit floor, front left");
             assertPixel(image, floor(45, 90), lit, lit, lit, 0, "lit floor, front right");
@@ -145,28 +116,28 @@ class CourseClassicsGoldenTest {
         @DisplayName("point: the floor is brightest below the light and dims with distance")
         void point() {
             Point position = new Point(-40, 80, 60);
-            ImageWriter image = render("light-point", floorAndSphere("point",
+            ImageWriter image = FloorScene.render("light-point", FloorScene.create("point",
                     new PointLight(new Color(300, 300, 300), position).setKl(0.005).setKq(0.0001)));
             // Below the light: d = 80, n·l = 1, attenuation 1 / (1 + 0.4 + 0.64).
             double below = FLOOR_BASE + FLOOR_KD * 300 / (1 + 0.005 * 80 + 0.0001 * 80 * 80);
             int expected = (int) below;
             assertPixel(image, floor(-40, 60), expected, expected, expected, 1, "floor below the light");
-            assertThat(luma(image.getRgb(floor(-40, 60)[0], floor(-40, 60)[1])))
+            assertThat(lumaAt(image, floor(-40, 60)))
                     .as("floor below the light vs 100 units aside")
-                    .isGreaterThan(luma(image.getRgb(floor(50, 40)[0], floor(50, 40)[1])) + 30);
+                    .isGreaterThan(lumaAt(image, floor(50, 40)) + 30);
         }
 
         @Test
         @DisplayName("spot: a bright disc on its axis, falling off sharply with narrow beam 12")
         void spot() {
-            ImageWriter image = render("light-spot", floorAndSphere("spot",
+            ImageWriter image = FloorScene.render("light-spot", FloorScene.create("spot",
                     new SpotLight(new Color(400, 400, 400), new Point(40, 100, 60), new Vector(0, -1, 0))
                             .setKl(0.001).setNarrowBeam(12)));
             // On the axis: cos = 1, d = 100, attenuation 1 / 1.1, n·l = 1.
             int onAxis = (int) (FLOOR_BASE + FLOOR_KD * 400 / 1.1);
             assertPixel(image, floor(40, 60), onAxis, onAxis, onAxis, 1, "floor on the spot's axis");
             // 80 units aside: cos = 100/128 → cos^12 ≈ 0.05, so the floor keeps under a tenth of the light.
-            assertThat(luma(image.getRgb(floor(-40, 60)[0], floor(-40, 60)[1])))
+            assertThat(lumaAt(image, floor(-40, 60)))
                     .as("floor 80 units off the spot's axis").isLessThan(FLOOR_BASE + 0.1 * FLOOR_KD * 400);
         }
     }
@@ -175,22 +146,22 @@ class CourseClassicsGoldenTest {
     @DisplayName("shadows: a sphere and a floating triangle shade the floor from a point light")
     void shadows() {
         Point light = new Point(-100, 100, -40);
-        Scene scene = Lights.floorAndSphere("shadows", new PointLight(new Color(350, 330, 300), light).setKl(0.001));
+        Scene scene = FloorScene.create("shadows", new PointLight(new Color(350, 330, 300), light).setKl(0.001));
         Point a = new Point(-65, 42, 0), b = new Point(-40, 42, 5), c = new Point(-52, 60, 25);
         scene.geometries.add(new Triangle(a, b, c).setEmission(new Color(20, 60, 20)).setMaterial(new Material().setKd(0.5)));
-        ImageWriter image = Lights.render("shadows", scene);
+        ImageWriter image = FloorScene.render("shadows", scene);
 
         // A shadow's inside: where the line from the light through an occluder's inner point
         // (the sphere's centre, the triangle's centroid) meets the floor.
         Point centroid = new Point((a.getX() + b.getX() + c.getX()) / 3, (a.getY() + b.getY() + c.getY()) / 3,
                 (a.getZ() + b.getZ() + c.getZ()) / 3);
-        int dark = (int) Lights.FLOOR_BASE;
-        int[] sphereShadow = Lights.VIEW.pixelOf(Golden.onFloor(light, new Point(0, 30, 0)), Lights.SIZE);
-        int[] triangleShadow = Lights.VIEW.pixelOf(Golden.onFloor(light, centroid), Lights.SIZE);
-        int[] lit = Lights.VIEW.pixelOf(new Point(20, 0, 90), Lights.SIZE);
+        int dark = (int) FLOOR_BASE;
+        int[] sphereShadow = FloorScene.VIEW.pixelOf(Golden.onFloor(light, FloorScene.SPHERE_CENTRE), FloorScene.SIZE);
+        int[] triangleShadow = FloorScene.VIEW.pixelOf(Golden.onFloor(light, centroid), FloorScene.SIZE);
+        int[] lit = FloorScene.VIEW.pixelOf(new Point(20, 0, 90), FloorScene.SIZE);
         assertPixel(image, sphereShadow, dark, dark, dark, 0, "sphere's shadow");
         assertPixel(image, triangleShadow, dark, dark, dark, 0, "triangle's shadow");
-        assertThat(luma(image.getRgb(lit[0], lit[1]))).as("floor lit by the light").isGreaterThan(dark + 40);
+        assertThat(lumaAt(image, lit)).as("floor lit by the light").isGreaterThan(dark + 40);
     }
 
     @Test
@@ -231,11 +202,11 @@ class CourseClassicsGoldenTest {
                 new Sphere(new Point(-55, 25, 60), 20).setEmission(new Color(20, 30, 150))
                         .setMaterial(new Material().setKd(0.5).setKs(0.5).setShininess(60)));
         scene.lights.add(new DirectionalLight(new Color(150, 150, 150), new Vector(-1, -2, -1)));
-        ImageWriter image = Lights.render("mirrors", scene);
+        ImageWriter image = FloorScene.render("mirrors", scene);
 
         // A plane mirror at y = 0 shows a point (x, y, z) where the point (x, −y, z) would be seen.
-        int[] redImage = Lights.VIEW.pixelOf(new Point(0, -35, 0), Lights.SIZE);
-        int[] blueImage = Lights.VIEW.pixelOf(new Point(-55, -25, 60), Lights.SIZE);
+        int[] redImage = FloorScene.VIEW.pixelOf(new Point(0, -35, 0), FloorScene.SIZE);
+        int[] blueImage = FloorScene.VIEW.pixelOf(new Point(-55, -25, 60), FloorScene.SIZE);
         int redSeen = image.getRgb(redImage[0], redImage[1]);
         int blueSeen = image.getRgb(blueImage[0], blueImage[1]);
         assertThat(red(redSeen)).as("red channel of the red sphere's reflection, " + Golden.rgb(redSeen))

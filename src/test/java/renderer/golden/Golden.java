@@ -43,6 +43,11 @@ final class Golden {
         return (red(rgb) + green(rgb) + blue(rgb)) / 3.0;
     }
 
+    /** @return the mean of the three channels of the pixel at (column, row) {@code at}, 0..255 */
+    static double lumaAt(ImageWriter image, int[] at) {
+        return luma(image.getRgb(at[0], at[1]));
+    }
+
     /** @return the pixel as "(r,g,b)", for failure messages */
     static String rgb(int rgb) {
         return "(" + red(rgb) + "," + green(rgb) + "," + blue(rgb) + ")";

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static renderer.golden.Golden.assertPixel;
 import static renderer.golden.Golden.blue;
 import static renderer.golden.Golden.luma;
+import static renderer.golden.Golden.lumaAt;
 import static renderer.golden.Golden.red;
 import static renderer.golden.Golden.transitionWidth;
 
@@ -34,8 +35,8 @@ import scene.Scene;
 @DisplayName("Golden renders: picture improvements")
 class ImprovementsGoldenTest {
     /** The floor-and-sphere view of the course classics. */
-    private static final Golden.View FLOOR_VIEW = CourseClassicsGoldenTest.Lights.VIEW;
-    private static final int FLOOR_SIZE = CourseClassicsGoldenTest.Lights.SIZE;
+    private static final Golden.View FLOOR_VIEW = FloorScene.VIEW;
+    private static final int FLOOR_SIZE = FloorScene.SIZE;
 
     @Test
     @DisplayName("depth of field: the sphere at the focal distance is sharp, the near and far ones blurred")
@@ -151,9 +152,9 @@ class ImprovementsGoldenTest {
     @DisplayName("soft shadows: a light of radius 12 leaves the umbra dark and half-lights the hard shadow's edge")
     void softShadows() {
         Point light = new Point(-90, 110, 0);
-        Point centre = new Point(0, 30, 0);
-        double radius = 30;
-        Scene scene = CourseClassicsGoldenTest.Lights.floorAndSphere("soft shadows",
+        Point centre = FloorScene.SPHERE_CENTRE;
+        double radius = FloorScene.SPHERE_RADIUS;
+        Scene scene = FloorScene.create("soft shadows",
                 new PointLight(new Color(300, 300, 300), light).setKl(0.002).setRadius(12));
         ImageWriter image = Golden.image("soft-shadows", FLOOR_SIZE, FLOOR_SIZE);
         FLOOR_VIEW.builder().setImageWriter(image)
@@ -174,11 +175,11 @@ class ImprovementsGoldenTest {
         Point hardEdge = umbra.add(across.scale(lo));
         Point lit = umbra.add(across.scale(lo + 25));
 
-        int dark = (int) CourseClassicsGoldenTest.Lights.FLOOR_BASE;
+        int dark = (int) FloorScene.FLOOR_BASE;
         assertPixel(image, FLOOR_VIEW.pixelOf(umbra, FLOOR_SIZE), dark, dark, dark, 0, "umbra");
         int[] edge = FLOOR_VIEW.pixelOf(hardEdge, FLOOR_SIZE), bright = FLOOR_VIEW.pixelOf(lit, FLOOR_SIZE);
-        double litLuma = luma(image.getRgb(bright[0], bright[1]));
-        double share = (luma(image.getRgb(edge[0], edge[1])) - dark) / (litLuma - dark);
+        double litLuma = lumaAt(image, bright);
+        double share = (lumaAt(image, edge) - dark) / (litLuma - dark);
         assertThat(share).as("share of the light reaching the hard shadow's edge (lit floor %.1f)", litLuma)
                 .isBetween(0.25, 0.75);
     }
