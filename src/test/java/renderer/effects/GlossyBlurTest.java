@@ -113,7 +113,7 @@ class GlossyBlurTest {
         }
     }
 
-    @ParameterizedTest(name = "spread {0}, {1} object: width 1.374·500·spread·h/(100+h) within 20 % + 1 px")
+    @ParameterizedTest(name = "spread {0}, {1} object: width 1.374·500·spread·h/(100+h) within 10 % + 1 px")
     @CsvSource({ "0.02, near", "0.02, far", "0.05, near", "0.05, far" })
     @DisplayName("the spread means the tangent of the cone half-angle: the width matches the geometry")
     void widthMatchesTheSpreadsMeaning(double spread, String which) {
@@ -122,6 +122,6 @@ class GlossyBlurTest {
         double expected = expectedWidth(spread, near ? NEAR_HEIGHT : FAR_HEIGHT);
         int measured = near ? nearWidth(image) : farWidth(image);
         assertThat((double) measured).as("edge width in pixels, expected %.1f", expected)
-                .isBetween(0.8 * expected - 1, 1.2 * expected + 1);
+                .isBetween(0.9 * expected - 1, 1.1 * expected + 1);
     }
 }
