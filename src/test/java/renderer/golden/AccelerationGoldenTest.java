@@ -2,6 +2,8 @@ package renderer.golden;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.Arrays;
+
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 
@@ -20,7 +22,6 @@ import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.RayTracerBasic;
 import scene.Scene;
-import scene.samples.Showcase;
 
 /**
  * Speed-ups must not change a single pixel: the BVH against the flat geometry list, and worker
@@ -30,12 +31,17 @@ import scene.samples.Showcase;
 class AccelerationGoldenTest {
     private static final int SIZE = 150;
 
-    /** A 6×6 grid of coloured balls and a ring of triangles on a half-mirror floor: many primitives. */
-    private static Scene crowd() {
+    /**
+     * A 6×6 grid of coloured balls (some of glass) and a ring of triangles on a half-mirror floor:
+     * many primitives. {@code effects} makes the floor glossy and the point light an area light,
+     * so that every pixel also draws random numbers for beams and shadow samples.
+     */
+    private static Scene crowd(boolean effects) {
         Scene scene = new Scene("crowd").setBackground(new Color(15, 15, 35))
                 .setAmbientLight(new AmbientLight(new Color(255, 255, 255), 0.1));
         scene.geometries.add(new Plane(Point.ZERO, Vector.AXIS_Y).setEmission(new Color(15, 15, 15))
-                .setMaterial(new Material().setKd(0.4).setKs(0.2).setShininess(20).setKr(0.3)));
+                .setMaterial(new Material().setKd(0.4).setKs(0.2).setShininess(20).setKr(0.3)
+                        .setReflectionSpread(effects ? 0.05 : 0)));
         for (int i = 0; i < 6; ++i)
             for (int j = 0; j < 6; ++j) {
                 double x = -75 + 30 * i, z = -75 + 30 * j;
@@ -51,14 +57,16 @@ class AccelerationGoldenTest {
                     .setEmission(new Color(30, 90, 60)).setMaterial(new Material().setKd(0.5).setKs(0.3).setShininess(30)));
         }
         scene.lights.add(new DirectionalLight(new Color(120, 110, 100), new Vector(-1, -2, -1)));
-        scene.lights.add(new PointLight(new Color(300, 280, 250), new Point(40, 90, 80)).setKl(0.002));
+        scene.lights.add(new PointLight(new Color(300, 280, 250), new Point(40, 90, 80)).setKl(0.002)
+                .setRadius(effects ? 8 : 0));
         return scene;
     }
 
+    private static final Golden.View VIEW = new Golden.View(new Point(0, 120, 260), new Point(0, 0, -10), 200, 260);
+
     private static ImageWriter renderCrowd(boolean bvh) {
         ImageWriter image = Golden.image(bvh ? "bvh-on" : "bvh-off", SIZE, SIZE);
-        new Golden.View(new Point(0, 120, 260), new Point(0, 0, -10), 200, 260).builder()
-                .setImageWriter(image).setRayTracer(new RayTracerBasic(crowd()).setBvh(bvh))
+        VIEW.builder().setImageWriter(image).setRayTracer(new RayTracerBasic(crowd(false)).setBvh(bvh))
                 .build().renderImage().writeToImage();
         return image;
     }
@@ -69,24 +77,25 @@ class AccelerationGoldenTest {
         int[] on = Golden.pixels(renderCrowd(true));
         int[] off = Golden.pixels(renderCrowd(false));
         assertThat(on).as("BVH on vs off").isEqualTo(off);
-        assertThat(java.util.Arrays.stream(on).distinct().count()).as("distinct colours in the crowd")
+        assertThat(Arrays.stream(on).distinct().count()).as("distinct colours in the crowd")
                 .isGreaterThan(500);
     }
 
     @Test
-    @DisplayName("two worker threads give the same pixels as the calling thread (the showcase, 2×2 RANDOM)")
+    @DisplayName("two worker threads give the calling thread's pixels (2×2 RANDOM, glossy floor, area light)")
     void threadsChangeNothing() {
-        ImageWriter image = Golden.image("multithreaded", 200, 200);
-        ImageWriter single = new ImageWriter("unused", 200, 200);
-        Camera.Builder builder = new Golden.View(Showcase.CAMERA_LOCATION, Showcase.CAMERA_TARGET, Showcase.VP_SIZE,
-                Showcase.VP_DISTANCE).builder().setRayTracer(new RayTracerBasic(Showcase.create()))
-                .setAntiAliasing(AntiAliasing.RANDOM, 2, 2);
+        ImageWriter image = Golden.image("multithreaded", SIZE, SIZE);
+        ImageWriter single = new ImageWriter("unused", SIZE, SIZE);
+        Camera.Builder builder = VIEW.builder().setAntiAliasing(AntiAliasing.RANDOM, 2, 2)
+                .setRayTracer(new RayTracerBasic(crowd(true)).setBeamSize(8).setShadowSamples(8));
         builder.setImageWriter(image).setMultithreading(2).build().renderImage().writeToImage();
         builder.setImageWriter(single).setMultithreading(0).build().renderImage();
 
         assertThat(Golden.pixels(image)).as("2 threads vs the calling thread").isEqualTo(Golden.pixels(single));
-        int background = new Color(12, 14, 26).toRgb();
-        long covered = java.util.Arrays.stream(Golden.pixels(image)).filter(p -> p != background).count();
-        assertThat(covered).as("pixels showing something other than the background").isGreaterThan(200 * 200 / 2);
+        // And the effects are on: the plain crowd (BVH on, same settings otherwise) differs.
+        ImageWriter plain = new ImageWriter("unused", SIZE, SIZE);
+        VIEW.builder().setAntiAliasing(AntiAliasing.RANDOM, 2, 2).setImageWriter(plain)
+                .setRayTracer(new RayTracerBasic(crowd(false))).build().renderImage();
+        assertThat(Golden.pixels(image)).as("glossy floor and area light vs plain").isNotEqualTo(Golden.pixels(plain));
     }
 }
