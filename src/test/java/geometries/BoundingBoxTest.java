@@ -286,8 +286,9 @@ class BoundingBoxTest {
             ++checked;
             if (expected) ++hitsSeen;
         }
-        assertThat(hitsSeen).isGreaterThan(checked / 10);
-        assertThat(checked - hitsSeen).isGreaterThan(checked / 10);
+        // Both answers must occur often, or the comparison proves little.
+        assertThat(hitsSeen).as("hits among %d cases", checked).isGreaterThan(1000);
+        assertThat(checked - hitsSeen).as("misses among %d cases", checked).isGreaterThan(1000);
     }
 
     /** Grazing cases where rounding may decide either way: the two methods may legitimately differ. */
