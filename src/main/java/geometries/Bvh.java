@@ -120,7 +120,7 @@ public final class Bvh extends Intersectable {
         Point h = ray.getHead();
         Vector d = ray.getDirection();
         double ox = h.getX(), oy = h.getY(), oz = h.getZ();
-        double ix = 1 / d.getX(), iy = 1 / d.getY(), iz = 1 / d.getZ();
+        double ix = BoundingBox.inverse(d.getX()), iy = BoundingBox.inverse(d.getY()), iz = BoundingBox.inverse(d.getZ());
         int negative = (ix < 0 ? 1 : 0) | (iy < 0 ? 2 : 0) | (iz < 0 ? 4 : 0); // direction sign bits
         int[] stack = hit.stack;
         if (stack.length < depth) stack = hit.stack = new int[depth];
@@ -157,7 +157,7 @@ public final class Bvh extends Intersectable {
         Point h = ray.getHead();
         Vector d = ray.getDirection();
         double ox = h.getX(), oy = h.getY(), oz = h.getZ();
-        double ix = 1 / d.getX(), iy = 1 / d.getY(), iz = 1 / d.getZ();
+        double ix = BoundingBox.inverse(d.getX()), iy = BoundingBox.inverse(d.getY()), iz = BoundingBox.inverse(d.getZ());
         // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
         int node = 0;
