@@ -23,6 +23,8 @@ public final class Bvh extends Intersectable {
     /** Cost of visiting a node relative to testing one primitive, for the SAH. */
     private static final double TRAVERSAL_COST = 1.0;
 
+    /** The leaves this tree indexes, as collected: what it contributes to a tree built around it. */
+    private final Intersectable[] leaves;
     private final Intersectable[] unbounded;
     // Per primitive, in leaf order: its owner and its index within the owner.
     private final Intersectable[] owner;
@@ -52,6 +54,7 @@ public final class Bvh extends Intersectable {
             if (leaf.getBoundingBox() == null) free.add(leaf);
             else total += leaf.primitiveCount();
         }
+        this.leaves = leaves.toArray(new Intersectable[0]);
         unbounded = free.toArray(new Intersectable[0]);
 
         Builder b = new Builder(total);
@@ -181,6 +184,16 @@ public final class Bvh extends Intersectable {
         List<GeoPoint> result = new ArrayList<>();
         visitHits(ray, maxDistance, (geometry, t) -> result.add(new GeoPoint(geometry, ray.getPoint(t))));
         return result;
+    }
+
+    /**
+     * A tree inside a scene that is built into a tree in turn hands over its leaves, not itself:
+     * the outer tree then indexes every primitive directly. (Walked as a leaf, this tree would
+     * also reuse the {@link Hit#stack} the outer walk is still using.)
+     */
+    @Override
+    void collectLeaves(List<Intersectable> out) {
+        for (Intersectable leaf : leaves) out.add(leaf);
     }
 
     @Override
