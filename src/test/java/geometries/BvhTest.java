@@ -300,6 +300,8 @@ class BvhTest {
             Geometries flat = new Geometries(group, others);
             Bvh outer = Bvh.build(scene);
             assertSameClosestHits(outer, flat, rays);
+            assertSameClosestHits(scene, flat, rays); // the inner tree queried through a flat list
+            assertThat(outer.primitiveTotal()).as("the inner tree's shapes are indexed directly").isEqualTo(120);
             for (Ray ray : rays)
                 Hits.assertSameVisits(Hits.visited(outer, ray, 15), Hits.visited(flat, ray, 15), 0, "walk for " + ray);
         }
