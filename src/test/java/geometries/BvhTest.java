@@ -98,7 +98,7 @@ class BvhTest {
 
     @Nested
     @DisplayName("random scenes: the tree answers exactly as the flat list")
-    class RandomScenes_ {
+    class AgainstTheFlatList {
         @ParameterizedTest(name = "{0}")
         @MethodSource("geometries.BvhTest#randomScenes")
         @DisplayName("closest hit: same geometry and same t")

@@ -146,6 +146,18 @@ class CylinderTest implements GeometryContract {
         }
 
         @Test
+        @DisplayName("through both rims: each rim point once (a rim belongs to its cap, not to the shell)")
+        void throughTheRims() {
+            assertHits(cylinder, new Ray(new Point(2, 0, 3), new Vector(-1, 0, -1)), new Point(1, 0, 2), new Point(-1, 0, 0));
+        }
+
+        @Test
+        @DisplayName("along the shell's surface line: both rim points")
+        void alongTheSurfaceLine() {
+            assertHits(cylinder, new Ray(new Point(1, 0, -1), Z), new Point(1, 0, 0), new Point(1, 0, 2));
+        }
+
+        @Test
         @DisplayName("along the axis beyond the height, pointing away: none")
         void pointingAway() {
             assertHits(cylinder, new Ray(new Point(0, 0, 3), Z));
