@@ -23,6 +23,8 @@ public final class Bvh extends Intersectable {
     /** Cost of visiting a node relative to testing one primitive, for the SAH. */
     private static final double TRAVERSAL_COST = 1.0;
 
+    /** The leaves this tree indexes, as collected: what it contributes to a tree built around it. */
+    private final Intersectable[] leaves;
     private final Intersectable[] unbounded;
     // Per primitive, in leaf order: its owner and its index within the owner.
     private final Intersectable[] owner;
@@ -52,6 +54,7 @@ public final class Bvh extends Intersectable {
             if (leaf.getBoundingBox() == null) free.add(leaf);
             else total += leaf.primitiveCount();
         }
+        this.leaves = leaves.toArray(new Intersectable[0]);
         unbounded = free.toArray(new Intersectable[0]);
 
         Builder b = new Builder(total);
@@ -120,7 +123,7 @@ public final class Bvh extends Intersectable {
         Point h = ray.getHead();
         Vector d = ray.getDirection();
         double ox = h.getX(), oy = h.getY(), oz = h.getZ();
-        double ix = 1 / d.getX(), iy = 1 / d.getY(), iz = 1 / d.getZ();
+        double ix = BoundingBox.inverse(d.getX()), iy = BoundingBox.inverse(d.getY()), iz = BoundingBox.inverse(d.getZ());
         int negative = (ix < 0 ? 1 : 0) | (iy < 0 ? 2 : 0) | (iz < 0 ? 4 : 0); // direction sign bits
         int[] stack = hit.stack;
         if (stack.length < depth) stack = hit.stack = new int[depth];
@@ -157,7 +160,7 @@ public final class Bvh extends Intersectable {
         Point h = ray.getHead();
         Vector d = ray.getDirection();
         double ox = h.getX(), oy = h.getY(), oz = h.getZ();
-        double ix = 1 / d.getX(), iy = 1 / d.getY(), iz = 1 / d.getZ();
+        double ix = BoundingBox.inverse(d.getX()), iy = BoundingBox.inverse(d.getY()), iz = BoundingBox.inverse(d.getZ());
         // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
         int node = 0;
@@ -181,6 +184,16 @@ public final class Bvh extends Intersectable {
         List<GeoPoint> result = new ArrayList<>();
         visitHits(ray, maxDistance, (geometry, t) -> result.add(new GeoPoint(geometry, ray.getPoint(t))));
         return result;
+    }
+
+    /**
+     * A tree inside a scene that is built into a tree in turn hands over its leaves, not itself:
+     * the outer tree then indexes every primitive directly. (Walked as a leaf, this tree would
+     * also reuse the {@link Hit#stack} the outer walk is still using.)
+     */
+    @Override
+    void collectLeaves(List<Intersectable> out) {
+        for (Intersectable leaf : leaves) out.add(leaf);
     }
 
     @Override
