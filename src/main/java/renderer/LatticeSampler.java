@@ -40,8 +40,7 @@ final class LatticeSampler implements PixelSampler {
         this.maxDepth = adaptive ? maxDepth : 0;
         this.threshold = threshold;
         this.perPixel = 1 << (this.maxDepth + 1);
-        // Keep the cache around 64K points whatever the depth.
-        this.tile = Math.max(1, Math.min(16, 256 / perPixel));
+        this.tile = tileSize(this.maxDepth);
         this.side = tile * perPixel + 1;
         cr = new double[side * side];
         cg = new double[side * side];
@@ -49,9 +48,12 @@ final class LatticeSampler implements PixelSampler {
         stamp = new int[side * side];
     }
 
-    @Override
-    public int tileSize() {
-        return tile;
+    /**
+     * The tile side, in pixels, for a lattice of 2^(depth+1) points per pixel side: 16 pixels,
+     * fewer at depths above 3 so that the per-tile cache stays at most 257² points (1.8 MB).
+     */
+    static int tileSize(int depth) {
+        return Math.max(1, Math.min(16, 256 >> (depth + 1)));
     }
 
     @Override

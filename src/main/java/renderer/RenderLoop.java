@@ -34,18 +34,15 @@ final class RenderLoop {
     /** The first exception a worker failed with; the others then stop and it is rethrown. */
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
     private final RenderStats.Counter counter = new RenderStats.Counter();
-    private final Progress progress;
 
     RenderLoop(Camera camera) {
         this.camera = camera;
         this.image = camera.imageWriter();
         this.nX = image.getNx();
         this.nY = image.getNy();
-        this.tile = camera.newSampler().tileSize();
+        this.tile = camera.tileSize();
         this.tilesX = (nX + tile - 1) / tile;
         this.tileCount = tilesX * ((nY + tile - 1) / tile);
-        this.progress = new Progress("render " + image.getImageName(), (long) nX * nY, camera.debugPrint(),
-                camera.output());
     }
 
     /**
@@ -57,10 +54,15 @@ final class RenderLoop {
      *                               other workers stop within a tile
      */
     RenderStats run() {
+        long t0 = System.nanoTime();
         camera.rayTracer().prepare();
+        double prepareSeconds = (System.nanoTime() - t0) / 1e9;
+        // The clock of the render starts here, after the preparation (timed on its own).
+        Progress progress = new Progress("render " + image.getImageName(), (long) nX * nY, camera.debugPrint(),
+                camera.output());
         int threads = camera.threads();
         if (threads == 0) {
-            worker().run();
+            worker(progress).run();
         } else {
             ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
                 Thread t = new Thread(r, "render-" + image.getImageName());
@@ -69,7 +71,7 @@ final class RenderLoop {
             });
             try {
                 List<Future<?>> futures = new ArrayList<>(threads);
-                for (int i = 0; i < threads; ++i) futures.add(pool.submit(worker()));
+                for (int i = 0; i < threads; ++i) futures.add(pool.submit(worker(progress)));
                 for (Future<?> f : futures) f.get();
             } catch (InterruptedException e) {
                 cancelled.set(true);
@@ -88,7 +90,7 @@ final class RenderLoop {
                 awaitQuietly(pool);
             }
         }
-        return counter.stats(progress.elapsedSeconds(), (long) nX * nY, threads);
+        return counter.stats(progress.elapsedSeconds(), (long) nX * nY, threads, prepareSeconds);
     }
 
     /** Waits for the workers to stop so that none writes pixels after the call returns. */
@@ -104,7 +106,7 @@ final class RenderLoop {
         if (interrupted) Thread.currentThread().interrupt();
     }
 
-    private Runnable worker() {
+    private Runnable worker(Progress progress) {
         return () -> {
             PixelSampler sampler = camera.newSampler();
             TraceContext ctx = new TraceContext(RayTracerBasic.MAX_CALC_COLOR_LEVEL, RayTracerBasic.MIN_CALC_COLOR_K);

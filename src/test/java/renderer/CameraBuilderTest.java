@@ -14,6 +14,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.EnumSource;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -159,6 +160,15 @@ class CameraBuilderTest {
             assertThatIllegalArgumentException()
                     .isThrownBy(() -> Camera.getBuilder().setAntiAliasing(AntiAliasing.RANDOM, columns, rows))
                     .withMessageContaining(columns + "x" + rows);
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @EnumSource(value = AntiAliasing.class, names = "RANDOM", mode = EnumSource.Mode.EXCLUDE)
+        @DisplayName("a grid with a mode other than RANDOM is rejected, naming the mode")
+        void gridOnlyForRandom(AntiAliasing mode) {
+            assertThatIllegalArgumentException()
+                    .isThrownBy(() -> Camera.getBuilder().setAntiAliasing(mode, 2, 2))
+                    .withMessageContaining("RANDOM").withMessageContaining(mode.name());
         }
 
         @ParameterizedTest(name = "depth {0}")

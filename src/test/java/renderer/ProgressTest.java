@@ -77,4 +77,20 @@ class ProgressTest {
     void summaryOnly() {
         assertThat(printed(b -> b.setSummary(true))).singleElement().asString().contains("rays: camera 4096");
     }
+
+    @Test
+    @DisplayName("a step smaller than a tile's share prints one line per tile, never the same line twice")
+    void tinyStepsPrintEachLineOnce() {
+        // 64x64 in 16 tiles of 16x16: each tile is 6.25 % of the image, so a 0.001 % step is
+        // crossed thousands of times per tile but may print only one line for it.
+        List<String> lines = printed(b -> b.setDebugPrint(0.001).setMultithreading(0).setSummary(false));
+        assertThat(lines).hasSize(16).doesNotHaveDuplicates();
+        assertThat(lines.get(15)).contains("100.0%");
+    }
+
+    @Test
+    @DisplayName("the summary reports the preparation (BVH build) apart from the render time")
+    void summaryReportsPreparation() {
+        assertThat(printed(b -> b.setSummary(true))).singleElement().asString().contains("prepared in");
+    }
 }

@@ -146,7 +146,8 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
         camera.setImageWriter(image)
                 .setRayTracer(new RayTracerBasic(scene).setBvh(bvh).setBeamSize(beamSize).setShadowSamples(shadowSamples))
-                .setAntiAliasing(antiAliasing, aaColumns, aaRows)
+                .setAntiAliasing(antiAliasing)
+                .setAntiAliasingGrid(aaColumns, aaRows) // the grid is RANDOM's; kept for a later --aa RANDOM
                 .setAdaptive(adaptiveDepth, adaptiveThreshold)
                 .setDepthOfFieldSamples(dofSamples)
                 .setSeed(seed)
