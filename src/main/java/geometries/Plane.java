@@ -80,7 +80,7 @@ public class Plane extends Geometry {
     public boolean closestHit(Ray ray, Hit hit) {
         double t = distanceTo(ray);
         if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, 0, 0, 0);
+        hit.set(t, this, 0);
         return true;
     }
 

@@ -111,7 +111,7 @@ public class Polygon extends Geometry {
     public boolean closestHit(Ray ray, Hit hit) {
         double t = distanceTo(ray);
         if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, 0, 0, 0);
+        hit.set(t, this, 0);
         return true;
     }
 

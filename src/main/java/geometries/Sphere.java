@@ -68,7 +68,7 @@ public class Sphere extends Geometry {
         double t = tm - th;
         if (!(Util.alignZero(t) > 0)) t = tm + th;
         if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, 0, 0, 0);
+        hit.set(t, this, 0);
         return true;
     }
 

@@ -60,7 +60,7 @@ public class Triangle extends Polygon {
     public boolean closestHit(Ray ray, Hit hit) {
         double t = distanceTo(ray);
         if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, 0, 0, 0);
+        hit.set(t, this, 0);
         return true;
     }
 

@@ -256,7 +256,7 @@ public class TriangleMesh extends Geometry {
     boolean closestHit(int prim, Ray ray, Hit hit) {
         double t = intersect(prim, ray);
         if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, prim, 0, 0);
+        hit.set(t, this, prim);
         return true;
     }
 

@@ -103,7 +103,7 @@ public class Tube extends Geometry {
         t = cap(ray, true);
         if (inRange(t, best)) best = t;
         if (best == hit.t) return false;
-        hit.set(best, this, 0, 0, 0);
+        hit.set(best, this, 0);
         return true;
     }
 
