@@ -233,6 +233,116 @@ class CylinderTest implements GeometryContract {
         }
     }
 
+    /**
+     * Cylinders tens or hundreds of thousands of units from the origin: there the axial coordinate
+     * of a cap hit carries rounding far above the library's absolute zero tolerance (2^-40), so
+     * the normal must come from the surface that was hit (lean path) or from the nearest surface
+     * (course path), not from an absolute test on the axial coordinate.
+     */
+    @Nested
+    @DisplayName("normal, far from the origin")
+    class FarNormal {
+        static Stream<Arguments> farAway() {
+            return Stream.of(
+                    Arguments.of("2e4 from the origin, tilted axis", new Point(2e4, -1e4, 1.5e4), new Vector(2, -1, 2), 40, 80),
+                    Arguments.of("1e5 from the origin, tilted axis", new Point(-6e4, 7e4, 5e4), new Vector(1, 2, 2), 25, 60),
+                    Arguments.of("4e5 from the origin, tilted axis", new Point(4e5, 3e5, -2e5), new Vector(-1, 3, 1), 50, 100));
+        }
+
+        /**
+         * Which surfaces {@code p} lies on, decided independently: its axial coordinate and radial
+         * distance with a tolerance relative to the coordinates. A point near a rim is on both a
+         * cap and the shell, and either normal is right there.
+         */
+        private static void assertNormalOfTheSurface(Vector n, Point p, Point base, Vector v, double radius,
+                double height, double tol) {
+            Vector w = p.subtract(base);
+            double s = w.dotProduct(v);
+            double rho = Math.sqrt(Math.max(0, w.lengthSquared() - s * s));
+            boolean bottom = Math.abs(s) <= tol && rho <= radius + tol;
+            boolean top = Math.abs(s - height) <= tol && rho <= radius + tol;
+            boolean shell = Math.abs(rho - radius) <= tol && s >= -tol && s <= height + tol;
+            assertThat(bottom || top || shell).as("hit %s (axial %s, radial %s) is on the cylinder", p, s, rho).isTrue();
+            boolean capNormal = n.equals(v) && top || n.equals(v.scale(-1)) && bottom;
+            boolean shellNormal = shell && Math.abs(n.dotProduct(v)) < 1e-9
+                    && Math.abs(n.dotProduct(w) - rho) < tol; // radial and outward
+            assertThat(capNormal || shellNormal)
+                    .as("normal %s at %s (axial %s, radial %s; bottom %s, top %s, shell %s)", n, p, s, rho, bottom, top, shell)
+                    .isTrue();
+        }
+
+        /** Rays from a camera 3 cylinder sizes away, aimed at random points around the cylinder. */
+        private static List<Ray> cameraRays(Point middle, double size) {
+            Random rnd = new Random(17);
+            List<Ray> rays = new java.util.ArrayList<>();
+            for (int i = 0; i < 2000; ++i) {
+                Point eye = middle.add(new Vector(rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian())
+                        .normalize().scale(3 * size));
+                Point aim = middle.add(new Vector(rnd.nextDouble() - 0.5, rnd.nextDouble() - 0.5, rnd.nextDouble() - 0.5)
+                        .scale(1.6 * size));
+                rays.add(new Ray(eye, aim.subtract(eye)));
+            }
+            return rays;
+        }
+
+        private static double tolerance(Point base) {
+            return 1e-9 * Math.max(Math.abs(base.getX()), Math.max(Math.abs(base.getY()), Math.abs(base.getZ())));
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.CylinderTest$FarNormal#farAway")
+        @DisplayName("the lean path (closestHit, then the hit's normal) gives the normal of the surface hit")
+        void leanPathUsesTheSurfaceHit(String name, Point base, Vector dir, double radius, double height) {
+            Vector v = dir.normalize();
+            Cylinder c = new Cylinder(radius, new Ray(base, v), height);
+            Hit hit = new Hit();
+            int capHits = 0;
+            for (Ray ray : cameraRays(base.add(v.scale(height / 2)), Math.max(radius, height))) {
+                if (!c.closestHit(ray, hit.reset(Double.POSITIVE_INFINITY))) continue;
+                Point p = hit.point(ray);
+                Vector n = hit.normal(p);
+                if (Math.abs(n.dotProduct(v)) > 0.5) ++capHits;
+                assertNormalOfTheSurface(n, p, base, v, radius, height, tolerance(base));
+            }
+            assertThat(capHits).as("cap hits (the test must not be vacuous)").isGreaterThan(100);
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.CylinderTest$FarNormal#farAway")
+        @DisplayName("getNormal at every hit of the list API is the normal of the nearest surface")
+        void getNormalPicksTheNearestSurface(String name, Point base, Vector dir, double radius, double height) {
+            Vector v = dir.normalize();
+            Cylinder c = new Cylinder(radius, new Ray(base, v), height);
+            int capHits = 0;
+            for (Ray ray : cameraRays(base.add(v.scale(height / 2)), Math.max(radius, height))) {
+                List<Point> hits = c.findIntersections(ray);
+                if (hits == null) continue;
+                for (Point p : hits) {
+                    Vector n = c.getNormal(p);
+                    if (Math.abs(n.dotProduct(v)) > 0.5) ++capHits;
+                    assertNormalOfTheSurface(n, p, base, v, radius, height, tolerance(base));
+                }
+            }
+            assertThat(capHits).as("cap hits (the test must not be vacuous)").isGreaterThan(100);
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.CylinderTest$FarNormal#farAway")
+        @DisplayName("a ray along the axis hits the cap centres, where no radial direction exists")
+        void alongTheAxisAtTheCapCentres(String name, Point base, Vector dir, double radius, double height) {
+            Vector v = dir.normalize();
+            Cylinder c = new Cylinder(radius, new Ray(base, v), height);
+            Ray up = new Ray(base.add(v.scale(-height)), v), down = new Ray(base.add(v.scale(2 * height)), v.scale(-1));
+            Hit hit = new Hit();
+            assertThat(c.closestHit(up, hit.reset(Double.POSITIVE_INFINITY))).isTrue();
+            assertThat(hit.normal(hit.point(up))).isEqualTo(v.scale(-1));
+            assertThat(c.getNormal(hit.point(up))).isEqualTo(v.scale(-1));
+            assertThat(c.closestHit(down, hit.reset(Double.POSITIVE_INFINITY))).isTrue();
+            assertThat(hit.normal(hit.point(down))).isEqualTo(v);
+            assertThat(c.getNormal(hit.point(down))).isEqualTo(v);
+        }
+    }
+
     @Nested
     @DisplayName("bounding box")
     class Bounds {
