@@ -44,7 +44,9 @@ public class Plane extends Geometry {
         double rel = Math.sqrt(cx * cx + cy * cy + cz * cz) / (v1.length() * v2.length());
         if (rel < 1e-10)
             throw new IllegalArgumentException(what + " points must not be collinear, got " + p1 + ", " + p2 + ", " + p3);
-        return new Vector(cx, cy, cz).normalize();
+        // Not new Vector(cx, cy, cz): for a tiny triangle (edges of 1e-7) the product is below the
+        // absolute zero tolerance although the points clearly span a plane.
+        return v1.crossProduct(v2).normalize();
     }
 
     /** @return a point on the plane */

@@ -39,6 +39,7 @@ public class Polygon extends Geometry {
                 throw new IllegalArgumentException("polygon vertices " + i + " and " + (i + 1) % size
                         + " repeat the point " + vertices[i]);
         this.plane = new Plane(vertices[0], Plane.normalOf(vertices[0], vertices[1], vertices[2], "polygon"));
+        requireHittableSize(vertices[0], vertices[1], vertices[2]);
         Vector n = plane.getNormal();
         nx = n.getX();
         ny = n.getY();
@@ -84,6 +85,23 @@ public class Polygon extends Geometry {
         if (winding > 2 * Math.PI + 1e-6)
             throw new IllegalArgumentException("polygon vertices must be in order: the edges wind around "
                     + winding / (2 * Math.PI) + " times (self-crossing)");
+    }
+
+    /**
+     * Rejects a polygon too small to be hit: the intersection tests (the edge test below,
+     * Möller–Trumbore in {@link Triangle}) compare quantities of the order of twice the area with
+     * the absolute zero tolerance, so when (v1 − v0) × (v2 − v0) is below it no ray would ever hit
+     * the shape. The same rule as {@link TriangleMesh#isDegenerate}'s "too small". (A plane through
+     * such points is fine: its test uses the unit normal.)
+     */
+    private static void requireHittableSize(Point p0, Point p1, Point p2) {
+        double e1x = p1.getX() - p0.getX(), e1y = p1.getY() - p0.getY(), e1z = p1.getZ() - p0.getZ();
+        double e2x = p2.getX() - p0.getX(), e2y = p2.getY() - p0.getY(), e2z = p2.getZ() - p0.getZ();
+        double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
+        if (Util.isZero(cx) && Util.isZero(cy) && Util.isZero(cz))
+            throw new IllegalArgumentException("polygon is too small to be hit: twice the area of its first three vertices "
+                    + p0 + ", " + p1 + ", " + p2 + " is " + Math.sqrt(cx * cx + cy * cy + cz * cz)
+                    + ", below the zero tolerance 2^-40");
     }
 
     @Override
