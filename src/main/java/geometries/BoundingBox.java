@@ -31,6 +31,18 @@ public final class BoundingBox {
     public double getMaxY() { return maxY; }
     public double getMaxZ() { return maxZ; }
 
+    /**
+     * This box widened on every side by 1e-9 of its largest coordinate magnitude (plus 1e-9), so
+     * that rounding in a slab test never culls a hit that the primitive's own test accepts (flat
+     * boxes of axis-aligned triangles included). The one padding of the BVH's primitive boxes and
+     * of a mesh's early-out box: they must agree, or the two paths would disagree at the edges.
+     */
+    BoundingBox padded() {
+        double eps = 1e-9 * (1 + Math.max(Math.max(Math.abs(minX), Math.abs(maxX)),
+                Math.max(Math.max(Math.abs(minY), Math.abs(maxY)), Math.max(Math.abs(minZ), Math.abs(maxZ)))));
+        return new BoundingBox(minX - eps, minY - eps, minZ - eps, maxX + eps, maxY + eps, maxZ + eps);
+    }
+
     /** Half the surface area (the SAH cost only needs ratios). */
     double halfArea() {
         double dx = maxX - minX, dy = maxY - minY, dz = maxZ - minZ;

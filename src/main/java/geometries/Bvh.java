@@ -268,17 +268,14 @@ public final class Bvh extends Intersectable {
             int i = added++;
             owners[i] = leaf;
             prims[i] = index;
-            // Pad each box by a relative epsilon so that rounding in the slab test never culls a hit
-            // the primitive's own test accepts (flat boxes of axis-aligned triangles included).
-            double eps = 1e-9 * (1 + Math.max(Math.max(Math.abs(b.minX), Math.abs(b.maxX)),
-                    Math.max(Math.max(Math.abs(b.minY), Math.abs(b.maxY)), Math.max(Math.abs(b.minZ), Math.abs(b.maxZ)))));
+            BoundingBox p = b.padded();
             int o = i * 6;
-            bounds[o] = b.minX - eps;
-            bounds[o + 1] = b.minY - eps;
-            bounds[o + 2] = b.minZ - eps;
-            bounds[o + 3] = b.maxX + eps;
-            bounds[o + 4] = b.maxY + eps;
-            bounds[o + 5] = b.maxZ + eps;
+            bounds[o] = p.minX;
+            bounds[o + 1] = p.minY;
+            bounds[o + 2] = p.minZ;
+            bounds[o + 3] = p.maxX;
+            bounds[o + 4] = p.maxY;
+            bounds[o + 5] = p.maxZ;
             centroid[i * 3] = (b.minX + b.maxX) / 2;
             centroid[i * 3 + 1] = (b.minY + b.maxY) / 2;
             centroid[i * 3 + 2] = (b.minZ + b.maxZ) / 2;

@@ -11,7 +11,7 @@ import primitives.Vector;
  * A convex planar polygon given by its vertices in order (either winding). A ray through an edge
  * or a vertex does not hit it (the course's rule), nor does a ray in its plane.
  */
-public class Polygon extends Geometry {
+public class Polygon extends SingleHitGeometry {
     /** The vertices, in order. */
     protected final List<Point> vertices;
     /** The supporting plane. */
@@ -109,8 +109,9 @@ public class Polygon extends Geometry {
         return plane.getNormal();
     }
 
-    /** @return the hit distance, or NaN when the ray misses the polygon or grazes its boundary */
-    private double distanceTo(Ray ray) {
+    /** NaN when the ray misses the polygon or grazes its boundary. */
+    @Override
+    double distanceTo(Ray ray) {
         double t = plane.distanceTo(ray);
         if (!(t > 0)) return Double.NaN;
         Point h = ray.getHead();
@@ -123,26 +124,6 @@ public class Polygon extends Geometry {
             if (Util.alignZero(s) <= 0) return Double.NaN;
         }
         return t;
-    }
-
-    @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        double t = distanceTo(ray);
-        if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, 0);
-        return true;
-    }
-
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        double t = distanceTo(ray);
-        return !within(t, maxDistance) || visitor.visit(this, t);
-    }
-
-    @Override
-    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        double t = distanceTo(ray);
-        return within(t, maxDistance) ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
     }
 
     @Override

@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException
 import static org.assertj.core.api.Assertions.within;
 
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
 import java.util.stream.Stream;
 
@@ -289,40 +290,51 @@ class CylinderTest implements GeometryContract {
             return 1e-9 * Math.max(Math.abs(base.getX()), Math.max(Math.abs(base.getY()), Math.abs(base.getZ())));
         }
 
-        @ParameterizedTest(name = "{0}")
-        @MethodSource("geometries.CylinderTest$FarNormal#farAway")
-        @DisplayName("the lean path (closestHit, then the hit's normal) gives the normal of the surface hit")
-        void leanPathUsesTheSurfaceHit(String name, Point base, Vector dir, double radius, double height) {
-            Vector v = dir.normalize();
-            Cylinder c = new Cylinder(radius, new Ray(base, v), height);
-            Hit hit = new Hit();
-            int capHits = 0;
-            for (Ray ray : cameraRays(base.add(v.scale(height / 2)), Math.max(radius, height))) {
-                if (!c.closestHit(ray, hit.reset(Double.POSITIVE_INFINITY))) continue;
-                Point p = hit.point(ray);
-                Vector n = hit.normal(p);
-                if (Math.abs(n.dotProduct(v)) > 0.5) ++capHits;
-                assertNormalOfTheSurface(n, p, base, v, radius, height, tolerance(base));
-            }
-            assertThat(capHits).as("cap hits (the test must not be vacuous)").isGreaterThan(100);
+        /** The two ways to a hit's normal. */
+        enum Path {
+            /** closestHit, then the normal of the surface the hit record names. */
+            LEAN_PATH_HIT_NORMAL {
+                @Override
+                Map<Point, Vector> normals(Cylinder c, Ray ray) {
+                    Hit hit = new Hit();
+                    if (!c.closestHit(ray, hit)) return Map.of();
+                    Point p = hit.point(ray);
+                    return Map.of(p, hit.normal(p));
+                }
+            },
+            /** The course's list API, then getNormal of each point: the nearest surface decides. */
+            LIST_API_GET_NORMAL {
+                @Override
+                Map<Point, Vector> normals(Cylinder c, Ray ray) {
+                    List<Point> hits = c.findIntersections(ray);
+                    Map<Point, Vector> result = new java.util.IdentityHashMap<>();
+                    if (hits != null) for (Point p : hits) result.put(p, c.getNormal(p));
+                    return result;
+                }
+            };
+
+            abstract Map<Point, Vector> normals(Cylinder c, Ray ray);
         }
 
-        @ParameterizedTest(name = "{0}")
-        @MethodSource("geometries.CylinderTest$FarNormal#farAway")
-        @DisplayName("getNormal at every hit of the list API is the normal of the nearest surface")
-        void getNormalPicksTheNearestSurface(String name, Point base, Vector dir, double radius, double height) {
+        static Stream<Arguments> farAwayByPath() {
+            return farAway().flatMap(a -> Stream.of(Path.values()).map(path -> {
+                Object[] args = a.get();
+                return Arguments.of(args[0], path, args[1], args[2], args[3], args[4]);
+            }));
+        }
+
+        @ParameterizedTest(name = "{0}, {1}")
+        @MethodSource("geometries.CylinderTest$FarNormal#farAwayByPath")
+        @DisplayName("the normal at every hit is the one of the surface hit")
+        void normalOfTheSurfaceHit(String name, Path path, Point base, Vector dir, double radius, double height) {
             Vector v = dir.normalize();
             Cylinder c = new Cylinder(radius, new Ray(base, v), height);
             int capHits = 0;
-            for (Ray ray : cameraRays(base.add(v.scale(height / 2)), Math.max(radius, height))) {
-                List<Point> hits = c.findIntersections(ray);
-                if (hits == null) continue;
-                for (Point p : hits) {
-                    Vector n = c.getNormal(p);
-                    if (Math.abs(n.dotProduct(v)) > 0.5) ++capHits;
-                    assertNormalOfTheSurface(n, p, base, v, radius, height, tolerance(base));
+            for (Ray ray : cameraRays(base.add(v.scale(height / 2)), Math.max(radius, height)))
+                for (Map.Entry<Point, Vector> hit : path.normals(c, ray).entrySet()) {
+                    if (Math.abs(hit.getValue().dotProduct(v)) > 0.5) ++capHits;
+                    assertNormalOfTheSurface(hit.getValue(), hit.getKey(), base, v, radius, height, tolerance(base));
                 }
-            }
             assertThat(capHits).as("cap hits (the test must not be vacuous)").isGreaterThan(100);
         }
 
