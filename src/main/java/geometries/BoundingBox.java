@@ -6,6 +6,10 @@ package geometries;
 public final class BoundingBox {
     final double minX, minY, minZ, maxX, maxY, maxZ;
 
+    /**
+     * @throws IllegalArgumentException when min &gt; max on some axis or a bound is NaN, naming
+     *                                  both corners
+     */
     public BoundingBox(double minX, double minY, double minZ, double maxX, double maxY, double maxZ) {
         if (!(minX <= maxX) || !(minY <= maxY) || !(minZ <= maxZ))
             throw new IllegalArgumentException("bounding box needs min <= max on every axis, got min ("

@@ -11,8 +11,10 @@ import primitives.Vector;
  * A bounding volume hierarchy: just another {@link Intersectable}. Built once from the leaves of
  * a {@link Geometries} (a mesh contributes each triangle as a primitive), by the binned
  * surface-area heuristic, and flattened into arrays in depth-first order so that a walk touches
- * no objects but the primitives it tests. Unbounded leaves (planes, tubes, empty containers) are
- * kept in a short list beside the tree.
+ * no objects but the primitives it tests. Containers are flattened: a {@link Geometries} hands over
+ * its children's leaves (an empty one contributes nothing) and a nested {@code Bvh} its own leaves.
+ * Leaves without a bounding box (planes, tubes, user shapes that define none) are kept in a short
+ * list beside the tree and tested for every ray.
  *
  * <p>Immutable after {@link #build}; any number of threads may query it. The build is
  * deterministic: the same scene gives the same tree.
