@@ -6,6 +6,10 @@ package geometries;
 public final class BoundingBox {
     final double minX, minY, minZ, maxX, maxY, maxZ;
 
+    /**
+     * @throws IllegalArgumentException when min &gt; max on some axis or a bound is NaN, naming
+     *                                  both corners
+     */
     public BoundingBox(double minX, double minY, double minZ, double maxX, double maxY, double maxZ) {
         if (!(minX <= maxX) || !(minY <= maxY) || !(minZ <= maxZ))
             throw new IllegalArgumentException("bounding box needs min <= max on every axis, got min ("
@@ -30,6 +34,18 @@ public final class BoundingBox {
     public double getMaxX() { return maxX; }
     public double getMaxY() { return maxY; }
     public double getMaxZ() { return maxZ; }
+
+    /**
+     * This box widened on every side by 1e-9 of its largest coordinate magnitude (plus 1e-9), so
+     * that rounding in a slab test never culls a hit that the primitive's own test accepts (flat
+     * boxes of axis-aligned triangles included). The one padding of the BVH's primitive boxes and
+     * of a mesh's early-out box: they must agree, or the two paths would disagree at the edges.
+     */
+    BoundingBox padded() {
+        double eps = 1e-9 * (1 + Math.max(Math.max(Math.abs(minX), Math.abs(maxX)),
+                Math.max(Math.max(Math.abs(minY), Math.abs(maxY)), Math.max(Math.abs(minZ), Math.abs(maxZ)))));
+        return new BoundingBox(minX - eps, minY - eps, minZ - eps, maxX + eps, maxY + eps, maxZ + eps);
+    }
 
     /** Half the surface area (the SAH cost only needs ratios). */
     double halfArea() {
@@ -56,7 +72,7 @@ public final class BoundingBox {
      *
      * @return true when the ray segment [0, tMax] touches the box
      */
-    public boolean intersects(double ox, double oy, double oz, double invDx, double invDy, double invDz, double tMax) {
+    boolean intersects(double ox, double oy, double oz, double invDx, double invDy, double invDz, double tMax) {
         if (invDx == Double.NEGATIVE_INFINITY) invDx = Double.POSITIVE_INFINITY; // 1/-0.0 from a caller
         if (invDy == Double.NEGATIVE_INFINITY) invDy = Double.POSITIVE_INFINITY;
         if (invDz == Double.NEGATIVE_INFINITY) invDz = Double.POSITIVE_INFINITY;

@@ -11,8 +11,10 @@ import primitives.Vector;
  * A bounding volume hierarchy: just another {@link Intersectable}. Built once from the leaves of
  * a {@link Geometries} (a mesh contributes each triangle as a primitive), by the binned
  * surface-area heuristic, and flattened into arrays in depth-first order so that a walk touches
- * no objects but the primitives it tests. Unbounded leaves (planes, tubes, empty containers) are
- * kept in a short list beside the tree.
+ * no objects but the primitives it tests. Containers are flattened: a {@link Geometries} hands over
+ * its children's leaves (an empty one contributes nothing) and a nested {@code Bvh} its own leaves.
+ * Leaves without a bounding box (planes, tubes, user shapes that define none) are kept in a short
+ * list beside the tree and tested for every ray.
  *
  * <p>Immutable after {@link #build}; any number of threads may query it. The build is
  * deterministic: the same scene gives the same tree.
@@ -268,17 +270,14 @@ public final class Bvh extends Intersectable {
             int i = added++;
             owners[i] = leaf;
             prims[i] = index;
-            // Pad each box by a relative epsilon so that rounding in the slab test never culls a hit
-            // the primitive's own test accepts (flat boxes of axis-aligned triangles included).
-            double eps = 1e-9 * (1 + Math.max(Math.max(Math.abs(b.minX), Math.abs(b.maxX)),
-                    Math.max(Math.max(Math.abs(b.minY), Math.abs(b.maxY)), Math.max(Math.abs(b.minZ), Math.abs(b.maxZ)))));
+            BoundingBox p = b.padded();
             int o = i * 6;
-            bounds[o] = b.minX - eps;
-            bounds[o + 1] = b.minY - eps;
-            bounds[o + 2] = b.minZ - eps;
-            bounds[o + 3] = b.maxX + eps;
-            bounds[o + 4] = b.maxY + eps;
-            bounds[o + 5] = b.maxZ + eps;
+            bounds[o] = p.minX;
+            bounds[o + 1] = p.minY;
+            bounds[o + 2] = p.minZ;
+            bounds[o + 3] = p.maxX;
+            bounds[o + 4] = p.maxY;
+            bounds[o + 5] = p.maxZ;
             centroid[i * 3] = (b.minX + b.maxX) / 2;
             centroid[i * 3 + 1] = (b.minY + b.maxY) / 2;
             centroid[i * 3 + 2] = (b.minZ + b.maxZ) / 2;

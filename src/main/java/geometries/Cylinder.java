@@ -7,7 +7,9 @@ import primitives.Vector;
 
 /**
  * A finite cylinder with both caps: the tube's shell between the axis head (the bottom cap's
- * centre) and {@code height} along the axis direction. A ray through the rim hits the cap.
+ * centre) and {@code height} along the axis direction. A ray through the rim hits the cap. The
+ * intersection is the tube's, cut at the height; a closest hit records which surface
+ * it is on, so its normal never depends on tolerances.
  */
 public class Cylinder extends Tube {
     private final double height;
@@ -22,45 +24,27 @@ public class Cylinder extends Tube {
         return height;
     }
 
-    /** Outward normal: −axis on the bottom cap, +axis on the top cap, radial on the shell. */
+    /**
+     * Outward normal: −axis on the bottom cap, +axis on the top cap, radial on the shell. The point
+     * is given without the surface it was found on, so the nearest surface decides: its distance
+     * to the cap planes (|s| and |s − height| along the axis) against its distance to the shell
+     * (|ρ − r|, ρ its distance from the axis). An absolute tolerance on s would not do: far from
+     * the origin the rounding of a cap point's s exceeds any fixed tolerance. Near a rim both
+     * answers are right; at a cap centre only the cap's exists.
+     */
     @Override
     public Vector getNormal(Point point) {
         double s = axial(point);
-        Vector v = axis.getDirection();
-        if (Util.isZero(s)) return v.scale(-1);
-        if (Util.isZero(s - height)) return v;
-        return super.getNormal(point);
+        double qx = point.getX() - (px + vx * s), qy = point.getY() - (py + vy * s), qz = point.getZ() - (pz + vz * s);
+        double toShell = Math.abs(Math.sqrt(qx * qx + qy * qy + qz * qz) - radius);
+        double toBottom = Math.abs(s), toTop = Math.abs(s - height);
+        if (toShell < Math.min(toBottom, toTop)) return radialNormal(point);
+        return toBottom <= toTop ? axis.getDirection().negate() : axis.getDirection();
     }
 
     @Override
-    double keepShell(Ray ray, double t) {
-        if (Double.isNaN(t)) return t;
-        double s = axialAt(ray, t);
-        return Util.alignZero(s) > 0 && Util.alignZero(s - height) < 0 ? t : Double.NaN;
-    }
-
-    /** The axial coordinate of the ray point at distance t. */
-    private double axialAt(Ray ray, double t) {
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        return (h.getX() + d.getX() * t - px) * vx + (h.getY() + d.getY() * t - py) * vy + (h.getZ() + d.getZ() * t - pz) * vz;
-    }
-
-    @Override
-    double cap(Ray ray, boolean top) {
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        double dv = Util.alignZero(d.getX() * vx + d.getY() * vy + d.getZ() * vz);
-        if (dv == 0) return Double.NaN;
-        double hs = axial(h);
-        double t = ((top ? height : 0) - hs) / dv;
-        // Radial distance of the hit from the axis, squared; the rim (= r) belongs to the cap.
-        double qx = h.getX() + d.getX() * t - px, qy = h.getY() + d.getY() * t - py, qz = h.getZ() + d.getZ() * t - pz;
-        double s = qx * vx + qy * vy + qz * vz;
-        qx -= s * vx;
-        qy -= s * vy;
-        qz -= s * vz;
-        return Util.alignZero(qx * qx + qy * qy + qz * qz - radius * radius) <= 0 ? t : Double.NaN;
+    double height() {
+        return height;
     }
 
     @Override

@@ -19,6 +19,10 @@ public abstract class Geometry extends Intersectable {
         return emission;
     }
 
+    /**
+     * @param emission the light the surface gives off by itself, added to what it reflects; black by default
+     * @throws NullPointerException when emission is null
+     */
     public Geometry setEmission(Color emission) {
         this.emission = Objects.requireNonNull(emission, "emission");
         return this;
@@ -28,6 +32,11 @@ public abstract class Geometry extends Intersectable {
         return material;
     }
 
+    /**
+     * @param material the surface's coefficients; the object is shared, not copied, so changing
+     *                 its fields changes every geometry using it
+     * @throws NullPointerException when material is null
+     */
     public Geometry setMaterial(Material material) {
         this.material = Objects.requireNonNull(material, "material");
         return this;

@@ -12,11 +12,11 @@ import primitives.Vector;
 public final class Hit {
     double t = Double.POSITIVE_INFINITY;
     Geometry geometry;
-    /** Which primitive of the geometry was hit (a mesh's triangle index), 0 for simple shapes. */
+    /**
+     * Which part of the geometry was hit, for {@link Geometry#normalAt}: a mesh's triangle index,
+     * a tube's or cylinder's surface; 0 for simple shapes.
+     */
     int primitive;
-    /** Barycentric coordinates of the hit inside a mesh triangle (for normal interpolation). */
-    double u;
-    double v;
     /** The BVH walk's node stack, owned by the thread that owns this record; grown on demand. */
     int[] stack = new int[64];
     /** The entry distance of each node on {@link #stack}, to skip it when a nearer hit was found. */
@@ -27,17 +27,13 @@ public final class Hit {
         t = tMax;
         geometry = null;
         primitive = 0;
-        u = 0;
-        v = 0;
         return this;
     }
 
-    void set(double t, Geometry geometry, int primitive, double u, double v) {
+    void set(double t, Geometry geometry, int primitive) {
         this.t = t;
         this.geometry = geometry;
         this.primitive = primitive;
-        this.u = u;
-        this.v = v;
     }
 
     /** @return true when the last query found something */

@@ -96,7 +96,7 @@ public abstract class Intersectable {
         for (GeoPoint gp : list) {
             double t = gp.point.distance(head);
             if (t < hit.t) {
-                hit.set(t, gp.geometry, 0, 0, 0);
+                hit.set(t, gp.geometry, 0);
                 found = true;
             }
         }

@@ -1,14 +1,12 @@
 package geometries;
 
-import java.util.List;
-
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
 import primitives.Vector;
 
 /** An infinite plane: a point on it and a unit normal. Unbounded, so it has no bounding box. */
-public class Plane extends Geometry {
+public class Plane extends SingleHitGeometry {
     private final Point q;
     private final Vector normal;
 
@@ -44,7 +42,9 @@ public class Plane extends Geometry {
         double rel = Math.sqrt(cx * cx + cy * cy + cz * cz) / (v1.length() * v2.length());
         if (rel < 1e-10)
             throw new IllegalArgumentException(what + " points must not be collinear, got " + p1 + ", " + p2 + ", " + p3);
-        return new Vector(cx, cy, cz).normalize();
+        // Not new Vector(cx, cy, cz): for a tiny triangle (edges of 1e-7) the product is below the
+        // absolute zero tolerance although the points clearly span a plane.
+        return v1.crossProduct(v2).normalize();
     }
 
     /** @return a point on the plane */
@@ -62,9 +62,8 @@ public class Plane extends Geometry {
         return normal;
     }
 
-    /**
-     * @return the hit distance, or NaN when the ray is parallel to the plane or starts on it
-     */
+    /** NaN when the ray is parallel to the plane or starts on it. */
+    @Override
     double distanceTo(Ray ray) {
         Point h = ray.getHead();
         Vector d = ray.getDirection();
@@ -74,25 +73,5 @@ public class Plane extends Geometry {
                 + normal.getZ() * (q.getZ() - h.getZ()));
         if (nqh == 0) return Double.NaN;
         return nqh / nd;
-    }
-
-    @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        double t = distanceTo(ray);
-        if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, 0, 0, 0);
-        return true;
-    }
-
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        double t = distanceTo(ray);
-        return !within(t, maxDistance) || visitor.visit(this, t);
-    }
-
-    @Override
-    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        double t = distanceTo(ray);
-        return within(t, maxDistance) ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
     }
 }

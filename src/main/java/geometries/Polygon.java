@@ -11,7 +11,7 @@ import primitives.Vector;
  * A convex planar polygon given by its vertices in order (either winding). A ray through an edge
  * or a vertex does not hit it (the course's rule), nor does a ray in its plane.
  */
-public class Polygon extends Geometry {
+public class Polygon extends SingleHitGeometry {
     /** The vertices, in order. */
     protected final List<Point> vertices;
     /** The supporting plane. */
@@ -39,6 +39,7 @@ public class Polygon extends Geometry {
                 throw new IllegalArgumentException("polygon vertices " + i + " and " + (i + 1) % size
                         + " repeat the point " + vertices[i]);
         this.plane = new Plane(vertices[0], Plane.normalOf(vertices[0], vertices[1], vertices[2], "polygon"));
+        requireHittableSize(vertices[0], vertices[1], vertices[2]);
         Vector n = plane.getNormal();
         nx = n.getX();
         ny = n.getY();
@@ -86,13 +87,31 @@ public class Polygon extends Geometry {
                     + winding / (2 * Math.PI) + " times (self-crossing)");
     }
 
+    /**
+     * Rejects a polygon too small to be hit: the intersection tests (the edge test below,
+     * Möller–Trumbore in {@link Triangle}) compare quantities of the order of twice the area with
+     * the absolute zero tolerance, so when (v1 − v0) × (v2 − v0) is below it no ray would ever hit
+     * the shape. The same rule as {@link TriangleMesh#isDegenerate}'s "too small". (A plane through
+     * such points is fine: its test uses the unit normal.)
+     */
+    private static void requireHittableSize(Point p0, Point p1, Point p2) {
+        double e1x = p1.getX() - p0.getX(), e1y = p1.getY() - p0.getY(), e1z = p1.getZ() - p0.getZ();
+        double e2x = p2.getX() - p0.getX(), e2y = p2.getY() - p0.getY(), e2z = p2.getZ() - p0.getZ();
+        double cx = e1y * e2z - e1z * e2y, cy = e1z * e2x - e1x * e2z, cz = e1x * e2y - e1y * e2x;
+        if (Util.isZero(cx) && Util.isZero(cy) && Util.isZero(cz))
+            throw new IllegalArgumentException("polygon is too small to be hit: twice the area of its first three vertices "
+                    + p0 + ", " + p1 + ", " + p2 + " is " + Math.sqrt(cx * cx + cy * cy + cz * cz)
+                    + ", below the zero tolerance 2^-40");
+    }
+
     @Override
     public Vector getNormal(Point point) {
         return plane.getNormal();
     }
 
-    /** @return the hit distance, or NaN when the ray misses the polygon or grazes its boundary */
-    private double distanceTo(Ray ray) {
+    /** NaN when the ray misses the polygon or grazes its boundary. */
+    @Override
+    double distanceTo(Ray ray) {
         double t = plane.distanceTo(ray);
         if (!(t > 0)) return Double.NaN;
         Point h = ray.getHead();
@@ -105,26 +124,6 @@ public class Polygon extends Geometry {
             if (Util.alignZero(s) <= 0) return Double.NaN;
         }
         return t;
-    }
-
-    @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        double t = distanceTo(ray);
-        if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, 0, 0, 0);
-        return true;
-    }
-
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        double t = distanceTo(ray);
-        return !within(t, maxDistance) || visitor.visit(this, t);
-    }
-
-    @Override
-    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        double t = distanceTo(ray);
-        return within(t, maxDistance) ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
     }
 
     @Override

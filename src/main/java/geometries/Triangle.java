@@ -1,7 +1,5 @@
 package geometries;
 
-import java.util.List;
-
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -52,27 +50,9 @@ public class Triangle extends Polygon {
         return (e2x * qx + e2y * qy + e2z * qz) * inv;
     }
 
-    private double distanceTo(Ray ray) {
+    /** Möller–Trumbore instead of the polygon's plane-then-edges test. */
+    @Override
+    double distanceTo(Ray ray) {
         return intersect(ray, ax, ay, az, e1x, e1y, e1z, e2x, e2y, e2z);
-    }
-
-    @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        double t = distanceTo(ray);
-        if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, 0, 0, 0);
-        return true;
-    }
-
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        double t = distanceTo(ray);
-        return !within(t, maxDistance) || visitor.visit(this, t);
-    }
-
-    @Override
-    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        double t = distanceTo(ray);
-        return within(t, maxDistance) ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
     }
 }

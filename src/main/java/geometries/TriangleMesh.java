@@ -120,11 +120,7 @@ public class TriangleMesh extends Geometry {
         this.indices = indices.clone();
         this.normals = normals;
         this.bounds = computeBounds();
-        double eps = 1e-9 * (1 + Math.max(Math.max(Math.abs(bounds.minX), Math.abs(bounds.maxX)),
-                Math.max(Math.max(Math.abs(bounds.minY), Math.abs(bounds.maxY)),
-                        Math.max(Math.abs(bounds.minZ), Math.abs(bounds.maxZ)))));
-        this.paddedBounds = new BoundingBox(bounds.minX - eps, bounds.minY - eps, bounds.minZ - eps,
-                bounds.maxX + eps, bounds.maxY + eps, bounds.maxZ + eps);
+        this.paddedBounds = bounds.padded();
     }
 
     /**
@@ -256,7 +252,7 @@ public class TriangleMesh extends Geometry {
     boolean closestHit(int prim, Ray ray, Hit hit) {
         double t = intersect(prim, ray);
         if (!inRange(t, hit.t)) return false;
-        hit.set(t, this, prim, 0, 0);
+        hit.set(t, this, prim);
         return true;
     }
 

@@ -10,6 +10,13 @@ import primitives.Vector;
 
 /** An infinite circular tube of a positive radius around an axis line. Unbounded. */
 public class Tube extends Geometry {
+    /** {@link Hit#primitive} of a hit on the shell (the curved surface). */
+    static final int SHELL = 0;
+    /** {@link Hit#primitive} of a hit on a cylinder's bottom cap (at the axis head). */
+    static final int BOTTOM = 1;
+    /** {@link Hit#primitive} of a hit on a cylinder's top cap. */
+    static final int TOP = 2;
+
     /** The axis: its head is a point on the axis, its direction is unit length. */
     protected final Ray axis;
     protected final double radius;
@@ -43,89 +50,142 @@ public class Tube extends Geometry {
 
     @Override
     public Vector getNormal(Point point) {
+        return radialNormal(point);
+    }
+
+    /** The shell's normal: from the point's foot on the axis to the point, unit length. */
+    final Vector radialNormal(Point point) {
         double s = axial(point);
         return new Vector(point.getX() - (px + vx * s), point.getY() - (py + vy * s), point.getZ() - (pz + vz * s))
                 .normalize();
     }
 
+    /** The normal of the surface recorded by the closest-hit query: no guessing from the point. */
+    @Override
+    Vector normalAt(Point point, Hit hit) {
+        return switch (hit.primitive) {
+        case BOTTOM -> axis.getDirection().negate();
+        case TOP -> axis.getDirection();
+        default -> radialNormal(point);
+        };
+    }
+
     /**
-     * One root of |(h + t·d − p)⊥|² = r², where ⊥ removes the axis component.
-     *
-     * @param far false for the nearer root, true for the farther one
-     * @return the root, or NaN when the ray is parallel to the axis, misses or is tangent
+     * The axial extent of the shape: the shell is kept for 0 &lt; s &lt; height, and caps close it
+     * at s = 0 and s = height. +∞ for the infinite tube (no caps, the whole shell).
      */
-    double shellRoot(Ray ray, boolean far) {
+    double height() {
+        return Double.POSITIVE_INFINITY;
+    }
+
+    /**
+     * The one intersection routine behind {@link #closestHit(Ray, Hit)} and
+     * {@link #visitHits(Ray, double, HitVisitor)}: the shell's quadratic is solved once, and the
+     * caps are tested with the same per-ray quantities (the axial coordinate along the ray is
+     * {@code wv + t·dv}, the radial vector is {@code b + t·a}). Exactly one of {@code hit} and
+     * {@code visitor} is non-null: with {@code hit} it is a closest-hit query bounded by
+     * {@code hit.t}, with {@code visitor} an any-hit walk bounded by {@code maxDistance}.
+     *
+     * @return closest-hit: whether {@code hit} was updated; any-hit: false when the visitor stopped
+     */
+    private boolean intersect(Ray ray, Hit hit, double maxDistance, HitVisitor visitor) {
         Point h = ray.getHead();
         Vector d = ray.getDirection();
         double dx = d.getX(), dy = d.getY(), dz = d.getZ();
         double wx = h.getX() - px, wy = h.getY() - py, wz = h.getZ() - pz;
         double dv = dx * vx + dy * vy + dz * vz;
         double wv = wx * vx + wy * vy + wz * vz;
+        // The ray's direction and head relative to the axis head, without their axial parts.
         double ax = dx - dv * vx, ay = dy - dv * vy, az = dz - dv * vz;
         double bx = wx - wv * vx, by = wy - wv * vy, bz = wz - wv * vz;
         double a = ax * ax + ay * ay + az * az;
-        if (Util.isZero(a)) return Double.NaN;
         double b = ax * bx + ay * by + az * bz; // half of the usual b
         double c = bx * bx + by * by + bz * bz - radius * radius;
-        double disc = Util.alignZero(b * b - a * c);
-        if (disc <= 0) return Double.NaN;
-        double sq = Math.sqrt(disc);
-        return far ? (-b + sq) / a : (-b - sq) / a;
-    }
+        double height = height();
 
-    /** @return the root if it lies on the part of the shell this shape keeps (all of it, for a tube) */
-    double keepShell(Ray ray, double t) {
-        return t;
-    }
+        // Shell: the roots of |b + t·a|² = r², kept (for a cylinder) strictly between the caps.
+        double near = Double.NaN, far = Double.NaN;
+        if (!Util.isZero(a)) { // not parallel to the axis
+            double disc = Util.alignZero(b * b - a * c);
+            if (disc > 0) { // a tangent is no hit
+                double sq = Math.sqrt(disc);
+                near = keepShell((-b - sq) / a, wv, dv, height);
+                far = keepShell((-b + sq) / a, wv, dv, height);
+            }
+        }
+        // Caps: the planes s = 0 and s = height, inside the rim (the rim belongs to the cap).
+        double bottom = Double.NaN, top = Double.NaN;
+        double dvz = Util.alignZero(dv);
+        if (height != Double.POSITIVE_INFINITY && dvz != 0) {
+            bottom = insideRim(-wv / dv, ax, ay, az, bx, by, bz);
+            top = insideRim((height - wv) / dv, ax, ay, az, bx, by, bz);
+        }
 
-    private double near(Ray ray) {
-        return keepShell(ray, shellRoot(ray, false));
-    }
-
-    private double far(Ray ray) {
-        return keepShell(ray, shellRoot(ray, true));
-    }
-
-    /** Cap roots (none for an infinite tube); see {@link Cylinder}. */
-    double cap(Ray ray, boolean top) {
-        return Double.NaN;
-    }
-
-    @Override
-    public boolean closestHit(Ray ray, Hit hit) {
+        if (hit == null)
+            return offer(visitor, maxDistance, near) && offer(visitor, maxDistance, far)
+                    && offer(visitor, maxDistance, bottom) && offer(visitor, maxDistance, top);
         double best = hit.t;
-        double t = near(ray);
-        if (inRange(t, best)) best = t;
-        t = far(ray);
-        if (inRange(t, best)) best = t;
-        t = cap(ray, false);
-        if (inRange(t, best)) best = t;
-        t = cap(ray, true);
-        if (inRange(t, best)) best = t;
-        if (best == hit.t) return false;
-        hit.set(best, this, 0, 0, 0);
+        int surface = -1;
+        if (inRange(near, best)) {
+            best = near;
+            surface = SHELL;
+        }
+        if (inRange(far, best)) {
+            best = far;
+            surface = SHELL;
+        }
+        if (inRange(bottom, best)) {
+            best = bottom;
+            surface = BOTTOM;
+        }
+        if (inRange(top, best)) {
+            best = top;
+            surface = TOP;
+        }
+        if (surface < 0) return false;
+        hit.set(best, this, surface);
         return true;
     }
 
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        double t = near(ray);
-        if (within(t, maxDistance) && !visitor.visit(this, t)) return false;
-        t = far(ray);
-        if (within(t, maxDistance) && !visitor.visit(this, t)) return false;
-        t = cap(ray, false);
-        if (within(t, maxDistance) && !visitor.visit(this, t)) return false;
-        t = cap(ray, true);
+    /** @return {@code t} when its axial coordinate {@code wv + t·dv} is strictly inside (0, height), else NaN */
+    private static double keepShell(double t, double wv, double dv, double height) {
+        if (height == Double.POSITIVE_INFINITY) return t;
+        double s = wv + t * dv;
+        return Util.alignZero(s) > 0 && Util.alignZero(s - height) < 0 ? t : Double.NaN;
+    }
+
+    /** @return {@code t} when the ray point there is within the radius of the axis (rim included), else NaN */
+    private double insideRim(double t, double ax, double ay, double az, double bx, double by, double bz) {
+        double qx = bx + t * ax, qy = by + t * ay, qz = bz + t * az;
+        return Util.alignZero(qx * qx + qy * qy + qz * qz - radius * radius) <= 0 ? t : Double.NaN;
+    }
+
+    /** @return false when {@code t} is in range and the visitor stops the walk there */
+    private boolean offer(HitVisitor visitor, double maxDistance, double t) {
         return !within(t, maxDistance) || visitor.visit(this, t);
     }
 
     @Override
+    public boolean closestHit(Ray ray, Hit hit) {
+        return intersect(ray, hit, 0, null);
+    }
+
+    @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        return intersect(ray, null, maxDistance, visitor);
+    }
+
+    @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        double[] ts = { near(ray), far(ray), cap(ray, false), cap(ray, true) };
-        java.util.Arrays.sort(ts); // NaN sorts last
-        List<GeoPoint> result = new ArrayList<>(2);
-        for (double t : ts)
-            if (within(t, maxDistance)) result.add(new GeoPoint(this, ray.getPoint(t)));
+        double[] ts = new double[4];
+        int[] n = { 0 };
+        intersect(ray, null, maxDistance, (g, t) -> {
+            ts[n[0]++] = t;
+            return true;
+        });
+        java.util.Arrays.sort(ts, 0, n[0]);
+        List<GeoPoint> result = new ArrayList<>(n[0]);
+        for (int i = 0; i < n[0]; ++i) result.add(new GeoPoint(this, ray.getPoint(ts[i])));
         return result;
     }
 }

@@ -27,4 +27,16 @@ public interface LightSource {
     default Point getPosition() {
         return null;
     }
+
+    /**
+     * Checks the settings that only make sense together, once the scene is built and before it
+     * is rendered (the renderer calls it while preparing), so that a bad light fails before the
+     * first pixel rather than in the middle of a render. Setters cannot do it: course code sets
+     * related values one at a time, passing through invalid combinations (setKc(0) before setKl).
+     * Nothing to check by default.
+     *
+     * @throws IllegalArgumentException naming the values that do not fit together
+     */
+    default void validate() {
+    }
 }

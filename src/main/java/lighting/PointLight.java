@@ -8,8 +8,11 @@ import primitives.Util;
 import primitives.Vector;
 
 /**
- * A light at a position, attenuated with distance d by 1 / (kC + kL·d + kQ·d²). Given a radius it
- * becomes a disk facing the shaded point, for soft shadows.
+ * A light at a position, attenuated with distance d by 1 / (kC + kL·d + kQ·d²). Each coefficient
+ * is non-negative and they must not all be zero (the intensity would be infinite): that is checked
+ * by {@link #validate()} before rendering, not by the setters, so that {@code setKc(0).setKl(x)}
+ * works in either order. Given a radius the light becomes a disk facing the shaded point, for
+ * soft shadows.
  */
 public class PointLight extends Light implements LightSource {
     protected final Point position;
@@ -18,6 +21,13 @@ public class PointLight extends Light implements LightSource {
     private double kQ = 0;
     private double radius = 0;
 
+    /**
+     * A point light radiating equally in all directions, unattenuated until the coefficients are
+     * set (kC = 1, kL = kQ = 0).
+     *
+     * @param intensity the intensity at the light (before attenuation), non-negative
+     * @param position  where the light is, in scene coordinates
+     */
     public PointLight(Color intensity, Point position) {
         super(intensity);
         this.position = Objects.requireNonNull(position, "light position");
@@ -58,6 +68,14 @@ public class PointLight extends Light implements LightSource {
     @Override
     public Point getPosition() {
         return position;
+    }
+
+    /** @throws IllegalArgumentException when kC, kL and kQ are all zero, naming the three */
+    @Override
+    public void validate() {
+        if (kC == 0 && kL == 0 && kQ == 0)
+            throw new IllegalArgumentException("point light attenuation coefficients must not all be zero"
+                    + " (the intensity would be infinite), got kC=" + kC + ", kL=" + kL + ", kQ=" + kQ);
     }
 
     /** The distance attenuation factor 1 / (kC + kL·d + kQ·d²). */

@@ -13,6 +13,13 @@ public class SpotLight extends PointLight {
     private final Vector direction;
     private double narrowBeam = 1;
 
+    /**
+     * @param intensity the intensity on the beam's axis at the light (before attenuation), non-negative
+     * @param position  where the light is, in scene coordinates
+     * @param direction the axis of the beam, pointing from the light toward what it lights; any
+     *                  length (it is normalized). Points at 90° or more from it, seen from the
+     *                  light, get no light at all.
+     */
     public SpotLight(Color intensity, Point position, Vector direction) {
         super(intensity, position);
         this.direction = direction.normalize();

@@ -25,42 +25,79 @@ public class Material {
     /** Diffuse-glass spread: like {@link #reflectionSpread} around the transmitted direction. 0 is clear glass. */
     public double transmissionSpread = 0;
 
+    /**
+     * @param kd the diffuse coefficient of all three channels: finite and ≥ 0 (above 1 is allowed)
+     * @throws IllegalArgumentException when kd is negative, NaN or infinite, naming it
+     */
     public Material setKd(double kd) {
         return setKd(new Double3(kd));
     }
 
+    /**
+     * @param kd the diffuse coefficient per channel, each finite and ≥ 0
+     * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
+     */
     public Material setKd(Double3 kd) {
         this.kD = check(kd, "kD", false);
         return this;
     }
 
+    /**
+     * @param ks the specular coefficient of all three channels: finite and ≥ 0
+     * @throws IllegalArgumentException when ks is negative, NaN or infinite, naming it
+     */
     public Material setKs(double ks) {
         return setKs(new Double3(ks));
     }
 
+    /**
+     * @param ks the specular coefficient per channel, each finite and ≥ 0
+     * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
+     */
     public Material setKs(Double3 ks) {
         this.kS = check(ks, "kS", false);
         return this;
     }
 
+    /**
+     * @param kt the fraction of light transmitted through the surface, all three channels: in
+     *           [0, 1], since a surface cannot pass on more light than reaches it
+     * @throws IllegalArgumentException when kt is outside [0, 1] or NaN, naming it
+     */
     public Material setKt(double kt) {
         return setKt(new Double3(kt));
     }
 
+    /**
+     * @param kt the fraction of light transmitted per channel, each in [0, 1]
+     * @throws IllegalArgumentException when a component is outside [0, 1] or NaN, naming the triple
+     */
     public Material setKt(Double3 kt) {
         this.kT = check(kt, "kT", true);
         return this;
     }
 
+    /**
+     * @param kr the fraction of light mirrored by the surface, all three channels: in [0, 1]
+     * @throws IllegalArgumentException when kr is outside [0, 1] or NaN, naming it
+     */
     public Material setKr(double kr) {
         return setKr(new Double3(kr));
     }
 
+    /**
+     * @param kr the fraction of light mirrored per channel, each in [0, 1]
+     * @throws IllegalArgumentException when a component is outside [0, 1] or NaN, naming the triple
+     */
     public Material setKr(Double3 kr) {
         this.kR = check(kr, "kR", true);
         return this;
     }
 
+    /**
+     * @param nShininess the Phong exponent, ≥ 0: the larger, the smaller and sharper the highlight
+     * @throws IllegalArgumentException when it is negative, naming it
+     */
     public Material setShininess(int nShininess) {
         if (nShininess < 0)
             throw new IllegalArgumentException("shininess must be non-negative, got " + nShininess);
@@ -68,13 +105,19 @@ public class Material {
         return this;
     }
 
-    /** @see #reflectionSpread */
+    /**
+     * @param spread the glossy spread, finite and ≥ 0; see {@link #reflectionSpread}
+     * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
+     */
     public Material setReflectionSpread(double spread) {
         this.reflectionSpread = Util.requireNonNegative(spread, "reflection spread");
         return this;
     }
 
-    /** @see #transmissionSpread */
+    /**
+     * @param spread the diffuse-glass spread, finite and ≥ 0; see {@link #transmissionSpread}
+     * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
+     */
     public Material setTransmissionSpread(double spread) {
         this.transmissionSpread = Util.requireNonNegative(spread, "transmission spread");
         return this;

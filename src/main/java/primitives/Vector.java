@@ -13,6 +13,14 @@ public class Vector extends Point {
     public static final Vector AXIS_Z = new Vector(0, 0, 1);
 
     /**
+     * Squared lengths (and products of them) strictly between these are computed and used without
+     * overflow or loss to underflow; outside, the components are scaled first.
+     */
+    private static final double SAFE_MIN = 0x1p-900, SAFE_MAX = 0x1p900;
+    /** Operands are parallel when sin² of their angle is at most this: (2^-40)², the zero tolerance squared. */
+    private static final double PARALLEL_SIN2 = 0x1p-80;
+
+    /**
      * @throws IllegalArgumentException for the zero vector or a non-finite component
      */
     public Vector(double x, double y, double z) {
@@ -52,14 +60,46 @@ public class Vector extends Point {
         return x * v.x + y * v.y + z * v.z;
     }
 
-    /** @throws IllegalArgumentException when the vectors are parallel (the product is zero) */
+    /**
+     * The cross product, rejected when the operands are parallel: when the sine of their angle is
+     * at most 2^-40 (the library's zero tolerance, as a relative measure, so the test does not
+     * depend on the operands' lengths: two orthogonal vectors of length 1e-7 are not parallel).
+     * The result is not checked against the absolute zero tolerance: it may be shorter.
+     *
+     * @throws IllegalArgumentException when the vectors are parallel, or the product is beyond the
+     *                                  range of a double
+     */
     public Vector crossProduct(Vector v) {
         double cx = y * v.z - z * v.y;
         double cy = z * v.x - x * v.z;
         double cz = x * v.y - y * v.x;
-        if (Util.isZero(cx) && Util.isZero(cy) && Util.isZero(cz))
-            throw new IllegalArgumentException("cross product of parallel vectors " + this + " and " + v);
+        double ab2 = lengthSquared() * v.lengthSquared();
+        // |a × b|² ≤ |a|²|b|², so in this range no square below overflows or underflows.
+        if (ab2 > SAFE_MIN && ab2 < SAFE_MAX) {
+            if (cx * cx + cy * cy + cz * cz <= PARALLEL_SIN2 * ab2) throw parallel(v);
+            return new Vector(cx, cy, cz, true);
+        }
+        // Huge or tiny operands: decide on copies scaled to a largest component of 1, then scale back.
+        double ma = maxAbs(), mb = v.maxAbs();
+        double ax = x / ma, ay = y / ma, az = z / ma, bx = v.x / mb, by = v.y / mb, bz = v.z / mb;
+        double sx = ay * bz - az * by, sy = az * bx - ax * bz, sz = ax * by - ay * bx;
+        if (sx * sx + sy * sy + sz * sz <= PARALLEL_SIN2 * (ax * ax + ay * ay + az * az) * (bx * bx + by * by + bz * bz))
+            throw parallel(v);
+        cx = sx * ma * mb;
+        cy = sy * ma * mb;
+        cz = sz * ma * mb;
+        if (!Double.isFinite(cx) || !Double.isFinite(cy) || !Double.isFinite(cz) || cx == 0 && cy == 0 && cz == 0)
+            throw new IllegalArgumentException("cross product of " + this + " and " + v + " is beyond the range of a double");
         return new Vector(cx, cy, cz, true);
+    }
+
+    private IllegalArgumentException parallel(Vector v) {
+        return new IllegalArgumentException("cross product of parallel vectors " + this + " and " + v);
+    }
+
+    /** The largest absolute component: positive, since a vector is never zero. */
+    private double maxAbs() {
+        return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
     }
 
     public double lengthSquared() {
@@ -72,13 +112,21 @@ public class Vector extends Point {
 
     /**
      * @return the unit vector with this direction: this vector itself when its length is already 1
-     *         within the zero tolerance (so re-normalizing a unit vector allocates nothing)
+     *         within the zero tolerance (so re-normalizing a unit vector allocates nothing). Vectors
+     *         whose squared length would overflow (components beyond about 1e154) or underflow
+     *         are divided by their largest component first.
      */
     public Vector normalize() {
         double len2 = lengthSquared();
         if (Util.isZero(len2 - 1)) return this;
-        double inv = 1.0 / Math.sqrt(len2);
-        return new Vector(x * inv, y * inv, z * inv, true);
+        if (len2 > SAFE_MIN && len2 < SAFE_MAX) {
+            double inv = 1.0 / Math.sqrt(len2);
+            return new Vector(x * inv, y * inv, z * inv, true);
+        }
+        double m = maxAbs();
+        double sx = x / m, sy = y / m, sz = z / m; // the largest is ±1: the squares are safe
+        double inv = 1.0 / Math.sqrt(sx * sx + sy * sy + sz * sz);
+        return new Vector(sx * inv, sy * inv, sz * inv, true);
     }
 
     /** @return this vector scaled by −1 (never zero, so unchecked) */

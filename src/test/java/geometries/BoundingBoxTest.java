@@ -2,6 +2,7 @@ package geometries;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException;
+import static org.assertj.core.api.Assertions.within;
 
 import java.util.Random;
 import java.util.stream.IntStream;
@@ -68,6 +69,28 @@ class BoundingBoxTest {
         @DisplayName("a flat box (min = max on an axis) is valid: an axis-aligned triangle has one")
         void flatBoxIsValid() {
             assertThat(box(new BoundingBox(0, 0, 2, 1, 1, 2))).containsExactly(0, 0, 2, 1, 1, 2);
+        }
+    }
+
+    @Nested
+    @DisplayName("padded: every side moved out by 1e-9 · (1 + the largest coordinate magnitude)")
+    class Padded {
+        @Test
+        @DisplayName("near the origin the padding is 1e-9 · (1 + 3)")
+        void nearTheOrigin() {
+            double e = 4e-9;
+            assertThat(box(cube.padded())).containsExactly(new double[] { 1 - e, 1 - e, 1 - e, 3 + e, 3 + e, 3 + e },
+                    within(1e-15));
+        }
+
+        @Test
+        @DisplayName("the padding grows with the coordinates (relative to the largest on any axis) and thickens a flat box")
+        void farAndFlat() {
+            BoundingBox flat = new BoundingBox(-2e6, 5, 7, 10, 6, 7).padded();
+            double e = 1e-9 * (1 + 2e6);
+            assertThat(box(flat)).containsExactly(new double[] { -2e6 - e, 5 - e, 7 - e, 10 + e, 6 + e, 7 + e },
+                    within(1e-9));
+            assertThat(flat.getMaxZ() - flat.getMinZ()).as("thickness of the flat axis").isGreaterThan(0.003);
         }
     }
 

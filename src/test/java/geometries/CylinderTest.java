@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException
 import static org.assertj.core.api.Assertions.within;
 
 import java.util.List;
+import java.util.Map;
 import java.util.Random;
 import java.util.stream.Stream;
 
@@ -230,6 +231,127 @@ class CylinderTest implements GeometryContract {
                 }
             }
             assertThat(capHits).as("cap hits (the test must not be vacuous)").isGreaterThan(100);
+        }
+    }
+
+    /**
+     * Cylinders tens or hundreds of thousands of units from the origin: there the axial coordinate
+     * of a cap hit carries rounding far above the library's absolute zero tolerance (2^-40), so
+     * the normal must come from the surface that was hit (lean path) or from the nearest surface
+     * (course path), not from an absolute test on the axial coordinate.
+     */
+    @Nested
+    @DisplayName("normal, far from the origin")
+    class FarNormal {
+        static Stream<Arguments> farAway() {
+            return Stream.of(
+                    Arguments.of("2e4 from the origin, tilted axis", new Point(2e4, -1e4, 1.5e4), new Vector(2, -1, 2), 40, 80),
+                    Arguments.of("1e5 from the origin, tilted axis", new Point(-6e4, 7e4, 5e4), new Vector(1, 2, 2), 25, 60),
+                    Arguments.of("4e5 from the origin, tilted axis", new Point(4e5, 3e5, -2e5), new Vector(-1, 3, 1), 50, 100));
+        }
+
+        /**
+         * Which surfaces {@code p} lies on, decided independently: its axial coordinate and radial
+         * distance with a tolerance relative to the coordinates. A point near a rim is on both a
+         * cap and the shell, and either normal is right there.
+         */
+        private static void assertNormalOfTheSurface(Vector n, Point p, Point base, Vector v, double radius,
+                double height, double tol) {
+            Vector w = p.subtract(base);
+            double s = w.dotProduct(v);
+            double rho = Math.sqrt(Math.max(0, w.lengthSquared() - s * s));
+            boolean bottom = Math.abs(s) <= tol && rho <= radius + tol;
+            boolean top = Math.abs(s - height) <= tol && rho <= radius + tol;
+            boolean shell = Math.abs(rho - radius) <= tol && s >= -tol && s <= height + tol;
+            assertThat(bottom || top || shell).as("hit %s (axial %s, radial %s) is on the cylinder", p, s, rho).isTrue();
+            boolean capNormal = n.equals(v) && top || n.equals(v.scale(-1)) && bottom;
+            boolean shellNormal = shell && Math.abs(n.dotProduct(v)) < 1e-9
+                    && Math.abs(n.dotProduct(w) - rho) < tol; // radial and outward
+            assertThat(capNormal || shellNormal)
+                    .as("normal %s at %s (axial %s, radial %s; bottom %s, top %s, shell %s)", n, p, s, rho, bottom, top, shell)
+                    .isTrue();
+        }
+
+        /** Rays from a camera 3 cylinder sizes away, aimed at random points around the cylinder. */
+        private static List<Ray> cameraRays(Point middle, double size) {
+            Random rnd = new Random(17);
+            List<Ray> rays = new java.util.ArrayList<>();
+            for (int i = 0; i < 2000; ++i) {
+                Point eye = middle.add(new Vector(rnd.nextGaussian(), rnd.nextGaussian(), rnd.nextGaussian())
+                        .normalize().scale(3 * size));
+                Point aim = middle.add(new Vector(rnd.nextDouble() - 0.5, rnd.nextDouble() - 0.5, rnd.nextDouble() - 0.5)
+                        .scale(1.6 * size));
+                rays.add(new Ray(eye, aim.subtract(eye)));
+            }
+            return rays;
+        }
+
+        private static double tolerance(Point base) {
+            return 1e-9 * Math.max(Math.abs(base.getX()), Math.max(Math.abs(base.getY()), Math.abs(base.getZ())));
+        }
+
+        /** The two ways to a hit's normal. */
+        enum Path {
+            /** closestHit, then the normal of the surface the hit record names. */
+            LEAN_PATH_HIT_NORMAL {
+                @Override
+                Map<Point, Vector> normals(Cylinder c, Ray ray) {
+                    Hit hit = new Hit();
+                    if (!c.closestHit(ray, hit)) return Map.of();
+                    Point p = hit.point(ray);
+                    return Map.of(p, hit.normal(p));
+                }
+            },
+            /** The course's list API, then getNormal of each point: the nearest surface decides. */
+            LIST_API_GET_NORMAL {
+                @Override
+                Map<Point, Vector> normals(Cylinder c, Ray ray) {
+                    List<Point> hits = c.findIntersections(ray);
+                    Map<Point, Vector> result = new java.util.IdentityHashMap<>();
+                    if (hits != null) for (Point p : hits) result.put(p, c.getNormal(p));
+                    return result;
+                }
+            };
+
+            abstract Map<Point, Vector> normals(Cylinder c, Ray ray);
+        }
+
+        static Stream<Arguments> farAwayByPath() {
+            return farAway().flatMap(a -> Stream.of(Path.values()).map(path -> {
+                Object[] args = a.get();
+                return Arguments.of(args[0], path, args[1], args[2], args[3], args[4]);
+            }));
+        }
+
+        @ParameterizedTest(name = "{0}, {1}")
+        @MethodSource("geometries.CylinderTest$FarNormal#farAwayByPath")
+        @DisplayName("the normal at every hit is the one of the surface hit")
+        void normalOfTheSurfaceHit(String name, Path path, Point base, Vector dir, double radius, double height) {
+            Vector v = dir.normalize();
+            Cylinder c = new Cylinder(radius, new Ray(base, v), height);
+            int capHits = 0;
+            for (Ray ray : cameraRays(base.add(v.scale(height / 2)), Math.max(radius, height)))
+                for (Map.Entry<Point, Vector> hit : path.normals(c, ray).entrySet()) {
+                    if (Math.abs(hit.getValue().dotProduct(v)) > 0.5) ++capHits;
+                    assertNormalOfTheSurface(hit.getValue(), hit.getKey(), base, v, radius, height, tolerance(base));
+                }
+            assertThat(capHits).as("cap hits (the test must not be vacuous)").isGreaterThan(100);
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.CylinderTest$FarNormal#farAway")
+        @DisplayName("a ray along the axis hits the cap centres, where no radial direction exists")
+        void alongTheAxisAtTheCapCentres(String name, Point base, Vector dir, double radius, double height) {
+            Vector v = dir.normalize();
+            Cylinder c = new Cylinder(radius, new Ray(base, v), height);
+            Ray up = new Ray(base.add(v.scale(-height)), v), down = new Ray(base.add(v.scale(2 * height)), v.scale(-1));
+            Hit hit = new Hit();
+            assertThat(c.closestHit(up, hit.reset(Double.POSITIVE_INFINITY))).isTrue();
+            assertThat(hit.normal(hit.point(up))).isEqualTo(v.scale(-1));
+            assertThat(c.getNormal(hit.point(up))).isEqualTo(v.scale(-1));
+            assertThat(c.closestHit(down, hit.reset(Double.POSITIVE_INFINITY))).isTrue();
+            assertThat(hit.normal(hit.point(down))).isEqualTo(v);
+            assertThat(c.getNormal(hit.point(down))).isEqualTo(v);
         }
     }
 

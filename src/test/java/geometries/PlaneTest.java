@@ -88,6 +88,23 @@ class PlaneTest implements GeometryContract {
         }
 
         @Test
+        @DisplayName("three points 1e-7 apart span a plane (their cross product is below the absolute zero tolerance)")
+        void tinyTriangleSpansAPlane() {
+            Point o = new Point(5, 5, 5);
+            Plane tiny = new Plane(o, new Point(5 + 1e-7, 5, 5), new Point(5, 5 + 1e-7, 5));
+            assertThat(tiny.getNormal()).isEqualTo(new Vector(0, 0, 1));
+            assertHits(tiny, new Ray(new Point(0, 0, 0), new Vector(0, 0, 1)), new Point(0, 0, 5));
+        }
+
+        @Test
+        @DisplayName("three collinear points 1e-7 apart are still rejected as collinear")
+        void tinyCollinearIsRejected() {
+            assertThatIllegalArgumentException()
+                    .isThrownBy(() -> new Plane(Point.ZERO, new Point(1e-7, 1e-7, 0), new Point(2e-7, 2e-7, 0)))
+                    .withMessageContaining("collinear");
+        }
+
+        @Test
         void pointAndNormalConstructorNormalizes() {
             Plane p = new Plane(new Point(0, 0, 5), new Vector(0, 0, 3));
             assertThat(p.getNormal()).isEqualTo(new Vector(0, 0, 1));

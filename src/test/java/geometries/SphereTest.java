@@ -182,6 +182,28 @@ class SphereTest implements GeometryContract {
         assertHits(sphere, new Ray(new Point(1, 0, 2), new Vector(0, 1, 0)));
     }
 
+    @ParameterizedTest(name = "at distance {0}")
+    @ValueSource(doubles = { 1e3, 1e5, 1e6 })
+    @DisplayName("the hits on a far unit sphere lie on its surface within 1e-8 of the radius (no cancellation)")
+    void farUnitSphereHitsAreOnTheSurface(double distance) {
+        Point c = new Point(distance * 0.48, -distance * 0.6, distance * 0.64);
+        Sphere far = new Sphere(c, 1);
+        java.util.Random rnd = new java.util.Random(3);
+        int hits = 0;
+        for (int i = 0; i < 500; ++i) {
+            // Aim at random points of the sphere's bounding cube: grazing rays included.
+            Point aim = new Point(c.getX() + 2 * rnd.nextDouble() - 1, c.getY() + 2 * rnd.nextDouble() - 1,
+                    c.getZ() + 2 * rnd.nextDouble() - 1);
+            java.util.List<Point> points = far.findIntersections(new Ray(Point.ZERO, aim.subtract(Point.ZERO)));
+            if (points == null) continue;
+            for (Point p : points) {
+                ++hits;
+                assertThat(p.distance(c)).as("distance of the hit %s from the centre", p).isCloseTo(1, within(1e-8));
+            }
+        }
+        assertThat(hits).as("hits (the test must not be vacuous)").isGreaterThan(300);
+    }
+
     @Test
     @DisplayName("a large far sphere keeps the precision (geometric root finding)")
     void farSphere() {

@@ -199,6 +199,22 @@ class TriangleTest implements GeometryContract {
         }
 
         @Test
+        @DisplayName("a small well-shaped triangle (edges of 1e-5) is accepted, with its normal, and hit")
+        void smallTriangleWorks() {
+            Triangle small = new Triangle(new Point(1, 1, 1), new Point(1, 1 + 1e-5, 1), new Point(1, 1, 1 + 1e-5));
+            assertThat(small.getNormal(new Point(1, 1, 1))).isEqualTo(new Vector(1, 0, 0));
+            assertHits(small, new Ray(new Point(0, 1 + 2e-6, 1 + 2e-6), new Vector(1, 0, 0)), new Point(1, 1 + 2e-6, 1 + 2e-6));
+        }
+
+        @Test
+        @DisplayName("a triangle too small for any ray to hit (edges of 1e-7) is rejected as such, not as a bare zero vector")
+        void tooSmallTriangleIsRejectedPrecisely() {
+            assertThatIllegalArgumentException()
+                    .isThrownBy(() -> new Triangle(new Point(1, 1, 1), new Point(1, 1 + 1e-7, 1), new Point(1, 1, 1 + 1e-7)))
+                    .withMessageContaining("too small").withMessageContaining("(1.0,1.0,1.0)");
+        }
+
+        @Test
         void boundingBoxIsFlatForAnAxisAlignedTriangle() {
             BoundingBox b = triangle.getBoundingBox();
             assertThat(new double[] { b.getMinX(), b.getMinY(), b.getMinZ(), b.getMaxX(), b.getMaxY(), b.getMaxZ() })

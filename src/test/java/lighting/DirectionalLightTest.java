@@ -2,6 +2,7 @@ package lighting;
 
 import static lighting.LightAssertions.assertColor;
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatCode;
 import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException;
 
 import org.junit.jupiter.params.ParameterizedTest;
@@ -33,6 +34,12 @@ class DirectionalLightTest {
     void noPositionNoRadius() {
         assertThat(light.getPosition()).isNull();
         assertThat(light.getRadius()).isZero();
+    }
+
+    @Test
+    @DisplayName("validate has nothing to check")
+    void validatePasses() {
+        assertThatCode(light::validate).doesNotThrowAnyException();
     }
 
     @Test

@@ -2,10 +2,12 @@ package lighting;
 
 import static lighting.LightAssertions.assertColor;
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatCode;
 import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException;
 import static org.assertj.core.api.Assertions.within;
 
 import java.util.function.Consumer;
+import java.util.function.Supplier;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.DisplayName;
@@ -83,6 +85,47 @@ class PointLightTest {
             PointLight l = light().setKc(0);
             assertThatIllegalArgumentException().isThrownBy(() -> l.getIntensity(new Point(0, 0, 0)))
                     .withMessageContaining("kC=0.0");
+        }
+    }
+
+    @Nested
+    @DisplayName("validate: the check the renderer makes before rendering")
+    class Validate {
+        static Stream<Arguments> valid() {
+            return Stream.of(
+                    Arguments.of("the defaults (kC = 1)", (Supplier<PointLight>) () -> light()),
+                    Arguments.of("kC = 0 then kL set (the course's order)", (Supplier<PointLight>) () -> light().setKc(0).setKl(0.001)),
+                    Arguments.of("kC = 0 then kQ set", (Supplier<PointLight>) () -> light().setKc(0).setKq(1e-6)),
+                    Arguments.of("a spot light with kC = 0, kL set",
+                            (Supplier<PointLight>) () -> new SpotLight(new Color(1, 1, 1), POSITION, new Vector(0, 0, -1)).setKc(0).setKl(1)));
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("valid")
+        @DisplayName("passes when some coefficient is positive, whatever the order they were set in")
+        void passes(String name, Supplier<PointLight> light) {
+            assertThatCode(() -> light.get().validate()).doesNotThrowAnyException();
+        }
+
+        @Test
+        @DisplayName("all three coefficients zero: rejected, naming the three values")
+        void allZeroIsRejected() {
+            PointLight l = light().setKc(0);
+            assertThatIllegalArgumentException().isThrownBy(l::validate)
+                    .withMessageContaining("kC=0.0").withMessageContaining("kL=0.0").withMessageContaining("kQ=0.0");
+        }
+
+        @Test
+        @DisplayName("a spot light inherits the check")
+        void spotLight() {
+            SpotLight s = new SpotLight(new Color(1, 1, 1), POSITION, new Vector(0, 0, -1)).setKc(0);
+            assertThatIllegalArgumentException().isThrownBy(s::validate).withMessageContaining("kC=0.0");
+        }
+
+        @Test
+        @DisplayName("the setters do not check it: setting kC to 0 first is allowed")
+        void settersDoNotCheck() {
+            assertThatCode(() -> light().setKc(0)).doesNotThrowAnyException();
         }
     }
 

@@ -30,6 +30,14 @@ class RayTest {
             assertThat(ray.getDirection().length()).isCloseTo(1, within(1e-15));
             assertThat(ray.getHead()).isEqualTo(head);
         }
+
+        @Test
+        @DisplayName("a huge direction vector (its squared length overflows) still gives a unit direction")
+        void hugeDirectionIsNormalized() {
+            Ray ray = new Ray(Point.ZERO, new Vector(1e155, 1e155, 0));
+            assertThat(ray.getDirection().length()).isCloseTo(1, within(1e-15));
+            assertThat(ray.getDirection()).isEqualTo(new Vector(1, 1, 0).normalize());
+        }
     }
 
     @Nested

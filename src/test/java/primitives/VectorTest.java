@@ -138,6 +138,40 @@ class VectorTest {
             assertThatIllegalArgumentException().isThrownBy(() -> v1.crossProduct(v1.scale(3)));
             assertThatIllegalArgumentException().isThrownBy(() -> v1.crossProduct(v1));
         }
+
+        @ParameterizedTest(name = "operands of length {0}")
+        @CsvSource({ "1e-7", "1e-3", "1e3", "1e80", "1e150" })
+        @DisplayName("parallel is a matter of angle, not of length: orthogonal operands of any length give the normal")
+        void orthogonalOperandsOfAnyLength(double len) {
+            Vector a = new Vector(len, 0, 0), b = new Vector(0, len, 0);
+            assertThat(a.crossProduct(b).normalize()).isEqualTo(Vector.AXIS_Z);
+            assertThat(b.crossProduct(a).normalize()).isEqualTo(Vector.AXIS_Z.negate());
+        }
+
+        @ParameterizedTest(name = "operands of length {0}")
+        @CsvSource({ "1e-7", "1", "1e80" })
+        @DisplayName("parallel operands of any length are rejected as parallel")
+        void parallelOperandsOfAnyLength(double len) {
+            Vector a = new Vector(len, 2 * len, 3 * len), b = new Vector(-2 * len, -4 * len, -6 * len);
+            assertThatIllegalArgumentException().isThrownBy(() -> a.crossProduct(b)).withMessageContaining("parallel");
+        }
+
+        @Test
+        @DisplayName("an angle of 1e-9 rad is not parallel; one of 1e-13 rad is (the tolerance is 2^-40 on the sine)")
+        void nearlyParallel() {
+            Vector x = new Vector(1e-7, 0, 0);
+            assertThat(x.crossProduct(new Vector(1e-7, 1e-16, 0)).normalize()).isEqualTo(Vector.AXIS_Z);
+            assertThatIllegalArgumentException().isThrownBy(() -> x.crossProduct(new Vector(1e-7, 1e-20, 0)))
+                    .withMessageContaining("parallel");
+        }
+
+        @Test
+        @DisplayName("a product beyond the double range is rejected as such, not as parallel")
+        void overflowIsNotParallel() {
+            assertThatIllegalArgumentException()
+                    .isThrownBy(() -> new Vector(1e200, 0, 0).crossProduct(new Vector(0, 1e200, 0)))
+                    .withMessageContaining("range").withMessageNotContaining("parallel");
+        }
     }
 
     @Nested
@@ -155,6 +189,15 @@ class VectorTest {
             assertThat(u.length()).isCloseTo(1, within(EPS));
             assertThat(u.dotProduct(v1)).isCloseTo(v1.length(), within(EPS)); // same direction, not opposite
             assertThatIllegalArgumentException().isThrownBy(() -> u.crossProduct(v1)); // parallel
+        }
+
+        @ParameterizedTest(name = "({0},{1},{2}) gives ({3},{4},{5})")
+        @CsvSource({ "1e200, 0, 0, 1, 0, 0", "3e300, -4e300, 0, 0.6, -0.8, 0", "0, 1e155, 1e155, 0, 0.7071067811865475, 0.7071067811865475",
+                "1e-12, 0, 1e-12, 0.7071067811865475, 0, 0.7071067811865475" })
+        @DisplayName("huge vectors (the squared length overflows) and small ones normalize to the right unit vector")
+        void normalizeHugeAndTiny(double x, double y, double z, double ux, double uy, double uz) {
+            Vector u = new Vector(x, y, z).normalize();
+            assertThat(new double[] { u.getX(), u.getY(), u.getZ() }).containsExactly(new double[] { ux, uy, uz }, within(1e-15));
         }
 
         @Test

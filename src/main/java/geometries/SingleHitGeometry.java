@@ -1,0 +1,38 @@
+package geometries;
+
+import java.util.List;
+
+import primitives.Ray;
+
+/**
+ * A flat shape that a ray's line crosses at most once (a plane, a convex polygon): its three
+ * queries all reduce to one distance, so they are written once here around
+ * {@link #distanceTo(Ray)}.
+ */
+abstract class SingleHitGeometry extends Geometry {
+    /**
+     * @return the distance along the ray to its hit, or NaN when it misses; the callers apply the
+     *         range rules, so a non-positive distance may be returned as is
+     */
+    abstract double distanceTo(Ray ray);
+
+    @Override
+    public boolean closestHit(Ray ray, Hit hit) {
+        double t = distanceTo(ray);
+        if (!inRange(t, hit.t)) return false;
+        hit.set(t, this, 0);
+        return true;
+    }
+
+    @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        double t = distanceTo(ray);
+        return !within(t, maxDistance) || visitor.visit(this, t);
+    }
+
+    @Override
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        double t = distanceTo(ray);
+        return within(t, maxDistance) ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
+    }
+}
