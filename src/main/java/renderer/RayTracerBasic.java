@@ -107,8 +107,13 @@ public class RayTracerBasic extends RayTracerBase {
         return shadowSamples;
     }
 
+    /**
+     * Snapshots the scene for tracing: checks every light's settings (before any worker starts,
+     * so a bad light fails the render at once with its message) and builds the BVH.
+     */
     @Override
     synchronized void prepare() {
+        for (LightSource light : scene.lights) light.validate();
         preparedGeometries = scene.geometries;
         preparedItems = scene.geometries.getItems().size();
         preparedLights = scene.lights.size();

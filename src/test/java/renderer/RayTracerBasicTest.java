@@ -46,4 +46,18 @@ class RayTracerBasicTest {
             anyDifferent = tracer.traceRay(new Ray(new Point(1.1, i * 1e-9, 10), new Vector(0, 0, -1))).toRgb() != first.toRgb();
         assertThat(anyDifferent).as("nearby rays draw other shadow samples").isTrue();
     }
+
+    @Test
+    @DisplayName("a light without attenuation (kC = kL = kQ = 0) fails the render before any pixel, naming the values")
+    void badLightFailsBeforeRendering() {
+        Scene scene = new Scene("bad light");
+        scene.geometries.add(new Sphere(new Point(0, 0, -5), 1));
+        scene.lights.add(new PointLight(new Color(255, 255, 255), new Point(0, 0, 5)).setKc(0));
+        ImageWriter image = new ImageWriter("bad-light", 8, 8);
+        Camera camera = TestScenes.camera(scene, image).setMultithreading(2).setSummary(false).build();
+        org.assertj.core.api.Assertions.assertThatIllegalArgumentException().isThrownBy(camera::renderImage)
+                .withMessageContaining("kC").withMessageContaining("kL").withMessageContaining("kQ");
+        for (int y = 0; y < 8; ++y)
+            for (int x = 0; x < 8; ++x) assertThat(image.getRgb(x, y)).as("pixel (%d,%d) untouched", x, y).isZero();
+    }
 }
