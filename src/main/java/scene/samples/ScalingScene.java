@@ -21,9 +21,11 @@ import scene.Scene;
  *
  * <p>The cube is cut into about {@code n} cells of side {@code s = SIDE / cbrt(n)} and every
  * primitive is about the size of a cell (spheres of radius 0.15–0.4·s, triangles spanning up to
- * 0.8·s), so the picture looks alike for every {@code n}: each camera ray meets a comparable
- * number of primitives whatever {@code n}, and only the search for them gets harder. With the
- * BVH the time per ray should grow like log n, without it like n.
+ * 0.8·s), so the density of primitives per cell, and with it the number of cells a ray crosses
+ * before it hits something, is the same for every {@code n}: only the search for the primitives
+ * gets harder. (A ray crossing the whole cube meets more cells as {@code n} grows, so more of the
+ * picture is covered: about 55% of the camera rays hit something for n = 10², 73% for 10³, 94% for
+ * 10⁵.) With the BVH the time per ray should grow like log n, without it like n.
  *
  * <p>Deterministic: the same {@code (n, seed)} gives the same scene, drawn from a
  * {@link SplittableRandom}. Primitives share a small palette of emissions and materials so that
