@@ -32,7 +32,12 @@ public final class Ray {
     public Ray(Point head, Vector direction, Vector normal) {
         this.direction = direction.normalize();
         double nd = Util.alignZero(normal.dotProduct(this.direction));
-        this.head = nd == 0 ? head : head.add(normal.scale(nd > 0 ? DELTA : -DELTA));
+        if (nd == 0) {
+            this.head = head;
+        } else {
+            double delta = nd > 0 ? DELTA : -DELTA;
+            this.head = new Point(head.x + normal.x * delta, head.y + normal.y * delta, head.z + normal.z * delta);
+        }
     }
 
     public Point getHead() {

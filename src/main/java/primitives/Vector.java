@@ -23,6 +23,11 @@ public class Vector extends Point {
             throw new IllegalArgumentException("vector components must be finite, got " + this);
     }
 
+    /** For results known to be non-zero and finite (a normalized or checked vector): skips the checks. */
+    Vector(double x, double y, double z, boolean trusted) {
+        super(x, y, z);
+    }
+
     /** A vector from a {@link Double3} (course compatibility). */
     public Vector(Double3 xyz) {
         this(xyz.d1, xyz.d2, xyz.d3);
@@ -54,7 +59,7 @@ public class Vector extends Point {
         double cz = x * v.y - y * v.x;
         if (Util.isZero(cx) && Util.isZero(cy) && Util.isZero(cz))
             throw new IllegalArgumentException("cross product of parallel vectors " + this + " and " + v);
-        return new Vector(cx, cy, cz);
+        return new Vector(cx, cy, cz, true);
     }
 
     public double lengthSquared() {
@@ -65,12 +70,20 @@ public class Vector extends Point {
         return Math.sqrt(lengthSquared());
     }
 
-    /** @return the unit vector with this direction (this vector itself when already unit length) */
+    /**
+     * @return the unit vector with this direction: this vector itself when its length is already 1
+     *         within the zero tolerance (so re-normalizing a unit vector allocates nothing)
+     */
     public Vector normalize() {
         double len2 = lengthSquared();
-        if (len2 == 1.0) return this;
+        if (Util.isZero(len2 - 1)) return this;
         double inv = 1.0 / Math.sqrt(len2);
-        return new Vector(x * inv, y * inv, z * inv);
+        return new Vector(x * inv, y * inv, z * inv, true);
+    }
+
+    /** @return this vector scaled by −1 (never zero, so unchecked) */
+    public Vector negate() {
+        return new Vector(-x, -y, -z, true);
     }
 
     @Override

@@ -125,7 +125,9 @@ public final class Camera {
             py += vUp.getY() * yOffset;
             pz += vUp.getZ() * yOffset;
         }
-        return new Vector(px - location.getX(), py - location.getY(), pz - location.getZ());
+        double dx = px - location.getX(), dy = py - location.getY(), dz = pz - location.getZ();
+        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
+        return new Vector(dx * inv, dy * inv, dz * inv);
     }
 
     /**
@@ -140,7 +142,7 @@ public final class Camera {
         ctx.cameraRays++;
         if (aperture == 0) return rayTracer.traceRay(pinholeRay(xOffset, yOffset), ctx);
         // Thin lens: every ray through the lens meets the pinhole ray where it crosses the focal plane.
-        Vector d = viewPlaneDirection(xOffset, yOffset).normalize();
+        Vector d = viewPlaneDirection(xOffset, yOffset);
         double t = focalDistance / d.dotProduct(vTo);
         double fx = location.getX() + d.getX() * t, fy = location.getY() + d.getY() * t, fz = location.getZ() + d.getZ() * t;
         double r = aperture * Math.sqrt(ctx.random.nextDouble());

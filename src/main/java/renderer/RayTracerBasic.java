@@ -155,24 +155,27 @@ public class RayTracerBasic extends RayTracerBase {
 
     private Color localEffects(Point p, Vector n, Vector v, double nv, Material material, Double3 k,
                                TraceContext ctx) {
-        Color color = Color.BLACK;
+        // Accumulated in doubles: this runs once per light per hit, the hottest shading code.
+        double cr = 0, cg = 0, cb = 0;
+        Double3 kd = material.kD, ks = material.kS;
         for (LightSource light : lights) {
             Vector l = light.getL(p);
             double nl = Util.alignZero(n.dotProduct(l));
             if (nl * nv <= 0) continue; // the light is on the other side of the surface from the viewer
             Double3 ktr = transparency(p, light, l, n, ctx);
-            if (ktr.product(k).lowerThan(MIN_CALC_COLOR_K)) continue;
+            if (ktr.getD1() * k.getD1() < MIN_CALC_COLOR_K && ktr.getD2() * k.getD2() < MIN_CALC_COLOR_K
+                    && ktr.getD3() * k.getD3() < MIN_CALC_COLOR_K) continue;
             // Phong: kD·|n·l| + kS·max(0, −r·v)^shininess, with r = l − 2(n·l)n.
             double rx = l.getX() - 2 * nl * n.getX(), ry = l.getY() - 2 * nl * n.getY(), rz = l.getZ() - 2 * nl * n.getZ();
             double minusVR = -Util.alignZero(rx * v.getX() + ry * v.getY() + rz * v.getZ());
             double spec = minusVR <= 0 ? 0 : Math.pow(minusVR, material.nShininess);
             double absNl = Math.abs(nl);
-            Double3 kd = material.kD, ks = material.kS;
-            Double3 factor = new Double3(kd.getD1() * absNl + ks.getD1() * spec, kd.getD2() * absNl + ks.getD2() * spec,
-                    kd.getD3() * absNl + ks.getD3() * spec);
-            color = color.add(light.getIntensity(p).scale(ktr).scale(factor));
+            Color iL = light.getIntensity(p);
+            cr += iL.getR() * ktr.getD1() * (kd.getD1() * absNl + ks.getD1() * spec);
+            cg += iL.getG() * ktr.getD2() * (kd.getD2() * absNl + ks.getD2() * spec);
+            cb += iL.getB() * ktr.getD3() * (kd.getD3() * absNl + ks.getD3() * spec);
         }
-        return color;
+        return new Color(cr, cg, cb);
     }
 
     /**
@@ -185,12 +188,12 @@ public class RayTracerBasic extends RayTracerBase {
         Transmittance tr = ctx.transmittance;
         if (radius == 0) {
             ctx.shadowRays++;
-            w.visitHits(new Ray(p, l.scale(-1), n), light.getDistance(p), tr.reset());
+            w.visitHits(new Ray(p, l.negate(), n), light.getDistance(p), tr.reset());
             return tr.r == 1 && tr.g == 1 && tr.b == 1 ? Double3.ONE : new Double3(tr.r, tr.g, tr.b);
         }
         // Soft shadow: stratified points on the disk of the light facing p.
         Point c = light.getPosition();
-        Vector toLight = l.scale(-1);
+        Vector toLight = l.negate();
         Vector a = perpendicular(toLight);
         Vector b = toLight.crossProduct(a);
         double side = n.dotProduct(toLight);

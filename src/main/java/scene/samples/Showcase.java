@@ -28,7 +28,7 @@ public final class Showcase {
     /** Where it looks. */
     public static final Point CAMERA_TARGET = new Point(0, 35, 0);
     /** The view-plane distance that frames the scene with a 200×200 view plane. */
-    public static final double VP_DISTANCE = 700;
+    public static final double VP_DISTANCE = 560;
     /** The side of the square view plane. */
     public static final double VP_SIZE = 200;
 
@@ -52,7 +52,7 @@ public final class Showcase {
                 boolean dark = (row + col) % 2 == 0;
                 scene.geometries.add(new Polygon(new Point(x0 + 1, y0 + 1, z), new Point(x0 + 59, y0 + 1, z),
                         new Point(x0 + 59, y0 + 39, z), new Point(x0 + 1, y0 + 39, z))
-                        .setEmission(dark ? new Color(40, 30, 60) : new Color(70, 55, 90))
+                        .setEmission(dark ? new Color(25, 18, 40) : new Color(45, 35, 60))
                         .setMaterial(new Material().setKd(0.5).setKs(0.2).setShininess(20)));
             }
 
@@ -88,9 +88,9 @@ public final class Showcase {
                     new Triangle(c, a, apex).setEmission(e).setMaterial(glass));
         }
 
-        scene.lights.add(new DirectionalLight(new Color(90, 85, 80), new Vector(-1, -1.5, -1)));
-        scene.lights.add(new PointLight(new Color(500, 420, 300), new Point(120, 160, 160)).setKl(0.0015).setKq(0.000012));
-        scene.lights.add(new SpotLight(new Color(700, 600, 900), new Point(-150, 220, 150), new Vector(1, -1.6, -1))
+        scene.lights.add(new DirectionalLight(new Color(60, 57, 54), new Vector(-1, -1.5, -1)));
+        scene.lights.add(new PointLight(new Color(320, 270, 200), new Point(120, 160, 160)).setKl(0.0015).setKq(0.000012));
+        scene.lights.add(new SpotLight(new Color(420, 360, 540), new Point(-150, 220, 150), new Vector(1, -1.6, -1))
                 .setKl(0.001).setKq(0.00001).setNarrowBeam(6));
         return scene;
     }
