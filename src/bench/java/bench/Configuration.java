@@ -35,6 +35,11 @@ record Configuration(String group, String sceneKey, Supplier<Scene> scene, Strin
         Camera.Builder builder(Scene scene);
     }
 
+    /** "group settings, N threads", e.g. "teapot BVH, 2 threads": what {@code --match} matches. */
+    String describe() {
+        return group + " " + settings + ", " + threads + (threads == 1 ? " thread" : " threads");
+    }
+
     String resolution() {
         return width + "×" + height;
     }

@@ -29,6 +29,7 @@ final class Configurations {
         if (o.groups().contains("glossy")) glossy(o, list);
         if (o.groups().contains("showcase")) showcase(o, list);
         if (o.groups().contains("scaling")) scaling(o, list);
+        if (o.match() != null) list.removeIf(c -> !o.match().matcher(c.describe()).find());
         return list;
     }
 

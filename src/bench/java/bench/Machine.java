@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.ZonedDateTime;
 import java.time.format.DateTimeFormatter;
+import java.time.temporal.ChronoUnit;
 import java.util.Locale;
 import java.util.Optional;
 
@@ -20,7 +21,7 @@ record Machine(String date, String cpu, int cores, String java, long maxHeapByte
         String java = System.getProperty("java.vm.name") + " " + System.getProperty("java.runtime.version")
                 + " (" + System.getProperty("java.vm.vendor") + "), " + System.getProperty("os.name") + " "
                 + System.getProperty("os.arch");
-        return new Machine(ZonedDateTime.now().format(DateTimeFormatter.ISO_OFFSET_DATE_TIME), cpuModel().orElse("unknown CPU"),
+        return new Machine(ZonedDateTime.now().truncatedTo(ChronoUnit.SECONDS).format(DateTimeFormatter.ISO_OFFSET_DATE_TIME), cpuModel().orElse("unknown CPU"),
                 rt.availableProcessors(), java, rt.maxMemory(), loadAverage());
     }
 

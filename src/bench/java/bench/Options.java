@@ -6,10 +6,12 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Locale;
 import java.util.Set;
+import java.util.regex.Pattern;
+import java.util.regex.PatternSyntaxException;
 
 /** The command line of {@link RenderBenchmark}; see {@link #USAGE}. */
 record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMax, int scalingMax,
-               double budgetSeconds, boolean images, boolean help) {
+               double budgetSeconds, Pattern match, boolean images, boolean help) {
 
     static final List<String> GROUPS = List.of("teapot", "glossy", "showcase", "scaling");
 
@@ -18,6 +20,8 @@ record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMa
               --quick            tiny images, 1 timed run: a smoke test of every configuration
               --runs N           timed runs per configuration after the warm-up (default 5)
               --only G1,G2       groups to run, of teapot, glossy, showcase, scaling (default all)
+              --match REGEX      only configurations whose "group settings, N threads" line contains a
+                                 match, e.g. "teapot BVH" or "beam 50" (handy under a profiler)
               --out FILE         also write the tables to FILE
               --flat-max N       scaling: the largest N also rendered without the BVH (default 1000)
               --scaling-max N    scaling: the largest N rendered (default 1000000)
@@ -34,6 +38,7 @@ record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMa
         double budget = 0;
         Set<String> groups = new LinkedHashSet<>(GROUPS);
         Path out = null;
+        Pattern match = null;
         List<String> list = new ArrayList<>();
         for (String a : args)
             if (!a.isBlank()) list.add(a.trim()); // Maven passes an empty property as an empty argument
@@ -47,6 +52,14 @@ record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMa
                 case "--flat-max" -> flatMax = positiveInt(a, value(list, ++i, a));
                 case "--scaling-max" -> scalingMax = positiveInt(a, value(list, ++i, a));
                 case "--out" -> out = Path.of(value(list, ++i, a));
+                case "--match" -> {
+                    String v = value(list, ++i, a);
+                    try {
+                        match = Pattern.compile(v);
+                    } catch (PatternSyntaxException e) {
+                        throw new IllegalArgumentException("--match needs a regular expression, got '" + v + "'", e);
+                    }
+                }
                 case "--budget" -> {
                     String v = value(list, ++i, a);
                     try {
@@ -69,7 +82,7 @@ record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMa
             }
         }
         if (runs < 0) runs = quick ? 1 : 5;
-        return new Options(quick, runs, groups, out, flatMax, scalingMax, budget, images, help);
+        return new Options(quick, runs, groups, out, flatMax, scalingMax, budget, match, images, help);
     }
 
     private static String value(List<String> args, int i, String option) {

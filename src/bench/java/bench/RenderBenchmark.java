@@ -61,6 +61,7 @@ public final class RenderBenchmark {
     private String run(String commandLine) {
         Machine machine = Machine.describe();
         List<Configuration> configs = Configurations.of(options);
+        if (configs.isEmpty()) log.println("no configuration matches " + options.groups() + " and --match " + options.match());
         log.printf(Locale.ROOT, "%d configurations, %d timed run(s) each%s%n", configs.size(), options.runs(),
                 options.quick() ? " (quick)" : "");
         List<Measurement> results = new ArrayList<>();
@@ -76,8 +77,8 @@ public final class RenderBenchmark {
                 log.printf(Locale.ROOT, "built scene %s in %.2f s%n", sceneKey, (System.nanoTime() - t0) / 1e9);
             }
             Measurement m = measure(c, scene);
-            log.printf(Locale.ROOT, "  %s %s %s, %d thread(s): median %.3f s of %d, %.2f Mrays/s%n", c.group(),
-                    c.resolution(), c.settings(), c.threads(), m.median(), m.runs(), m.mraysPerSecond());
+            log.printf(Locale.ROOT, "  %s %s: median %.3f s of %d, %.2f Mrays/s%n", c.describe(), c.resolution(),
+                    m.median(), m.runs(), m.mraysPerSecond());
             results.add(m);
         }
         return Report.markdown(options, commandLine, machine, Machine.loadAverage(), results);
