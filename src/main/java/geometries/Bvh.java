@@ -207,6 +207,12 @@ public final class Bvh extends Intersectable {
         int[] skip;
         int nodes;
         int maxDepth;
+        // Scratch reused by every node of the build.
+        private int[] scratch;
+        private final int[] binCount = new int[BINS];
+        private final double[] binBox = new double[BINS * 6];
+        private final double[] rightArea = new double[BINS];
+        private final double[] acc = new double[6];
 
         Builder(int total) {
             owners = new Intersectable[total];
@@ -238,6 +244,7 @@ public final class Bvh extends Intersectable {
         void build() {
             int n = added;
             order = new int[n];
+            scratch = new int[n];
             for (int i = 0; i < n; ++i) order[i] = i;
             int capacity = Math.max(1, 2 * n);
             box = new double[capacity * 6];
@@ -257,92 +264,94 @@ public final class Bvh extends Intersectable {
         /** Builds the subtree over order[start, end) and returns its node index. */
         private int buildNode(int start, int end, int level) {
             int node = nodes++;
-            maxDepth = Math.max(maxDepth, level);
-            double[] nb = { Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY,
-                    Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY, Double.NEGATIVE_INFINITY };
-            double[] cb = nb.clone();
+            if (level > maxDepth) maxDepth = level;
+            double bx0 = Double.POSITIVE_INFINITY, by0 = bx0, bz0 = bx0, bx1 = Double.NEGATIVE_INFINITY, by1 = bx1, bz1 = bx1;
+            double cx0 = bx0, cy0 = bx0, cz0 = bx0, cx1 = bx1, cy1 = bx1, cz1 = bx1;
             for (int i = start; i < end; ++i) {
-                int p = order[i];
-                for (int a = 0; a < 3; ++a) {
-                    nb[a] = Math.min(nb[a], bounds[p * 6 + a]);
-                    nb[a + 3] = Math.max(nb[a + 3], bounds[p * 6 + a + 3]);
-                    cb[a] = Math.min(cb[a], centroid[p * 3 + a]);
-                    cb[a + 3] = Math.max(cb[a + 3], centroid[p * 3 + a]);
+                int p = order[i], o = p * 6, c = p * 3;
+                if (bounds[o] < bx0) bx0 = bounds[o];
+                if (bounds[o + 1] < by0) by0 = bounds[o + 1];
+                if (bounds[o + 2] < bz0) bz0 = bounds[o + 2];
+                if (bounds[o + 3] > bx1) bx1 = bounds[o + 3];
+                if (bounds[o + 4] > by1) by1 = bounds[o + 4];
+                if (bounds[o + 5] > bz1) bz1 = bounds[o + 5];
+                if (centroid[c] < cx0) cx0 = centroid[c];
+                if (centroid[c + 1] < cy0) cy0 = centroid[c + 1];
+                if (centroid[c + 2] < cz0) cz0 = centroid[c + 2];
+                if (centroid[c] > cx1) cx1 = centroid[c];
+                if (centroid[c + 1] > cy1) cy1 = centroid[c + 1];
+                if (centroid[c + 2] > cz1) cz1 = centroid[c + 2];
+            }
+            int o = node * 6;
+            box[o] = bx0;
+            box[o + 1] = by0;
+            box[o + 2] = bz0;
+            box[o + 3] = bx1;
+            box[o + 4] = by1;
+            box[o + 5] = bz1;
+            int n = end - start;
+            // Bin along the axis where the centroids spread most (as pbrt does): a third of the
+            // work of trying all three, for trees of nearly the same quality.
+            double ex = cx1 - cx0, ey = cy1 - cy0, ez = cz1 - cz0;
+            int a = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
+            double lo = a == 0 ? cx0 : a == 1 ? cy0 : cz0;
+            double extent = a == 0 ? ex : a == 1 ? ey : ez;
+            int mid = -1;
+            if (n > 1 && extent > 0) {
+                java.util.Arrays.fill(binCount, 0);
+                for (int k = 0; k < BINS; ++k) resetBox(binBox, k);
+                double scale = BINS / extent;
+                for (int i = start; i < end; ++i) {
+                    int p = order[i];
+                    int k = bin(centroid[p * 3 + a], lo, scale);
+                    binCount[k]++;
+                    growBox(binBox, k, bounds, p);
+                }
+                // Sweep from the right for the areas of every right part, then from the left.
+                resetBox(acc, 0);
+                for (int k = BINS - 1; k > 0; --k) {
+                    growBox(acc, 0, binBox, k);
+                    rightArea[k] = halfArea(acc, 0);
+                }
+                resetBox(acc, 0);
+                double parentArea = (bx1 - bx0) * (by1 - by0) + (by1 - by0) * (bz1 - bz0) + (bz1 - bz0) * (bx1 - bx0);
+                double bestCost = Double.POSITIVE_INFINITY;
+                int bestBin = -1, leftCount = 0;
+                for (int k = 0; k < BINS - 1; ++k) {
+                    growBox(acc, 0, binBox, k);
+                    leftCount += binCount[k];
+                    int rightCount = n - leftCount;
+                    if (leftCount == 0 || rightCount == 0) continue;
+                    double cost = TRAVERSAL_COST + (halfArea(acc, 0) * leftCount + rightArea[k + 1] * rightCount) / parentArea;
+                    if (cost < bestCost) {
+                        bestCost = cost;
+                        bestBin = k;
+                    }
+                }
+                if (bestBin >= 0 && (bestCost < n || n > MAX_LEAF)) {
+                    // Stable partition through the shared scratch buffer: deterministic order.
+                    int l = start, r = 0;
+                    for (int i = start; i < end; ++i) {
+                        int p = order[i];
+                        if (bin(centroid[p * 3 + a], lo, scale) <= bestBin) order[l++] = p;
+                        else scratch[r++] = p;
+                    }
+                    System.arraycopy(scratch, 0, order, l, r);
+                    mid = l;
                 }
             }
-            System.arraycopy(nb, 0, box, node * 6, 6);
-            int n = end - start;
-            int mid = -1;
-            int splitAxis = 0;
-            if (n > 1) {
-                double leafCost = n;
-                double bestCost = Double.POSITIVE_INFINITY;
-                int bestAxis = -1, bestBin = -1;
-                double parentArea = halfArea(nb, 0);
-                int[] binCount = new int[BINS];
-                double[] binBox = new double[BINS * 6];
-                double[] rightArea = new double[BINS];
-                for (int a = 0; a < 3; ++a) {
-                    double lo = cb[a], extent = cb[a + 3] - lo;
-                    if (!(extent > 0)) continue;
-                    java.util.Arrays.fill(binCount, 0);
-                    for (int k = 0; k < BINS; ++k) resetBox(binBox, k);
-                    double scale = BINS / extent;
-                    for (int i = start; i < end; ++i) {
-                        int p = order[i];
-                        int k = bin(centroid[p * 3 + a], lo, scale);
-                        binCount[k]++;
-                        growBox(binBox, k, bounds, p);
-                    }
-                    // Sweep from the right to get the areas of every right part, then from the left.
-                    double[] acc = new double[6];
-                    resetBox(acc, 0);
-                    for (int k = BINS - 1; k > 0; --k) {
-                        growBox(acc, 0, binBox, k);
-                        rightArea[k] = binCount[k] == 0 && acc[0] > acc[3] ? 0 : halfArea(acc, 0);
-                    }
-                    resetBox(acc, 0);
-                    int leftCount = 0;
-                    for (int k = 0; k < BINS - 1; ++k) {
-                        growBox(acc, 0, binBox, k);
-                        leftCount += binCount[k];
-                        int rightCount = n - leftCount;
-                        if (leftCount == 0 || rightCount == 0) continue;
-                        double cost = TRAVERSAL_COST + (halfArea(acc, 0) * leftCount + rightArea[k + 1] * rightCount) / parentArea;
-                        if (cost < bestCost) {
-                            bestCost = cost;
-                            bestAxis = a;
-                            bestBin = k;
-                        }
-                    }
-                }
-                if (bestAxis >= 0 && (bestCost < leafCost || n > MAX_LEAF)) {
-                    splitAxis = bestAxis;
-                    double lo = cb[bestAxis], scale = BINS / (cb[bestAxis + 3] - lo);
-                    // Stable partition keeps the build deterministic and the order reproducible.
-                    int[] tmp = new int[n];
-                    int l = 0, r = n;
-                    for (int i = start; i < end; ++i) {
-                        int p = order[i];
-                        if (bin(centroid[p * 3 + bestAxis], lo, scale) <= bestBin) tmp[l++] = p;
-                        else tmp[--r] = p;
-                    }
-                    for (int i = 0; i < l; ++i) order[start + i] = tmp[i];
-                    for (int i = n - 1, j = l; i >= r; --i, ++j) order[start + j] = tmp[i];
-                    mid = start + l;
-                } else if (n > MAX_LEAF) {
-                    // All centroids coincide: split the range in half to bound leaf size.
-                    mid = start + n / 2;
-                    double[] e = { nb[3] - nb[0], nb[4] - nb[1], nb[5] - nb[2] };
-                    splitAxis = e[0] >= e[1] && e[0] >= e[2] ? 0 : e[1] >= e[2] ? 1 : 2;
-                }
+            if (mid < 0 && n > MAX_LEAF) {
+                // All centroids coincide: split the range in half to bound the leaf size.
+                mid = start + n / 2;
+                double dx = bx1 - bx0, dy = by1 - by0, dz = bz1 - bz0;
+                a = dx >= dy && dx >= dz ? 0 : dy >= dz ? 1 : 2;
             }
             if (mid < 0) {
                 firstOrRight[node] = start;
                 count[node] = n;
             } else {
                 count[node] = 0;
-                axis[node] = (byte) splitAxis;
+                axis[node] = (byte) a;
                 buildNode(start, mid, level + 1);
                 firstOrRight[node] = buildNode(mid, end, level + 1);
             }
@@ -364,8 +373,8 @@ public final class Bvh extends Intersectable {
         private static void growBox(double[] b, int k, double[] src, int s) {
             int o = k * 6, so = s * 6;
             for (int a = 0; a < 3; ++a) {
-                b[o + a] = Math.min(b[o + a], src[so + a]);
-                b[o + a + 3] = Math.max(b[o + a + 3], src[so + a + 3]);
+                if (src[so + a] < b[o + a]) b[o + a] = src[so + a];
+                if (src[so + a + 3] > b[o + a + 3]) b[o + a + 3] = src[so + a + 3];
             }
         }
 
