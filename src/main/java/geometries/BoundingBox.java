@@ -38,12 +38,28 @@ public final class BoundingBox {
     }
 
     /**
-     * The slab test. Works for axis-parallel rays (1/0 = ±∞; a 0·∞ NaN is ignored by the min/max
-     * order used) and rays starting inside.
+     * The inverse of a direction component for the slab test: 1/d, except that a negative zero
+     * (which {@code scale(-1)} of an axis-parallel vector produces) or a negative component too
+     * small to invert gives +∞ rather than −∞. The slab test relies on it; see there.
+     */
+    static double inverse(double d) {
+        double inv = 1 / d;
+        return inv == Double.NEGATIVE_INFINITY ? Double.POSITIVE_INFINITY : inv;
+    }
+
+    /**
+     * The slab test. Works for axis-parallel rays and rays starting inside. For an axis the ray
+     * is parallel to, the inverse must be +∞ (use {@link #inverse}; a −∞ is turned into +∞
+     * here): then a = (min − o)·∞ ≤ b = (max − o)·∞, and when the origin lies on a slab plane the
+     * 0·∞ = NaN lands on the side that the comparisons below ignore. With −∞ the NaN would land
+     * in a while b = −∞ empties the interval: a ray grazing a face would miss.
      *
      * @return true when the ray segment [0, tMax] touches the box
      */
     public boolean intersects(double ox, double oy, double oz, double invDx, double invDy, double invDz, double tMax) {
+        if (invDx == Double.NEGATIVE_INFINITY) invDx = Double.POSITIVE_INFINITY; // 1/-0.0 from a caller
+        if (invDy == Double.NEGATIVE_INFINITY) invDy = Double.POSITIVE_INFINITY;
+        if (invDz == Double.NEGATIVE_INFINITY) invDz = Double.POSITIVE_INFINITY;
         double t0 = 0, t1 = tMax;
         double a = (minX - ox) * invDx, b = (maxX - ox) * invDx;
         if (a > b) { double s = a; a = b; b = s; }

@@ -23,17 +23,18 @@ public final class Bvh extends Intersectable {
     /** Cost of visiting a node relative to testing one primitive, for the SAH. */
     private static final double TRAVERSAL_COST = 1.0;
 
+    /** The leaves this tree indexes, as collected: what it contributes to a tree built around it. */
+    private final Intersectable[] leaves;
     private final Intersectable[] unbounded;
     // Per primitive, in leaf order: its owner and its index within the owner.
     private final Intersectable[] owner;
     private final int[] prim;
-    // Per node, depth-first: the box (6 doubles: min xyz, max xyz); for a leaf (count > 0) its first
-    // primitive; for an inner node (count == 0) its right child (the left child is the next node),
-    // and the split axis; skip = the first node after this node's subtree.
-    private final double[] box;
-    private final int[] firstOrRight;
-    private final int[] count;
-    private final byte[] axis;
+    // Per node, depth-first, one packed record of NODE doubles = 64 bytes, one cache line: the box
+    // (min xyz, max xyz), then for a leaf its first primitive and its primitive count (> 0), for an
+    // inner node its right child (the left child is the next node) and 0.
+    private static final int NODE = 8;
+    private final double[] node;
+    // The first node after each node's subtree: the any-hit walk's skip links.
     private final int[] skip;
     private final int nodeCount;
     private final int depth;
@@ -52,6 +53,7 @@ public final class Bvh extends Intersectable {
             if (leaf.getBoundingBox() == null) free.add(leaf);
             else total += leaf.primitiveCount();
         }
+        this.leaves = leaves.toArray(new Intersectable[0]);
         unbounded = free.toArray(new Intersectable[0]);
 
         Builder b = new Builder(total);
@@ -63,11 +65,13 @@ public final class Bvh extends Intersectable {
         owner = b.orderedOwner;
         prim = b.orderedPrim;
         nodeCount = b.nodes;
-        box = b.box;
-        firstOrRight = b.firstOrRight;
-        count = b.count;
-        axis = b.axis;
-        skip = b.skip;
+        node = new double[nodeCount * NODE];
+        for (int i = 0; i < nodeCount; ++i) {
+            System.arraycopy(b.box, i * 6, node, i * NODE, 6);
+            node[i * NODE + 6] = b.firstOrRight[i];
+            node[i * NODE + 7] = b.count[i];
+        }
+        skip = java.util.Arrays.copyOf(b.skip, nodeCount);
         depth = b.maxDepth + 1;
     }
 
@@ -91,9 +95,14 @@ public final class Bvh extends Intersectable {
         return nodeCount == 0 ? 0 : depth;
     }
 
-    private boolean boxHit(int node, double ox, double oy, double oz, double ix, double iy, double iz, double tMax) {
-        int o = node * 6;
-        double[] bx = box;
+    /**
+     * The slab test of node {@code n} against the ray segment [0, tMax].
+     *
+     * @return the distance at which the ray enters the box, or +∞ when it misses it
+     */
+    private double entry(int n, double ox, double oy, double oz, double ix, double iy, double iz, double tMax) {
+        int o = n * NODE;
+        double[] bx = node;
         double t0 = 0, t1 = tMax;
         double a = (bx[o] - ox) * ix, b = (bx[o + 3] - ox) * ix;
         if (a > b) { double s = a; a = b; b = s; }
@@ -109,9 +118,14 @@ public final class Bvh extends Intersectable {
         if (a > b) { double s = a; a = b; b = s; }
         if (a > t0) t0 = a;
         if (b < t1) t1 = b;
-        return t0 <= t1;
+        return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
     }
 
+    /**
+     * The ordered walk: at an inner node both children's boxes are tested; the nearer one (by
+     * entry distance) is visited first and the other pushed with its entry distance, so that
+     * when popped it is skipped if a hit nearer than its box was found meanwhile.
+     */
     @Override
     public boolean closestHit(Ray ray, Hit hit) {
         boolean found = false;
@@ -120,32 +134,50 @@ public final class Bvh extends Intersectable {
         Point h = ray.getHead();
         Vector d = ray.getDirection();
         double ox = h.getX(), oy = h.getY(), oz = h.getZ();
-        double ix = 1 / d.getX(), iy = 1 / d.getY(), iz = 1 / d.getZ();
-        int negative = (ix < 0 ? 1 : 0) | (iy < 0 ? 2 : 0) | (iz < 0 ? 4 : 0); // direction sign bits
+        double ix = BoundingBox.inverse(d.getX()), iy = BoundingBox.inverse(d.getY()), iz = BoundingBox.inverse(d.getZ());
+        if (!(entry(0, ox, oy, oz, ix, iy, iz, hit.t) < hit.t)) return found;
+        if (hit.stack.length < depth) {
+            hit.stack = new int[depth];
+            hit.stackT = new double[depth];
+        }
         int[] stack = hit.stack;
-        if (stack.length < depth) stack = hit.stack = new int[depth];
+        double[] stackT = hit.stackT;
+        double[] nd = node;
         int top = 0;
-        int node = 0;
+        int n = 0;
         while (true) {
-            if (boxHit(node, ox, oy, oz, ix, iy, iz, hit.t)) {
-                int n = count[node];
-                if (n > 0) {
-                    for (int k = firstOrRight[node], end = k + n; k < end; ++k)
-                        found |= owner[k].closestHit(prim[k], ray, hit);
-                } else {
-                    // Nearer child first: when the ray goes down the split axis, the right (upper) child is nearer.
-                    if ((negative >> axis[node] & 1) != 0) {
-                        stack[top++] = node + 1;
-                        node = firstOrRight[node];
+            int o = n * NODE;
+            int count = (int) nd[o + 7];
+            if (count > 0) {
+                for (int k = (int) nd[o + 6], end = k + count; k < end; ++k)
+                    found |= owner[k].closestHit(prim[k], ray, hit);
+            } else {
+                int left = n + 1, right = (int) nd[o + 6];
+                double tl = entry(left, ox, oy, oz, ix, iy, iz, hit.t);
+                double tr = entry(right, ox, oy, oz, ix, iy, iz, hit.t);
+                boolean hitLeft = tl < hit.t, hitRight = tr < hit.t;
+                if (hitLeft && hitRight) {
+                    if (tl <= tr) {
+                        stack[top] = right;
+                        stackT[top++] = tr;
+                        n = left;
                     } else {
-                        stack[top++] = firstOrRight[node];
-                        node = node + 1;
+                        stack[top] = left;
+                        stackT[top++] = tl;
+                        n = right;
                     }
                     continue;
                 }
+                if (hitLeft || hitRight) {
+                    n = hitLeft ? left : right;
+                    continue;
+                }
             }
-            if (top == 0) return found;
-            node = stack[--top];
+            do {
+                if (top == 0) return found;
+                --top;
+            } while (!(stackT[top] < hit.t));
+            n = stack[top];
         }
     }
 
@@ -157,21 +189,23 @@ public final class Bvh extends Intersectable {
         Point h = ray.getHead();
         Vector d = ray.getDirection();
         double ox = h.getX(), oy = h.getY(), oz = h.getZ();
-        double ix = 1 / d.getX(), iy = 1 / d.getY(), iz = 1 / d.getZ();
+        double ix = BoundingBox.inverse(d.getX()), iy = BoundingBox.inverse(d.getY()), iz = BoundingBox.inverse(d.getZ());
         // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
-        int node = 0;
-        while (node < nodeCount) {
-            if (boxHit(node, ox, oy, oz, ix, iy, iz, limit)) {
-                int n = count[node];
-                if (n == 0) {
-                    ++node;
+        double[] nd = node;
+        int n = 0;
+        while (n < nodeCount) {
+            if (entry(n, ox, oy, oz, ix, iy, iz, limit) != Double.POSITIVE_INFINITY) {
+                int o = n * NODE;
+                int count = (int) nd[o + 7];
+                if (count == 0) {
+                    ++n;
                     continue;
                 }
-                for (int k = firstOrRight[node], end = k + n; k < end; ++k)
+                for (int k = (int) nd[o + 6], end = k + count; k < end; ++k)
                     if (!owner[k].visitHits(prim[k], ray, maxDistance, visitor)) return false;
             }
-            node = skip[node];
+            n = skip[n];
         }
         return true;
     }
@@ -183,10 +217,20 @@ public final class Bvh extends Intersectable {
         return result;
     }
 
+    /**
+     * A tree inside a scene that is built into a tree in turn hands over its leaves, not itself:
+     * the outer tree then indexes every primitive directly. (Walked as a leaf, this tree would
+     * also reuse the {@link Hit#stack} the outer walk is still using.)
+     */
+    @Override
+    void collectLeaves(List<Intersectable> out) {
+        for (Intersectable leaf : leaves) out.add(leaf);
+    }
+
     @Override
     public BoundingBox getBoundingBox() {
         if (unbounded.length > 0 || nodeCount == 0) return null;
-        return new BoundingBox(box[0], box[1], box[2], box[3], box[4], box[5]);
+        return new BoundingBox(node[0], node[1], node[2], node[3], node[4], node[5]);
     }
 
     /** The top-down binned-SAH builder; its arrays become the tree's. */
@@ -203,7 +247,6 @@ public final class Bvh extends Intersectable {
         double[] box;
         int[] firstOrRight;
         int[] count;
-        byte[] axis;
         int[] skip;
         int nodes;
         int maxDepth;
@@ -250,7 +293,6 @@ public final class Bvh extends Intersectable {
             box = new double[capacity * 6];
             firstOrRight = new int[capacity];
             count = new int[capacity];
-            axis = new byte[capacity];
             skip = new int[capacity];
             if (n > 0) buildNode(0, n, 0);
             orderedOwner = new Intersectable[n];
@@ -343,15 +385,12 @@ public final class Bvh extends Intersectable {
             if (mid < 0 && n > MAX_LEAF) {
                 // All centroids coincide: split the range in half to bound the leaf size.
                 mid = start + n / 2;
-                double dx = bx1 - bx0, dy = by1 - by0, dz = bz1 - bz0;
-                a = dx >= dy && dx >= dz ? 0 : dy >= dz ? 1 : 2;
             }
             if (mid < 0) {
                 firstOrRight[node] = start;
                 count[node] = n;
             } else {
                 count[node] = 0;
-                axis[node] = (byte) a;
                 buildNode(start, mid, level + 1);
                 firstOrRight[node] = buildNode(mid, end, level + 1);
             }

@@ -19,6 +19,8 @@ public final class Hit {
     double v;
     /** The BVH walk's node stack, owned by the thread that owns this record; grown on demand. */
     int[] stack = new int[64];
+    /** The entry distance of each node on {@link #stack}, to skip it when a nearer hit was found. */
+    double[] stackT = new double[64];
 
     /** Clears the record and sets the query's upper bound on the distance. */
     public Hit reset(double tMax) {

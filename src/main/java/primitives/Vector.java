@@ -86,15 +86,8 @@ public class Vector extends Point {
         return new Vector(-x, -y, -z, true);
     }
 
-    @Override
-    public boolean equals(Object obj) {
-        return obj instanceof Vector && super.equals(obj);
-    }
-
-    @Override
-    public int hashCode() {
-        return super.hashCode();
-    }
+    // equals/hashCode are Point's: a vector equals a point of the same coordinates, in both
+    // directions (a Vector-only override made Point.equals(Vector) true but Vector.equals(Point) false).
 
     @Override
     public String toString() {

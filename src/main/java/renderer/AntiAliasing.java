@@ -11,8 +11,9 @@ public enum AntiAliasing {
     /** The centre and the four corners, averaged; corners are shared with the neighbouring pixels. */
     CORNERS,
     /**
-     * The centre and the four corners; each quadrant whose corner differs from the centre by more
-     * than the threshold is subdivided the same way, down to the maximum depth. Samples are reused.
+     * The centre and the four corners; when a corner differs from the centre by more than the
+     * threshold, the four quadrants are sampled the same way, down to the maximum depth. Samples
+     * are reused.
      */
     ADAPTIVE
 }

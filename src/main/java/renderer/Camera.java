@@ -164,6 +164,15 @@ public final class Camera {
         };
     }
 
+    /** The tile side, in pixels, of the render loop for this camera's sampling. */
+    int tileSize() {
+        return switch (antiAliasing) {
+            case NONE, RANDOM -> 16;
+            case CORNERS -> LatticeSampler.tileSize(0);
+            case ADAPTIVE -> LatticeSampler.tileSize(adaptiveDepth);
+        };
+    }
+
     long seed() {
         return seed;
     }
@@ -339,10 +348,16 @@ public final class Camera {
         /**
          * RANDOM anti-aliasing with a grid of columns × rows jittered samples per pixel (one line
          * for both settings).
+         *
+         * @throws IllegalArgumentException for a mode other than RANDOM (the grid is RANDOM's; use
+         *                                  {@link #setAdaptive} for ADAPTIVE) or a grid below 1×1
          */
         public Builder setAntiAliasing(AntiAliasing mode, int columns, int rows) {
-            setAntiAliasing(mode);
-            return setAntiAliasingGrid(columns, rows);
+            if (mode != AntiAliasing.RANDOM)
+                throw new IllegalArgumentException("a " + columns + "x" + rows + " grid applies to RANDOM anti-aliasing only, got "
+                        + mode + (mode == AntiAliasing.ADAPTIVE ? " (use setAdaptive(depth, threshold))" : ""));
+            setAntiAliasingGrid(columns, rows);
+            return setAntiAliasing(mode);
         }
 
         /** The RANDOM grid: columns × rows samples per pixel (default 4×4), each at least 1. */
@@ -356,8 +371,9 @@ public final class Camera {
 
         /**
          * ADAPTIVE settings: sub-pixels down to 1/2^maxDepth of the pixel side (1..6, default 3,
-         * i.e. up to 8×8), subdividing a quadrant whose corner and centre differ by more than
-         * {@code threshold} in some channel (0..255 scale, default 8).
+         * i.e. up to 8×8), subdividing a square into its four quadrants when one of its corners
+         * differs from its centre by more than {@code threshold} in some channel (0..255 scale,
+         * default 8).
          */
         public Builder setAdaptive(int maxDepth, double threshold) {
             if (maxDepth < 1 || maxDepth > 6)

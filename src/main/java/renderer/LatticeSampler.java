@@ -40,8 +40,7 @@ final class LatticeSampler implements PixelSampler {
         this.maxDepth = adaptive ? maxDepth : 0;
         this.threshold = threshold;
         this.perPixel = 1 << (this.maxDepth + 1);
-        // Keep the cache around 64K points whatever the depth.
-        this.tile = Math.max(1, Math.min(16, 256 / perPixel));
+        this.tile = tileSize(this.maxDepth);
         this.side = tile * perPixel + 1;
         cr = new double[side * side];
         cg = new double[side * side];
@@ -49,9 +48,12 @@ final class LatticeSampler implements PixelSampler {
         stamp = new int[side * side];
     }
 
-    @Override
-    public int tileSize() {
-        return tile;
+    /**
+     * The tile side, in pixels, for a lattice of 2^(depth+1) points per pixel side: 16 pixels,
+     * fewer at depths above 3 so that the per-tile cache stays at most 257² points (1.8 MB).
+     */
+    static int tileSize(int depth) {
+        return Math.max(1, Math.min(16, 256 >> (depth + 1)));
     }
 
     @Override
@@ -93,25 +95,38 @@ final class LatticeSampler implements PixelSampler {
     }
 
     /**
-     * Adds {@code weight ×} the colour of the square at (gx, gy) of side s to {@code sum}: each
-     * quadrant is the mean of its corner and the centre, unless they differ by more than the
-     * threshold and the depth allows a split, in which case the quadrant is sampled the same way.
+     * Adds {@code weight ×} the colour of the square at (gx, gy) of side s to {@code sum}. When a
+     * corner differs from the centre by more than the threshold and the depth allows, all four
+     * quadrants are sampled the same way; otherwise each quadrant counts as the mean of its
+     * corner and the centre.
+     *
+     * <p>Why all four: an edge crossing the square always separates some corner from the centre,
+     * but it may cross a quadrant without separating that quadrant's corner from the centre (it
+     * cuts off the quadrant's corner on a side of the square, which the square does not sample).
+     * Splitting only the quadrants whose corner differs misses such an edge entirely, with an
+     * error up to half the contrast.
      */
     private void square(int gx, int gy, int s, int level, double weight, double[] sum, TraceContext ctx) {
         int h = s / 2;
         int m = point(gx + h, gy + h, ctx);
-        for (int q = 0; q < 4; ++q) {
-            int qx = gx + (q & 1) * h, qy = gy + (q >> 1) * h; // the quadrant's top-left
-            int corner = point(gx + (q & 1) * s, gy + (q >> 1) * s, ctx);
-            double diff = Math.max(Math.abs(cr[corner] - cr[m]), Math.max(Math.abs(cg[corner] - cg[m]), Math.abs(cb[corner] - cb[m])));
-            if (level < maxDepth && diff > threshold) {
-                square(qx, qy, h, level + 1, weight / 4, sum, ctx);
-            } else {
-                double w = weight / 8;
-                sum[0] += (cr[corner] + cr[m]) * w;
-                sum[1] += (cg[corner] + cg[m]) * w;
-                sum[2] += (cb[corner] + cb[m]) * w;
-            }
+        int c0 = point(gx, gy, ctx), c1 = point(gx + s, gy, ctx), c2 = point(gx, gy + s, ctx), c3 = point(gx + s, gy + s, ctx);
+        if (level < maxDepth && (differs(c0, m) || differs(c1, m) || differs(c2, m) || differs(c3, m))) {
+            double w = weight / 4;
+            square(gx, gy, h, level + 1, w, sum, ctx);
+            square(gx + h, gy, h, level + 1, w, sum, ctx);
+            square(gx, gy + h, h, level + 1, w, sum, ctx);
+            square(gx + h, gy + h, h, level + 1, w, sum, ctx);
+        } else {
+            double w = weight / 8;
+            sum[0] += (cr[c0] + cr[c1] + cr[c2] + cr[c3] + 4 * cr[m]) * w;
+            sum[1] += (cg[c0] + cg[c1] + cg[c2] + cg[c3] + 4 * cg[m]) * w;
+            sum[2] += (cb[c0] + cb[c1] + cb[c2] + cb[c3] + 4 * cb[m]) * w;
         }
+    }
+
+    /** Whether cached points i and j differ by more than the threshold in some channel. */
+    private boolean differs(int i, int j) {
+        return Math.abs(cr[i] - cr[j]) > threshold || Math.abs(cg[i] - cg[j]) > threshold
+                || Math.abs(cb[i] - cb[j]) > threshold;
     }
 }

@@ -8,11 +8,6 @@ import primitives.Color;
  * {@link #beginTile} before the pixels of each tile.
  */
 interface PixelSampler {
-    /** The tile side, in pixels, this sampler works best with. */
-    default int tileSize() {
-        return 16;
-    }
-
     /** Announces the tile of columns [x0, x1) and rows [y0, y1) about to be sampled. */
     default void beginTile(int x0, int y0, int x1, int y1) {
     }

@@ -8,7 +8,7 @@ import java.util.concurrent.atomic.AtomicLong;
 /**
  * Progress lines of one render: a full line (no carriage-return tricks, so IDE consoles show it)
  * each time another {@code step} percent of the pixels is done, with elapsed time and an ETA.
- * Shared by the workers of that render only; lock-free.
+ * Shared by the workers of that render only; lock-free except when a line is due.
  */
 final class Progress {
     private final String label;
@@ -17,7 +17,7 @@ final class Progress {
     private final PrintStream out;
     private final long start = System.nanoTime();
     private final AtomicLong done = new AtomicLong();
-    /** Index of the next step to report; a worker that claims it by CAS prints it. */
+    /** Index of the next step to report; updated under the lock by the worker that prints. */
     private final AtomicInteger nextStep = new AtomicInteger(1);
 
     /** @param step percent between lines; 0 reports nothing */
@@ -32,18 +32,18 @@ final class Progress {
         long now = done.addAndGet(pixels);
         if (step <= 0) return;
         double percent = 100.0 * now / total;
-        while (true) {
+        if (percent < Math.min(100, nextStep.get() * step)) return; // most calls: no line is due
+        // One line per call however many steps it crosses, claimed and printed under one lock so
+        // that lines come out in order (a worker that claimed step k cannot print after k + 1).
+        synchronized (this) {
             int k = nextStep.get();
-            double mark = Math.min(100, k * step);
-            if (percent < mark || !nextStep.compareAndSet(k, k + 1)) {
-                if (percent < mark) return;
-                continue;
-            }
+            if (percent < Math.min(100, k * step)) return;
+            // The next line is due at the first step beyond what is done now.
+            nextStep.set(percent >= 100 ? Integer.MAX_VALUE : (int) Math.floor(percent / step) + 1);
             double elapsed = (System.nanoTime() - start) / 1e9;
             double eta = now == 0 ? 0 : elapsed * (total - now) / now;
             out.println(String.format(Locale.ROOT, "%s: %5.1f%%  %d/%d px  elapsed %.1f s  ETA %.1f s",
                     label, percent, now, total, elapsed, eta));
-            if (mark >= 100) return;
         }
     }
 

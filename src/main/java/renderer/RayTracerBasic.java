@@ -48,6 +48,13 @@ public class RayTracerBasic extends RayTracerBase {
     /** The scene's geometry as the render queries it (a BVH or the flat list); set by prepare(). */
     private volatile Intersectable world;
     private volatile LightSource[] lights;
+    /** What the prepared state was made from, to notice a scene changed between direct calls. */
+    private Object preparedGeometries;
+    private int preparedItems = -1;
+    private int preparedLights = -1;
+    /** Scratch for calls of {@link #traceRay(Ray)} made outside a render, one per calling thread. */
+    private final ThreadLocal<TraceContext> directContexts =
+            ThreadLocal.withInitial(() -> new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K));
 
     public RayTracerBasic(Scene scene) {
         super(scene);
@@ -101,21 +108,24 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     @Override
-    void prepare() {
+    synchronized void prepare() {
+        preparedGeometries = scene.geometries;
+        preparedItems = scene.geometries.getItems().size();
+        preparedLights = scene.lights.size();
         lights = scene.lights.toArray(new LightSource[0]);
         world = useBvh ? Bvh.build(scene.geometries) : scene.geometries;
     }
 
-    /** The prepared geometry, built on first use when the tracer is called outside a render. */
-    private Intersectable world() {
-        Intersectable w = world;
-        if (w == null) {
-            synchronized (this) {
-                if (world == null) prepare();
-                w = world;
-            }
-        }
-        return w;
+    /**
+     * The prepared geometry for a call outside a render: built on first use, and rebuilt when the
+     * scene's geometry list, its number of items or its number of lights changed since (a render
+     * always rebuilds; changes deep inside nested {@code Geometries} are seen by the next render).
+     */
+    private synchronized Intersectable preparedForDirectCall() {
+        if (world == null || preparedGeometries != scene.geometries
+                || preparedItems != scene.geometries.getItems().size() || preparedLights != scene.lights.size())
+            prepare();
+        return world;
     }
 
     @Override
@@ -123,14 +133,25 @@ public class RayTracerBasic extends RayTracerBase {
         return "bvh " + (useBvh ? "on" : "off") + ", beam " + beamSize + ", shadow samples " + shadowSamples;
     }
 
+    /**
+     * The colour seen along {@code ray}, for use outside a render (a render calls the tracer
+     * through its own loop). Random choices (glossy beams, soft shadows) are keyed by the ray
+     * itself, so the same ray always gives the same colour and different rays are independent.
+     */
     @Override
     public Color traceRay(Ray ray) {
-        return traceRay(ray, new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K));
+        preparedForDirectCall();
+        TraceContext ctx = directContexts.get();
+        Point h = ray.getHead();
+        Vector d = ray.getDirection();
+        ctx.random.reset(Double.doubleToLongBits(h.getX()) * 31 + Double.doubleToLongBits(h.getY()),
+                Double.hashCode(h.getZ()), Double.hashCode(d.getX()) * 31 + Double.hashCode(d.getY()), Double.hashCode(d.getZ()));
+        return traceRay(ray, ctx);
     }
 
     @Override
     Color traceRay(Ray ray, TraceContext ctx) {
-        Intersectable w = world();
+        Intersectable w = world;
         Hit hit = ctx.hit(MAX_CALC_COLOR_LEVEL, Double.POSITIVE_INFINITY);
         if (!w.closestHit(ray, hit)) return scene.background;
         return calcColor(hit, ray, MAX_CALC_COLOR_LEVEL, INITIAL_K, beamSize, ctx)
@@ -200,12 +221,12 @@ public class RayTracerBasic extends RayTracerBase {
         double sr = 0, sg = 0, sb = 0;
         SampleStream rnd = ctx.random;
         double offset = rnd.nextDouble();
+        double[] disk = ctx.disk;
         for (int i = 0; i < shadowSamples; ++i) {
-            double rad = radius * Math.sqrt((i + rnd.nextDouble()) / shadowSamples);
-            double ang = 2 * Math.PI * frac(offset + i * PHI);
-            double sx = c.getX() + rad * (Math.cos(ang) * a.getX() + Math.sin(ang) * b.getX());
-            double sy = c.getY() + rad * (Math.cos(ang) * a.getY() + Math.sin(ang) * b.getY());
-            double sz = c.getZ() + rad * (Math.cos(ang) * a.getZ() + Math.sin(ang) * b.getZ());
+            diskPoint(i, shadowSamples, offset, rnd, radius, disk);
+            double sx = c.getX() + disk[0] * a.getX() + disk[1] * b.getX();
+            double sy = c.getY() + disk[0] * a.getY() + disk[1] * b.getY();
+            double sz = c.getZ() + disk[0] * a.getZ() + disk[1] * b.getZ();
             double dx = sx - p.getX(), dy = sy - p.getY(), dz = sz - p.getZ();
             double dist = Math.sqrt(dx * dx + dy * dy + dz * dz);
             // A point of the disk below the surface's horizon sends no light to p.
@@ -222,14 +243,18 @@ public class RayTracerBasic extends RayTracerBase {
     private Color globalEffects(Point p, Vector n, Vector v, double nv, Material material, int level, Double3 k,
                                 int budget, TraceContext ctx) {
         Color color = Color.BLACK;
-        Double3 kkr = k.product(material.kR);
-        if (!kkr.lowerThan(MIN_CALC_COLOR_K)) {
-            Vector r = nv == 0 ? v : v.subtract(n.scale(2 * nv));
-            color = color.add(beam(p, n, r, material.reflectionSpread, material.kR, kkr, level, budget, ctx));
+        if (!material.kR.isZero()) { // most materials neither reflect nor transmit: no products then
+            Double3 kkr = k.product(material.kR);
+            if (!kkr.lowerThan(MIN_CALC_COLOR_K)) {
+                Vector r = nv == 0 ? v : v.subtract(n.scale(2 * nv));
+                color = color.add(beam(p, n, r, material.reflectionSpread, material.kR, kkr, level, budget, ctx));
+            }
         }
-        Double3 kkt = k.product(material.kT);
-        if (!kkt.lowerThan(MIN_CALC_COLOR_K))
-            color = color.add(beam(p, n, v, material.transmissionSpread, material.kT, kkt, level, budget, ctx));
+        if (!material.kT.isZero()) {
+            Double3 kkt = k.product(material.kT);
+            if (!kkt.lowerThan(MIN_CALC_COLOR_K))
+                color = color.add(beam(p, n, v, material.transmissionSpread, material.kT, kkt, level, budget, ctx));
+        }
         return color;
     }
 
@@ -248,10 +273,10 @@ public class RayTracerBasic extends RayTracerBase {
         SampleStream rnd = ctx.random;
         double offset = rnd.nextDouble();
         double sr = 0, sg = 0, sb = 0;
+        double[] disk = ctx.disk;
         for (int i = 0; i < budget; ++i) {
-            double rad = spread * Math.sqrt((i + rnd.nextDouble()) / budget);
-            double ang = 2 * Math.PI * frac(offset + i * PHI);
-            double cx = rad * Math.cos(ang), cy = rad * Math.sin(ang);
+            diskPoint(i, budget, offset, rnd, spread, disk);
+            double cx = disk[0], cy = disk[1];
             double dx = dir.getX() + cx * a.getX() + cy * b.getX();
             double dy = dir.getY() + cx * a.getY() + cy * b.getY();
             double dz = dir.getZ() + cx * a.getZ() + cy * b.getZ();
@@ -274,6 +299,19 @@ public class RayTracerBasic extends RayTracerBase {
         Hit hit = ctx.hit(level - 1, Double.POSITIVE_INFINITY);
         Color c = world.closestHit(ray, hit) ? calcColor(hit, ray, level - 1, kkx, budget, ctx) : scene.background;
         return c.scale(kx);
+    }
+
+    /**
+     * Point {@code i} of {@code n} stratified over a disk of {@code radius}: stratified in area
+     * (radius² uniform within stratum i) and spread in angle by the golden ratio from a random
+     * {@code offset}, so any n points cover the disk evenly. Writes the two in-plane coordinates
+     * into {@code out}; draws one number from {@code rnd}.
+     */
+    private static void diskPoint(int i, int n, double offset, SampleStream rnd, double radius, double[] out) {
+        double rad = radius * Math.sqrt((i + rnd.nextDouble()) / n);
+        double ang = 2 * Math.PI * frac(offset + i * PHI);
+        out[0] = rad * Math.cos(ang);
+        out[1] = rad * Math.sin(ang);
     }
 
     /** A unit vector orthogonal to {@code v}. */

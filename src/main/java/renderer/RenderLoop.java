@@ -10,6 +10,7 @@ import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 
 import primitives.Color;
 
@@ -30,19 +31,18 @@ final class RenderLoop {
     private final int tileCount;
     private final AtomicInteger nextTile = new AtomicInteger();
     private final AtomicBoolean cancelled = new AtomicBoolean();
+    /** The first exception a worker failed with; the others then stop and it is rethrown. */
+    private final AtomicReference<Throwable> failure = new AtomicReference<>();
     private final RenderStats.Counter counter = new RenderStats.Counter();
-    private final Progress progress;
 
     RenderLoop(Camera camera) {
         this.camera = camera;
         this.image = camera.imageWriter();
         this.nX = image.getNx();
         this.nY = image.getNy();
-        this.tile = camera.newSampler().tileSize();
+        this.tile = camera.tileSize();
         this.tilesX = (nX + tile - 1) / tile;
         this.tileCount = tilesX * ((nY + tile - 1) / tile);
-        this.progress = new Progress("render " + image.getImageName(), (long) nX * nY, camera.debugPrint(),
-                camera.output());
     }
 
     /**
@@ -50,12 +50,19 @@ final class RenderLoop {
      *
      * @throws CancellationException when the calling thread is interrupted (its interrupt flag is
      *                               kept set); the workers stop within a tile
+     * @throws RuntimeException      the first exception a worker fails with (the tracer's); the
+     *                               other workers stop within a tile
      */
     RenderStats run() {
+        long t0 = System.nanoTime();
         camera.rayTracer().prepare();
+        double prepareSeconds = (System.nanoTime() - t0) / 1e9;
+        // The clock of the render starts here, after the preparation (timed on its own).
+        Progress progress = new Progress("render " + image.getImageName(), (long) nX * nY, camera.debugPrint(),
+                camera.output());
         int threads = camera.threads();
         if (threads == 0) {
-            worker().run();
+            worker(progress).run();
         } else {
             ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
                 Thread t = new Thread(r, "render-" + image.getImageName());
@@ -64,7 +71,7 @@ final class RenderLoop {
             });
             try {
                 List<Future<?>> futures = new ArrayList<>(threads);
-                for (int i = 0; i < threads; ++i) futures.add(pool.submit(worker()));
+                for (int i = 0; i < threads; ++i) futures.add(pool.submit(worker(progress)));
                 for (Future<?> f : futures) f.get();
             } catch (InterruptedException e) {
                 cancelled.set(true);
@@ -72,7 +79,9 @@ final class RenderLoop {
                 throw new CancellationException("render of " + image.getImageName() + " was interrupted");
             } catch (ExecutionException e) {
                 cancelled.set(true);
-                Throwable cause = e.getCause();
+                // Not necessarily this future's exception: a worker stopped by another's failure
+                // ends with a CancellationException, and the failure is what the caller needs.
+                Throwable cause = failure.get() != null ? failure.get() : e.getCause();
                 if (cause instanceof RuntimeException re) throw re;
                 if (cause instanceof Error err) throw err;
                 throw new IllegalStateException("render worker failed: " + cause, cause);
@@ -81,7 +90,7 @@ final class RenderLoop {
                 awaitQuietly(pool);
             }
         }
-        return counter.stats(progress.elapsedSeconds(), (long) nX * nY, threads);
+        return counter.stats(progress.elapsedSeconds(), (long) nX * nY, threads, prepareSeconds);
     }
 
     /** Waits for the workers to stop so that none writes pixels after the call returns. */
@@ -97,7 +106,7 @@ final class RenderLoop {
         if (interrupted) Thread.currentThread().interrupt();
     }
 
-    private Runnable worker() {
+    private Runnable worker(Progress progress) {
         return () -> {
             PixelSampler sampler = camera.newSampler();
             TraceContext ctx = new TraceContext(RayTracerBasic.MAX_CALC_COLOR_LEVEL, RayTracerBasic.MIN_CALC_COLOR_K);
@@ -117,6 +126,13 @@ final class RenderLoop {
                         }
                     progress.advance((long) (x1 - x0) * (y1 - y0));
                 }
+            } catch (CancellationException e) {
+                throw e;
+            } catch (RuntimeException | Error e) {
+                // Stop the other workers at their next tile instead of finishing the image.
+                failure.compareAndSet(null, e);
+                cancelled.set(true);
+                throw e;
             } finally {
                 ctx.addTo(counter);
             }

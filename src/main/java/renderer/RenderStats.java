@@ -6,15 +6,17 @@ import java.util.Locale;
  * What a render did: its wall time and the rays it traced by kind. Returned by
  * {@link Camera#render()} and printed as the render's one-line summary.
  *
- * @param seconds       wall-clock time of the render loop (without writing the PNG)
+ * @param seconds       wall-clock time of the render loop: tracing every pixel (without the
+ *                      preparation and without writing the PNG)
  * @param pixels        pixels rendered
  * @param cameraRays    rays from the camera (one per pixel sample)
  * @param shadowRays    rays from a hit point toward a light
  * @param secondaryRays reflected and refracted rays
  * @param threads       worker threads used (0: the calling thread)
+ * @param prepareSeconds wall-clock time spent preparing the scene before the loop (building the BVH)
  */
 public record RenderStats(double seconds, long pixels, long cameraRays, long shadowRays, long secondaryRays,
-                          int threads) {
+                          int threads, double prepareSeconds) {
 
     public long totalRays() {
         return cameraRays + shadowRays + secondaryRays;
@@ -33,9 +35,9 @@ public record RenderStats(double seconds, long pixels, long cameraRays, long sha
     @Override
     public String toString() {
         return String.format(Locale.ROOT,
-                "%.3f s, %d px, rays: camera %d, shadow %d, secondary %d (%.2f per px), %.2f Mrays/s, %s",
+                "%.3f s, %d px, rays: camera %d, shadow %d, secondary %d (%.2f per px), %.2f Mrays/s, %s, prepared in %.3f s",
                 seconds, pixels, cameraRays, shadowRays, secondaryRays, samplesPerPixel(), mraysPerSecond(),
-                threads == 0 ? "calling thread" : threads + " threads");
+                threads == 0 ? "calling thread" : threads + " threads", prepareSeconds);
     }
 
     /** Thread-safe accumulation of the workers' counters. */
@@ -50,8 +52,8 @@ public record RenderStats(double seconds, long pixels, long cameraRays, long sha
             secondary += secondaryRays;
         }
 
-        synchronized RenderStats stats(double seconds, long pixels, int threads) {
-            return new RenderStats(seconds, pixels, camera, shadow, secondary, threads);
+        synchronized RenderStats stats(double seconds, long pixels, int threads, double prepareSeconds) {
+            return new RenderStats(seconds, pixels, camera, shadow, secondary, threads, prepareSeconds);
         }
     }
 }

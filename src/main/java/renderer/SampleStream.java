@@ -10,12 +10,12 @@ package renderer;
  * so a worker reuses one instance for every sample instead of allocating a generator per sample
  * as {@link java.util.SplittableRandom} would require.
  */
-public final class SampleStream {
+final class SampleStream {
     private static final long GOLDEN = 0x9E37_79B9_7F4A_7C15L;
     private long state;
 
     /** Positions the stream at the start of the numbers of sample {@code index} of pixel (x, y). */
-    public SampleStream reset(long seed, int x, int y, int index) {
+    SampleStream reset(long seed, int x, int y, int index) {
         long h = mix(seed + GOLDEN);
         h = mix(h ^ (x * 0xD1B5_4A32_D192_ED03L));
         h = mix(h ^ (y * 0xABC9_8388_FB8F_AC03L));
@@ -24,7 +24,7 @@ public final class SampleStream {
     }
 
     /** @return a uniform double in [0, 1) */
-    public double nextDouble() {
+    double nextDouble() {
         return (nextLong() >>> 11) * 0x1.0p-53;
     }
 

@@ -10,6 +10,8 @@ import geometries.Hit;
 final class TraceContext {
     final SampleStream random = new SampleStream();
     final Transmittance transmittance;
+    /** Scratch for one point of a disk (soft-shadow light disks, glossy aim disks). */
+    final double[] disk = new double[2];
     private final Hit[] hits;
     long cameraRays;
     long shadowRays;

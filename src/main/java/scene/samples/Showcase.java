@@ -16,7 +16,7 @@ import primitives.Vector;
 import scene.Scene;
 
 /**
- * The built-in showcase, the kind of picture of the first student report: 134 geometries on a
+ * The built-in showcase, the kind of picture of the first student report: 133 geometries on a
  * reflective floor, a mirror ball, a glass ball with a coloured core, a ring of small spheres,
  * a tiled back wall and crystal pyramids, lit by a directional, a point and a spot light.
  * Best seen from {@link #CAMERA_LOCATION} toward {@link #CAMERA_TARGET} with a 200×200 view

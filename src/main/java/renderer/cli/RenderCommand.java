@@ -1,0 +1,275 @@
+package renderer.cli;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.PrintWriter;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+import primitives.Vector;
+import renderer.AntiAliasing;
+import renderer.Camera;
+import renderer.ImageWriter;
+import scene.Scene;
+import scene.io.LoadedScene;
+import scene.io.RenderSettings;
+import scene.io.SceneFormatException;
+import scene.io.XmlSceneReader;
+import scene.samples.Showcase;
+
+/**
+ * The {@code render} command: renders a scene file, or the built-in showcase, into a PNG.
+ * Command-line options override the file's settings. Exit codes: 0 success, 1 a failure while
+ * rendering or writing the image, 2 bad input (a usage error or an invalid scene file); bad input
+ * is reported in one line on the error stream, never as a stack trace, and writes no image.
+ */
+@Command(name = "render", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
+        sortOptions = false, usageHelpAutoWidth = true,
+        description = {
+                "Renders a scene file into a PNG image. The scene format is described in docs/scene-format.md.",
+                "Without a scene, renders the built-in showcase (600x600, adaptive anti-aliasing) into images/showcase.png." },
+        exitCodeListHeading = "%nExit codes:%n",
+        exitCodeList = { "0:the image was written",
+                "1:the render or the writing of the image failed",
+                "2:bad input: a usage error or an invalid scene file (nothing is written)" })
+public final class RenderCommand implements Callable<Integer> {
+    /** Exit code of a render or write failure. */
+    public static final int FAILURE = 1;
+    /** Exit code of bad input: a usage error or an invalid scene file. */
+    public static final int BAD_INPUT = 2;
+    /** Percent between progress lines when the output is not a terminal. */
+    private static final double LOG_STEP = 10;
+    /** Percent between redraws of the terminal progress bar. */
+    private static final double BAR_STEP = 1;
+
+    @Parameters(arity = "0..1", paramLabel = "SCENE",
+            description = "The scene file (XML). Default: the built-in showcase.")
+    private Path scene;
+
+    @Option(names = { "-o", "--output" }, paramLabel = "FILE",
+            description = "The PNG file to write. Default: images/<image name>.png.")
+    private Path output;
+
+    @Option(names = "--width", paramLabel = "N",
+            description = "Image width in pixels. Given alone, the height follows the file's aspect ratio.")
+    private Integer width;
+
+    @Option(names = "--height", paramLabel = "N",
+            description = "Image height in pixels. Given alone, the width follows the file's aspect ratio.")
+    private Integer height;
+
+    @Option(names = "--threads", paramLabel = "N",
+            description = "Render threads: 0 renders on the calling thread, -2 uses all cores. Default: the file's, else all cores.")
+    private Integer threads;
+
+    @Option(names = "--aa", paramLabel = "MODE",
+            description = "Anti-aliasing: ${COMPLETION-CANDIDATES} (case-insensitive); the parameters stay the file's.")
+    private AntiAliasing antiAliasing;
+
+    @Option(names = "--seed", paramLabel = "N", description = "The seed of every random number of the render.")
+    private Long seed;
+
+    @Option(names = { "-q", "--quiet" }, description = "Print nothing but errors.")
+    private boolean quiet;
+
+    @Spec
+    private CommandSpec spec;
+
+    private final PrintStream out;
+    private final PrintStream err;
+    private final boolean terminal;
+
+    /**
+     * @param out      where progress, the summary and the result go
+     * @param err      where errors go
+     * @param terminal whether {@code out} is an interactive terminal (progress bar) or not (lines)
+     */
+    RenderCommand(PrintStream out, PrintStream err, boolean terminal) {
+        this.out = out;
+        this.err = err;
+        this.terminal = terminal;
+    }
+
+    /** Runs the command on the process's streams; the result is the exit code. */
+    public static int run(String... args) {
+        return commandLine(System.out, System.err, System.console() != null).execute(args);
+    }
+
+    /** The command line, with its streams, ready to {@code execute}. */
+    static CommandLine commandLine(PrintStream out, PrintStream err, boolean terminal) {
+        CommandLine cl = new CommandLine(new RenderCommand(out, err, terminal));
+        cl.setCaseInsensitiveEnumValuesAllowed(true);
+        cl.setOut(new PrintWriter(out, true, StandardCharsets.UTF_8));
+        cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
+        cl.setParameterExceptionHandler((e, args) -> {
+            usageError(e.getCommandLine(), e.getMessage());
+            return BAD_INPUT;
+        });
+        cl.setExecutionExceptionHandler((e, commandLine, parseResult) -> {
+            if (e instanceof ParameterException pe) {
+                usageError(commandLine, pe.getMessage());
+                return BAD_INPUT;
+            }
+            // A failure while rendering or writing: one line; the stack trace helps no user.
+            commandLine.getErr().println("render: failed: " + describe(e));
+            return FAILURE;
+        });
+        return cl;
+    }
+
+    private static void usageError(CommandLine commandLine, String message) {
+        PrintWriter w = commandLine.getErr();
+        w.println("render: " + message);
+        w.println("Try 'render --help' for more information.");
+    }
+
+    private static String describe(Throwable e) {
+        String message = e.getMessage();
+        return message == null || message.isBlank() ? e.getClass().getSimpleName() : message;
+    }
+
+    @Override
+    public Integer call() {
+        long start = System.nanoTime();
+        checkOptions();
+        Job job;
+        try {
+            job = scene == null ? showcase() : load(scene);
+        } catch (SceneFormatException e) {
+            err.println(e.getMessage());
+            return BAD_INPUT;
+        } catch (IOException e) {
+            err.println(scene + ": cannot read the scene file: " + reason(e) + " (expected a readable XML scene file)");
+            return BAD_INPUT;
+        }
+        RenderSettings settings = override(job.settings());
+        Path target = output != null ? output : ImageWriter.IMAGES.resolve(settings.imageName() + ".png");
+
+        ImageWriter image;
+        Camera camera;
+        PrintStream progress = out;
+        ProgressBar bar = null;
+        try {
+            image = settings.newImageWriter();
+            settings.applyTo(job.camera(), job.scene(), image).setSummary(!quiet);
+            if (quiet) {
+                job.camera().setDebugPrint(0);
+            } else if (terminal) {
+                bar = new ProgressBar(out);
+                progress = new PrintStream(bar, true, StandardCharsets.UTF_8);
+                job.camera().setDebugPrint(BAR_STEP);
+            } else {
+                job.camera().setDebugPrint(LOG_STEP);
+            }
+            camera = job.camera().setOutput(progress).build();
+        } catch (IllegalArgumentException e) {
+            // Settings that each passed their check but not together (e.g. too many pixels).
+            err.println(job.source() + ": " + e.getMessage());
+            return BAD_INPUT;
+        }
+
+        try {
+            camera.render();
+        } finally {
+            if (bar != null) bar.finish();
+        }
+        settings.drawGrid(camera);
+        try {
+            image.writeToImage(target);
+        } catch (UncheckedIOException e) {
+            err.println("render: " + e.getMessage());
+            return FAILURE;
+        }
+        if (!quiet)
+            out.println(String.format(Locale.ROOT, "wrote %s (%dx%d) in %.2f s", target, settings.width(),
+                    settings.height(), (System.nanoTime() - start) / 1e9));
+        return 0;
+    }
+
+    /** Option values that picocli's types do not already rule out. */
+    private void checkOptions() {
+        if (width != null && width < 1) throw usage("--width must be at least 1, got " + width);
+        if (height != null && height < 1) throw usage("--height must be at least 1, got " + height);
+        if (threads != null) {
+            try {
+                Camera.getBuilder().setMultithreading(threads);
+            } catch (IllegalArgumentException e) {
+                throw usage("--threads: " + e.getMessage());
+            }
+        }
+        if (output != null) {
+            Path name = output.getFileName();
+            if (name == null || !name.toString().toLowerCase(Locale.ROOT).endsWith(".png"))
+                throw usage("--output must name a .png file, got '" + output + "'");
+        }
+    }
+
+    private ParameterException usage(String message) {
+        return new ParameterException(spec.commandLine(), message);
+    }
+
+    /** The file's settings with the command line's overrides. */
+    RenderSettings override(RenderSettings s) {
+        if (width != null || height != null) {
+            // One side alone keeps the file's aspect ratio, so the view plane is not stretched.
+            int w = width != null ? width : Math.max(1, (int) Math.round((double) s.width() * height / s.height()));
+            int h = height != null ? height : Math.max(1, (int) Math.round((double) s.height() * width / s.width()));
+            s = s.withImage(s.imageName(), w, h);
+        }
+        if (threads != null) s = s.withThreads(threads);
+        if (antiAliasing != null) s = s.withAntiAliasing(antiAliasing);
+        if (seed != null) s = s.withSeed(seed);
+        return s;
+    }
+
+    /** What to render: a scene, its camera and settings, and where they came from (for messages). */
+    private record Job(Scene scene, Camera.Builder camera, RenderSettings settings, String source) {
+    }
+
+    private static Job load(Path file) throws IOException, SceneFormatException {
+        LoadedScene loaded = XmlSceneReader.read(file);
+        return new Job(loaded.scene(), loaded.requireCamera(), loaded.settings(), file.toString());
+    }
+
+    /** The built-in showcase, framed as in its documentation. */
+    private static Job showcase() {
+        Scene scene = Showcase.create();
+        Camera.Builder camera = Camera.getBuilder()
+                .setLocation(Showcase.CAMERA_LOCATION).setDirection(Showcase.CAMERA_TARGET, Vector.AXIS_Y)
+                .setVpSize(Showcase.VP_SIZE, Showcase.VP_SIZE).setVpDistance(Showcase.VP_DISTANCE);
+        RenderSettings settings = RenderSettings.defaults("showcase").withImage("showcase", 600, 600)
+                .withAntiAliasing(AntiAliasing.ADAPTIVE);
+        return new Job(scene, camera, settings, "showcase");
+    }
+
+    private static String reason(IOException e) {
+        if (e instanceof NoSuchFileException) return "no such file";
+        if (e instanceof AccessDeniedException) return "access denied";
+        if (e instanceof FileSystemException f && f.getReason() != null) return f.getReason();
+        return describe(e);
+    }
+
+    /** The version from the jar's manifest; a build from the sources has none. */
+    static final class Version implements CommandLine.IVersionProvider {
+        @Override
+        public String[] getVersion() {
+            String version = RenderCommand.class.getPackage().getImplementationVersion();
+            return new String[] { "render (raytracer) " + (version != null ? version : "development build"),
+                    "Java " + System.getProperty("java.version") + ", " + Runtime.getRuntime().availableProcessors()
+                            + " cores" };
+        }
+    }
+}

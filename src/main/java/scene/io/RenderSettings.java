@@ -1,0 +1,166 @@
+package scene.io;
+
+import java.util.Objects;
+
+import primitives.Color;
+import renderer.AntiAliasing;
+import renderer.Camera;
+import renderer.ImageWriter;
+import renderer.RayTracerBasic;
+import scene.Scene;
+
+/**
+ * How a scene file asks to be rendered: the image, the sampling, the tracer's extensions and the
+ * execution. The defaults (see {@link #defaults(String)}) are the plain course render on all
+ * cores. A command line overrides values with the {@code with…} methods and then
+ * {@linkplain #applyTo(Camera.Builder, Scene) applies} the result to a camera builder.
+ *
+ * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise
+ * @param width            image width in pixels
+ * @param height           image height in pixels
+ * @param gridInterval     a grid line every this many pixels over the image (the course's
+ *                         {@code printGrid}); 0: no grid
+ * @param gridColor        the grid lines' colour
+ * @param antiAliasing     how pixels are sampled
+ * @param aaColumns        RANDOM: jittered grid columns per pixel
+ * @param aaRows           RANDOM: jittered grid rows per pixel
+ * @param adaptiveDepth    ADAPTIVE: maximum subdivision depth (sub-pixels of 1/2^depth)
+ * @param adaptiveThreshold ADAPTIVE: the colour difference (0..255 scale) that subdivides
+ * @param focalDistance    depth of field: distance of the sharp plane along the view
+ *                         direction; 0: pinhole camera (no depth of field)
+ * @param aperture         depth of field: lens radius in scene units
+ * @param dofSamples       depth of field: lens samples per pixel without anti-aliasing
+ * @param threads          0: calling thread; n &gt; 0: n workers; -2: all cores
+ * @param seed             the seed of every random number of the render
+ * @param bvh              whether the tracer uses the bounding volume hierarchy
+ * @param beamSize         rays per glossy or diffuse-glass beam
+ * @param shadowSamples    shadow rays toward a light with a radius
+ */
+public record RenderSettings(String imageName, int width, int height, int gridInterval, Color gridColor,
+                             AntiAliasing antiAliasing, int aaColumns, int aaRows, int adaptiveDepth,
+                             double adaptiveThreshold, double focalDistance, double aperture, int dofSamples,
+                             int threads, long seed, boolean bvh, int beamSize, int shadowSamples) {
+    /** The default image side in pixels, when a file names no resolution. */
+    public static final int DEFAULT_SIZE = 500;
+    /** The course's grid colour (java.awt.Color.YELLOW). */
+    public static final Color DEFAULT_GRID_COLOR = new Color(255, 255, 0);
+
+    public RenderSettings {
+        Objects.requireNonNull(imageName, "image name");
+        Objects.requireNonNull(gridColor, "grid colour");
+        Objects.requireNonNull(antiAliasing, "anti-aliasing mode");
+    }
+
+    /**
+     * The settings of a file that says nothing: a {@value #DEFAULT_SIZE}-pixel square image, no
+     * grid, no anti-aliasing (RANDOM would use 4×4, ADAPTIVE depth 3 and threshold 8), no depth
+     * of field (16 lens samples when it is on), all cores, seed 0, BVH on, beams of 16 rays and
+     * 16 shadow samples: the camera's and the tracer's own defaults, except the thread count.
+     */
+    public static RenderSettings defaults(String imageName) {
+        return new RenderSettings(imageName, DEFAULT_SIZE, DEFAULT_SIZE, 0, DEFAULT_GRID_COLOR,
+                AntiAliasing.NONE, 4, 4, 3, 8, 0, 0, 16, -2, 0, true, 16, 16);
+    }
+
+    /** @return these settings with another image name and size */
+    public RenderSettings withImage(String name, int width, int height) {
+        return new RenderSettings(name, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
+                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
+                shadowSamples);
+    }
+
+    /** @return these settings with another grid overlay (interval 0: none) */
+    public RenderSettings withGrid(int interval, Color color) {
+        return new RenderSettings(imageName, width, height, interval, color, antiAliasing, aaColumns, aaRows,
+                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
+                shadowSamples);
+    }
+
+    /** @return these settings with another anti-aliasing mode (its parameters kept) */
+    public RenderSettings withAntiAliasing(AntiAliasing mode) {
+        return new RenderSettings(imageName, width, height, gridInterval, gridColor, mode, aaColumns, aaRows,
+                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
+                shadowSamples);
+    }
+
+    /** @return these settings with other anti-aliasing parameters */
+    public RenderSettings withAntiAliasingParameters(int columns, int rows, int depth, double threshold) {
+        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, columns, rows,
+                depth, threshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize, shadowSamples);
+    }
+
+    /** @return these settings with another depth of field (focal distance 0: none) */
+    public RenderSettings withDepthOfField(double focalDistance, double aperture, int samples) {
+        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
+                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, samples, threads, seed, bvh, beamSize,
+                shadowSamples);
+    }
+
+    /** @return these settings with another thread count */
+    public RenderSettings withThreads(int threads) {
+        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
+                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
+                shadowSamples);
+    }
+
+    /** @return these settings with another seed */
+    public RenderSettings withSeed(long seed) {
+        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
+                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
+                shadowSamples);
+    }
+
+    /** @return these settings with other tracer extensions */
+    public RenderSettings withTracer(boolean bvh, int beamSize, int shadowSamples) {
+        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
+                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
+                shadowSamples);
+    }
+
+    /** @return whether these settings ask for depth of field */
+    public boolean hasDepthOfField() {
+        return focalDistance > 0;
+    }
+
+    /**
+     * Sets everything but the view on {@code camera}: a new image writer of this name and size, a
+     * new {@link RayTracerBasic} for {@code scene} with these extensions, the sampling, seed and
+     * thread count. The view (location, direction, view plane) is left as it is.
+     *
+     * @return {@code camera}, for chaining
+     * @throws IllegalArgumentException for a value the camera or tracer refuses
+     */
+    public Camera.Builder applyTo(Camera.Builder camera, Scene scene) {
+        return applyTo(camera, scene, newImageWriter());
+    }
+
+    /** @return a new, black image writer of this name and size */
+    public ImageWriter newImageWriter() {
+        return new ImageWriter(imageName, width, height);
+    }
+
+    /**
+     * As {@link #applyTo(Camera.Builder, Scene)}, with an image writer of the caller's (which
+     * keeps a reference to it, e.g. to write it elsewhere than images/).
+     */
+    public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
+        camera.setImageWriter(image)
+                .setRayTracer(new RayTracerBasic(scene).setBvh(bvh).setBeamSize(beamSize).setShadowSamples(shadowSamples))
+                .setAntiAliasing(antiAliasing)
+                .setAntiAliasingGrid(aaColumns, aaRows) // the grid is RANDOM's; kept for a later --aa RANDOM
+                .setAdaptive(adaptiveDepth, adaptiveThreshold)
+                .setDepthOfFieldSamples(dofSamples)
+                .setSeed(seed)
+                .setMultithreading(threads);
+        // Aperture 0 is the pinhole camera whatever the focal distance: this also undoes an earlier
+        // depth of field on a reused builder.
+        if (hasDepthOfField()) camera.setDepthOfField(focalDistance, aperture);
+        else camera.setDepthOfField(1, 0);
+        return camera;
+    }
+
+    /** Draws the grid over a rendered image when these settings ask for one. */
+    public void drawGrid(Camera camera) {
+        if (gridInterval > 0) camera.printGrid(gridInterval, gridColor);
+    }
+}

@@ -1,0 +1,181 @@
+package scene.io;
+
+import java.util.Arrays;
+import java.util.Locale;
+import java.util.function.Consumer;
+import java.util.regex.Pattern;
+import java.util.stream.Collectors;
+
+import primitives.Color;
+import primitives.Double3;
+import primitives.Point;
+import primitives.Vector;
+
+/**
+ * A kind of attribute value: what the reader expects (for messages) and how the text becomes a
+ * value. Numbers are plain decimals ("50", "-0.25", "1e-6") parsed the same on every machine
+ * whatever its locale; "NaN", "Infinity", hexadecimal or Java suffixes ("1d") are rejected, and so
+ * is any number too large to be finite. Triples are separated by white space, as in the course's
+ * scene files ("75 127 90").
+ *
+ * @param expected what a valid value looks like, completing "expected …" in messages
+ * @param parser   the conversion; throws IllegalArgumentException with the reason
+ */
+record ValueType<T>(String expected, Parser<T> parser) {
+    /** A conversion from attribute text to a value. */
+    @FunctionalInterface
+    interface Parser<T> {
+        /** @throws IllegalArgumentException saying what is wrong with {@code text} */
+        T parse(String text);
+    }
+
+    private static final Pattern DECIMAL = Pattern.compile("[+-]?(?:\\d+(?:\\.\\d*)?|\\.\\d+)(?:[eE][+-]?\\d+)?");
+    private static final Pattern INTEGER_TEXT = Pattern.compile("[+-]?\\d+");
+    private static final Pattern NON_FINITE = Pattern.compile("[+-]?(?:nan|inf|infinity)", Pattern.CASE_INSENSITIVE);
+
+    static final ValueType<Double> NUMBER = new ValueType<>("a number", ValueType::number);
+    static final ValueType<Double> POSITIVE = new ValueType<>("a positive number", text -> {
+        double d = number(text);
+        if (!(d > 0)) throw new IllegalArgumentException(text.strip() + " is not positive");
+        return d;
+    });
+    static final ValueType<Double> NON_NEGATIVE = new ValueType<>("a number ≥ 0", text -> {
+        double d = number(text);
+        if (d < 0) throw new IllegalArgumentException(text.strip() + " is negative");
+        return d;
+    });
+    static final ValueType<Integer> INTEGER = new ValueType<>("an integer", ValueType::integer);
+    static final ValueType<Integer> POSITIVE_INTEGER = new ValueType<>("an integer ≥ 1", text -> {
+        int i = integer(text);
+        if (i < 1) throw new IllegalArgumentException(text.strip() + " is less than 1");
+        return i;
+    });
+    static final ValueType<Long> LONG = new ValueType<>("an integer", text -> {
+        String t = text.strip();
+        if (!INTEGER_TEXT.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not an integer");
+        try {
+            return Long.parseLong(t);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(t + " is too large", e);
+        }
+    });
+    static final ValueType<Boolean> BOOLEAN = new ValueType<>("true or false", text -> switch (text.strip()) {
+        case "true" -> true;
+        case "false" -> false;
+        default -> throw new IllegalArgumentException("'" + text.strip() + "' is not a boolean");
+    });
+    static final ValueType<String> TEXT = new ValueType<>("a non-blank text", text -> {
+        if (text.isBlank()) throw new IllegalArgumentException("the value is blank");
+        return text.strip();
+    });
+    static final ValueType<Point> POINT = new ValueType<>("a point \"x y z\"", text -> {
+        double[] d = numbers(text, 3, 3);
+        return new Point(d[0], d[1], d[2]);
+    });
+    static final ValueType<Vector> VECTOR = new ValueType<>("a non-zero vector \"x y z\"", text -> {
+        double[] d = numbers(text, 3, 3);
+        if (d[0] == 0 && d[1] == 0 && d[2] == 0) throw new IllegalArgumentException("the zero vector has no direction");
+        return new Vector(d[0], d[1], d[2]);
+    });
+    static final ValueType<Color> COLOR = new ValueType<>("a colour \"r g b\" of numbers ≥ 0 (255 is full)", text -> {
+        double[] d = numbers(text, 3, 3);
+        for (double c : d)
+            if (c < 0) throw new IllegalArgumentException("colour component " + format(c) + " is negative");
+        return new Color(d[0], d[1], d[2]);
+    });
+    /** A coefficient for all three channels ("0.5") or one per channel ("0.5 0.7 0.6"). */
+    static final ValueType<Double3> COEFFICIENTS = new ValueType<>("a number or a triple \"r g b\"", text -> {
+        double[] d = numbers(text, 1, 3);
+        return d.length == 1 ? new Double3(d[0]) : new Double3(d[0], d[1], d[2]);
+    });
+    /** Two positive numbers "width height", or one for a square. */
+    static final ValueType<double[]> SIZE = new ValueType<>("\"width height\" or one number for a square, positive", text -> {
+        double[] d = numbers(text, 1, 2);
+        for (double v : d)
+            if (!(v > 0)) throw new IllegalArgumentException(format(v) + " is not positive");
+        return d.length == 1 ? new double[] { d[0], d[0] } : d;
+    });
+    /** Two integers ≥ 1 "columns rows", or one for a square grid. */
+    static final ValueType<int[]> GRID = new ValueType<>("\"columns rows\" or one integer for a square grid, each ≥ 1", text -> {
+        String[] tokens = tokens(text, 1, 2);
+        int[] grid = new int[2];
+        for (int i = 0; i < 2; ++i) {
+            grid[i] = integer(tokens[Math.min(i, tokens.length - 1)]);
+            if (grid[i] < 1) throw new IllegalArgumentException(grid[i] + " is less than 1");
+        }
+        return grid;
+    });
+
+    T parse(String text) {
+        return parser.parse(text);
+    }
+
+    /**
+     * This type narrowed by a check, typically the library's own validating setter, so that its
+     * rule and its message are not repeated here.
+     *
+     * @param narrower what a valid value looks like now
+     * @param check    throws IllegalArgumentException for a value it refuses
+     */
+    ValueType<T> narrowedBy(String narrower, Consumer<T> check) {
+        return new ValueType<>(narrower, text -> {
+            T value = parse(text);
+            check.accept(value);
+            return value;
+        });
+    }
+
+    /** Enum constants by name, case-insensitive ("adaptive" or "ADAPTIVE"). */
+    static <E extends Enum<E>> ValueType<E> enumeration(Class<E> type) {
+        E[] constants = type.getEnumConstants();
+        String names = Arrays.stream(constants).map(c -> c.name().toLowerCase(Locale.ROOT)).collect(Collectors.joining(", "));
+        return new ValueType<>("one of: " + names, text -> {
+            for (E c : constants)
+                if (c.name().equalsIgnoreCase(text.strip())) return c;
+            throw new IllegalArgumentException("'" + text.strip() + "' is not a known value");
+        });
+    }
+
+    /** A strict decimal number, finite. */
+    static double number(String text) {
+        String t = text.strip();
+        if (t.isEmpty()) throw new IllegalArgumentException("the value is empty");
+        if (NON_FINITE.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not a finite number");
+        if (!DECIMAL.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not a number");
+        double d = Double.parseDouble(t); // locale-independent by specification
+        if (!Double.isFinite(d)) throw new IllegalArgumentException("'" + t + "' is not a finite number (too large)");
+        return d;
+    }
+
+    private static int integer(String text) {
+        String t = text.strip();
+        if (!INTEGER_TEXT.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not an integer");
+        try {
+            return Integer.parseInt(t);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(t + " is too large", e);
+        }
+    }
+
+    /** Between {@code min} and {@code max} numbers separated by white space; min == max: exactly that many. */
+    private static double[] numbers(String text, int min, int max) {
+        String[] tokens = tokens(text, min, max);
+        double[] d = new double[tokens.length];
+        for (int i = 0; i < tokens.length; ++i) d[i] = number(tokens[i]);
+        return d;
+    }
+
+    private static String[] tokens(String text, int min, int max) {
+        String t = text.strip();
+        String[] tokens = t.isEmpty() ? new String[0] : t.split("\\s+");
+        if (tokens.length < min || tokens.length > max || (tokens.length > min && tokens.length < max))
+            throw new IllegalArgumentException("found " + tokens.length + (tokens.length == 1 ? " value" : " values")
+                    + " where " + (min == max ? String.valueOf(min) : min + " or " + max) + " are needed");
+        return tokens;
+    }
+
+    /** A double as the user most likely wrote it: "50" rather than "50.0". */
+    static String format(double d) {
+        return d == Math.rint(d) && Math.abs(d) < 1e15 ? String.valueOf((long) d) : String.valueOf(d);
+    }
+}

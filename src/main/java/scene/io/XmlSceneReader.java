@@ -1,0 +1,435 @@
+package scene.io;
+
+import static scene.io.ValueType.BOOLEAN;
+import static scene.io.ValueType.COEFFICIENTS;
+import static scene.io.ValueType.COLOR;
+import static scene.io.ValueType.GRID;
+import static scene.io.ValueType.INTEGER;
+import static scene.io.ValueType.LONG;
+import static scene.io.ValueType.NON_NEGATIVE;
+import static scene.io.ValueType.POINT;
+import static scene.io.ValueType.POSITIVE;
+import static scene.io.ValueType.POSITIVE_INTEGER;
+import static scene.io.ValueType.SIZE;
+import static scene.io.ValueType.TEXT;
+import static scene.io.ValueType.VECTOR;
+
+import java.io.IOException;
+import java.nio.ByteBuffer;
+import java.nio.CharBuffer;
+import java.nio.charset.CoderResult;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.AccessDeniedException;
+import java.nio.file.FileSystemException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.MissingResourceException;
+
+import geometries.Cylinder;
+import geometries.Geometry;
+import geometries.Plane;
+import geometries.Polygon;
+import geometries.Sphere;
+import geometries.Triangle;
+import geometries.Tube;
+import lighting.AmbientLight;
+import lighting.DirectionalLight;
+import lighting.LightSource;
+import lighting.PointLight;
+import lighting.SpotLight;
+import primitives.Color;
+import primitives.Double3;
+import primitives.Material;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Vector;
+import renderer.AntiAliasing;
+import renderer.Camera;
+import scene.Scene;
+
+/**
+ * Reads a scene file (the format is described in docs/scene-format.md) into a {@link Scene}, a
+ * camera builder and {@link RenderSettings}. The course's scene files read unchanged:
+ * {@code <scene background-color="75 127 90"><ambient-light color="255 191 191"/><geometries>
+ * <sphere center="0 0 -100" radius="50"/>…}.
+ *
+ * <p>The reader builds everything through the library's public API; geometry classes know
+ * nothing about XML. It is strict: an unknown element or attribute, a missing or malformed value,
+ * or a value the library refuses stops the reading with a {@link SceneFormatException} that
+ * names the file, line and column and says what was expected. Nothing is guessed.
+ */
+public final class XmlSceneReader {
+    private static final List<String> SCENE_CHILDREN = List.of("ambient-light", "geometries", "lights", "camera",
+            "image", "render");
+    private static final List<String> GEOMETRIES = List.of("sphere", "plane", "polygon", "triangle", "tube",
+            "cylinder", "mesh");
+    private static final List<String> LIGHTS = List.of("directional-light", "point-light", "spot-light");
+    private static final List<String> RENDER_CHILDREN = List.of("anti-aliasing", "depth-of-field");
+    /** Attributes a schema-aware editor adds to the root; they do not concern the scene. */
+    private static final List<String> SCHEMA_ATTRIBUTES = List.of("xmlns:xsi", "xsi:noNamespaceSchemaLocation");
+
+    // Settings validated by the library's own setters, so the rules live in one place.
+    private static final ValueType<Integer> THREADS = INTEGER.narrowedBy(
+            "0 (the calling thread), a number of threads, or -2 (all cores)",
+            n -> Camera.getBuilder().setMultithreading(n));
+    private static final ValueType<Integer> ADAPTIVE_DEPTH = INTEGER.narrowedBy("an integer from 1 to 6",
+            d -> Camera.getBuilder().setAdaptive(d, 0));
+    private static final ValueType<Integer> SHININESS = INTEGER.narrowedBy("an integer ≥ 0",
+            n -> new Material().setShininess(n));
+
+    private final Path file;
+    private final String fileName;
+
+    private XmlSceneReader(Path file) {
+        this.file = file;
+        this.fileName = file.toString();
+    }
+
+    /**
+     * Reads a scene file (UTF-8). Mesh files are found relative to the scene file's folder.
+     *
+     * @throws IOException          when the file cannot be read
+     * @throws SceneFormatException when its content is not a valid scene (the message names the
+     *                              place and what was expected)
+     */
+    public static LoadedScene read(Path file) throws IOException, SceneFormatException {
+        String text = decodeUtf8(Files.readAllBytes(file), file.toString());
+        if (text.startsWith("\uFEFF")) text = text.substring(1); // a byte-order mark is not content
+        XmlSceneReader reader = new XmlSceneReader(file);
+        return reader.scene(XmlTreeBuilder.parse(text, reader.fileName));
+    }
+
+    /**
+     * Decodes strictly: the parser is given text, so bytes that are not UTF-8 are reported here,
+     * at their line and column.
+     */
+    private static String decodeUtf8(byte[] bytes, String fileName) throws SceneFormatException {
+        ByteBuffer in = ByteBuffer.wrap(bytes);
+        CharBuffer out = CharBuffer.allocate(bytes.length); // UTF-8 never decodes to more chars than bytes
+        CoderResult result = StandardCharsets.UTF_8.newDecoder().onMalformedInput(CodingErrorAction.REPORT)
+                .onUnmappableCharacter(CodingErrorAction.REPORT).decode(in, out, true);
+        if (result.isError()) {
+            String before = out.flip().toString();
+            SourceText decoded = new SourceText(before);
+            int line = decoded.line(before.length());
+            throw new SceneFormatException(fileName, line, decoded.column(before.length()),
+                    "bytes that are not UTF-8 (expected an XML scene file encoded in UTF-8)");
+        }
+        return out.flip().toString();
+    }
+
+    private LoadedScene scene(XmlElement root) throws SceneFormatException {
+        if (!root.name().equals("scene"))
+            throw root.error("the root element is <" + root.name() + "> (expected <scene>)");
+        List<String> allowed = new ArrayList<>(List.of("name", "background-color"));
+        allowed.addAll(SCHEMA_ATTRIBUTES);
+        root.allowAttributes(allowed);
+        Scene scene = new Scene(root.optional("name", TEXT, defaultName()));
+        scene.setBackground(root.optional("background-color", COLOR, Color.BLACK));
+
+        Map<String, XmlElement> parts = uniqueChildren(root, SCENE_CHILDREN);
+        XmlElement part;
+        if ((part = parts.get("ambient-light")) != null) scene.setAmbientLight(ambientLight(part));
+        if ((part = parts.get("geometries")) != null) geometries(part, scene);
+        if ((part = parts.get("lights")) != null) lights(part, scene);
+        RenderSettings settings = RenderSettings.defaults(scene.name);
+        if ((part = parts.get("image")) != null) settings = image(part, settings);
+        if ((part = parts.get("render")) != null) settings = render(part, settings);
+        Camera.Builder camera = (part = parts.get("camera")) != null ? camera(part, settings, scene) : null;
+        return new LoadedScene(scene, camera, settings, camera != null ? null
+                : root.error("the scene has no <camera> (expected a <camera> element inside <scene> to render it)"));
+    }
+
+    /** The scene's name when the file gives none: the file name without its extension. */
+    private String defaultName() {
+        String name = file.getFileName() == null ? "scene" : file.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        return dot > 0 ? name.substring(0, dot) : name;
+    }
+
+    /**
+     * The children of {@code parent}, each allowed at most once.
+     */
+    private static Map<String, XmlElement> uniqueChildren(XmlElement parent, List<String> allowed)
+            throws SceneFormatException {
+        Map<String, XmlElement> parts = new HashMap<>();
+        for (XmlElement child : parent.children()) {
+            expectKnown(child, parent, allowed);
+            if (parts.putIfAbsent(child.name(), child) != null)
+                throw child.error("a second <" + child.name() + "> in <" + parent.name() + "> (expected at most one, the first is at line "
+                        + parts.get(child.name()).line() + ")");
+        }
+        return parts;
+    }
+
+    private static void expectKnown(XmlElement child, XmlElement parent, List<String> allowed)
+            throws SceneFormatException {
+        if (!allowed.contains(child.name()))
+            throw child.error("unknown element <" + child.name() + "> in <" + parent.name() + "> (expected "
+                    + (allowed.isEmpty() ? "no child elements" : "one of: " + String.join(", ", allowed)) + ")");
+    }
+
+    private static void noChildren(XmlElement element) throws SceneFormatException {
+        if (!element.children().isEmpty()) expectKnown(element.children().get(0), element, List.of());
+    }
+
+    // ---------------------------------------------------------------- lights
+
+    /** The course writes only the colour; kA defaults to 1 as in its Java scenes. */
+    private static AmbientLight ambientLight(XmlElement e) throws SceneFormatException {
+        e.allowAttributes(List.of("color", "ka"));
+        noChildren(e);
+        return new AmbientLight(e.required("color", COLOR), e.optional("ka", COEFFICIENTS, Double3.ONE));
+    }
+
+    private static void lights(XmlElement lights, Scene scene) throws SceneFormatException {
+        lights.allowAttributes(List.of());
+        for (XmlElement e : lights.children()) {
+            expectKnown(e, lights, LIGHTS);
+            noChildren(e);
+            scene.lights.add(light(e));
+        }
+    }
+
+    private static LightSource light(XmlElement e) throws SceneFormatException {
+        switch (e.name()) {
+            case "directional-light" -> {
+                e.allowAttributes(List.of("color", "direction"));
+                return new DirectionalLight(e.required("color", COLOR), e.required("direction", VECTOR));
+            }
+            case "point-light" -> {
+                e.allowAttributes(List.of("color", "position", "kc", "kl", "kq", "radius"));
+                PointLight light = new PointLight(e.required("color", COLOR), e.required("position", POINT));
+                attenuation(e, light);
+                return light;
+            }
+            default -> { // spot-light
+                e.allowAttributes(List.of("color", "position", "direction", "kc", "kl", "kq", "radius", "narrow-beam"));
+                SpotLight light = new SpotLight(e.required("color", COLOR), e.required("position", POINT),
+                        e.required("direction", VECTOR));
+                attenuation(e, light);
+                e.ifPresent("narrow-beam", POSITIVE, light::setNarrowBeam);
+                return light;
+            }
+        }
+    }
+
+    private static void attenuation(XmlElement e, PointLight light) throws SceneFormatException {
+        e.ifPresent("kc", NON_NEGATIVE, light::setKc);
+        e.ifPresent("kl", NON_NEGATIVE, light::setKl);
+        e.ifPresent("kq", NON_NEGATIVE, light::setKq);
+        e.ifPresent("radius", NON_NEGATIVE, light::setRadius);
+    }
+
+    // ---------------------------------------------------------------- geometries
+
+    private void geometries(XmlElement geometries, Scene scene) throws SceneFormatException {
+        geometries.allowAttributes(List.of());
+        for (XmlElement e : geometries.children()) {
+            expectKnown(e, geometries, GEOMETRIES);
+            Geometry geometry = geometry(e);
+            geometry.setEmission(e.optional("emission", COLOR, Color.BLACK));
+            Map<String, XmlElement> parts = uniqueChildren(e, List.of("material"));
+            if (parts.containsKey("material")) geometry.setMaterial(material(parts.get("material")));
+            scene.geometries.add(geometry);
+        }
+    }
+
+    /** The shape itself (emission and material are common to all and set by the caller). */
+    private Geometry geometry(XmlElement e) throws SceneFormatException {
+        switch (e.name()) {
+            case "sphere" -> {
+                e.allowAttributes(List.of("center", "radius", "emission"));
+                Point center = e.required("center", POINT);
+                double radius = e.required("radius", POSITIVE);
+                return construct(e, "a center and a positive radius", () -> new Sphere(center, radius));
+            }
+            case "plane" -> {
+                e.allowAttributes(List.of("p0", "p1", "p2", "point", "normal", "emission"));
+                if (e.has("point") || e.has("normal")) {
+                    for (String p : List.of("p0", "p1", "p2"))
+                        if (e.has(p))
+                            throw e.errorAt(p, "<plane> takes either p0, p1, p2 or point and normal, not both"
+                                    + " (expected one of the two forms)");
+                    Point q = e.required("point", POINT);
+                    Vector normal = e.required("normal", VECTOR);
+                    return construct(e, "a point and a non-zero normal", () -> new Plane(q, normal));
+                }
+                Point[] p = vertices(e, 3);
+                return construct(e, "three distinct points not on one line", () -> new Plane(p[0], p[1], p[2]));
+            }
+            case "triangle" -> {
+                e.allowAttributes(List.of("p0", "p1", "p2", "emission"));
+                Point[] p = vertices(e, 3);
+                return construct(e, "three distinct points not on one line", () -> new Triangle(p[0], p[1], p[2]));
+            }
+            case "polygon" -> {
+                int n = 0;
+                while (e.has("p" + n)) ++n;
+                List<String> allowed = new ArrayList<>();
+                for (int i = 0; i <= Math.max(n, 2); ++i) allowed.add("p" + i);
+                allowed.add("emission");
+                e.allowAttributes(allowed);
+                Point[] p = vertices(e, Math.max(n, 3));
+                return construct(e, "at least 3 vertices p0, p1, p2, … of a convex planar polygon, in order",
+                        () -> new Polygon(p));
+            }
+            case "tube" -> {
+                e.allowAttributes(List.of("radius", "origin", "axis", "emission"));
+                double radius = e.required("radius", POSITIVE);
+                Ray axis = new Ray(e.required("origin", POINT), e.required("axis", VECTOR));
+                return construct(e, "a positive radius, a point on the axis and the axis direction",
+                        () -> new Tube(radius, axis));
+            }
+            case "mesh" -> {
+                e.allowAttributes(List.of("file", "emission"));
+                return mesh(e);
+            }
+            default -> { // cylinder
+                e.allowAttributes(List.of("radius", "origin", "axis", "height", "emission"));
+                double radius = e.required("radius", POSITIVE);
+                Ray axis = new Ray(e.required("origin", POINT), e.required("axis", VECTOR));
+                double height = e.required("height", POSITIVE);
+                return construct(e, "a positive radius, the centre of the base, the axis direction and a positive height",
+                        () -> new Cylinder(radius, axis, height));
+            }
+        }
+    }
+
+    /**
+     * A triangle mesh from an OBJ file, whose path is relative to the scene file's folder (or
+     * absolute). A missing or malformed OBJ file is reported at the {@code file} attribute.
+     */
+    private Geometry mesh(XmlElement e) throws SceneFormatException {
+        String expected = "an OBJ file; a relative path starts at the scene file's folder";
+        Path obj = file.resolveSibling(e.required("file", TEXT));
+        try {
+            return ObjReader.read(obj);
+        } catch (ObjFormatException ex) {
+            throw e.errorAt("file", e.quote("file") + ": " + ex.getMessage() + " (expected " + expected + ")", ex);
+        } catch (IOException ex) {
+            throw e.errorAt("file", e.quote("file") + ": cannot read " + obj + ": " + why(ex) + " (expected " + expected + ")", ex);
+        }
+    }
+
+    /** The reason a file could not be read, in a few words. */
+    static String why(IOException e) {
+        if (e instanceof NoSuchFileException) return "no such file";
+        if (e instanceof AccessDeniedException) return "access denied";
+        if (e instanceof FileSystemException f && f.getReason() != null) return f.getReason();
+        return e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
+    }
+
+    /** Required attributes p0 … p(n-1). */
+    private static Point[] vertices(XmlElement e, int n) throws SceneFormatException {
+        Point[] p = new Point[n];
+        for (int i = 0; i < n; ++i) p[i] = e.required("p" + i, POINT);
+        return p;
+    }
+
+    /** A shape constructor whose IllegalArgumentException becomes a message at the element. */
+    @FunctionalInterface
+    private interface Construction {
+        Geometry build();
+    }
+
+    private static Geometry construct(XmlElement e, String expected, Construction construction)
+            throws SceneFormatException {
+        try {
+            return construction.build();
+        } catch (IllegalArgumentException ex) {
+            throw e.error("invalid <" + e.name() + ">: " + ex.getMessage() + " (expected " + expected + ")", ex);
+        }
+    }
+
+    private static Material material(XmlElement e) throws SceneFormatException {
+        e.allowAttributes(List.of("kd", "ks", "kt", "kr", "shininess", "reflection-spread", "transmission-spread"));
+        noChildren(e);
+        Material m = new Material();
+        e.ifPresent("kd", COEFFICIENTS, m::setKd);
+        e.ifPresent("ks", COEFFICIENTS, m::setKs);
+        e.ifPresent("kt", COEFFICIENTS, m::setKt);
+        e.ifPresent("kr", COEFFICIENTS, m::setKr);
+        e.ifPresent("shininess", SHININESS, m::setShininess);
+        e.ifPresent("reflection-spread", NON_NEGATIVE, m::setReflectionSpread);
+        e.ifPresent("transmission-spread", NON_NEGATIVE, m::setTransmissionSpread);
+        return m;
+    }
+
+    // ---------------------------------------------------------------- image, render, camera
+
+    private static RenderSettings image(XmlElement e, RenderSettings s) throws SceneFormatException {
+        e.allowAttributes(List.of("name", "width", "height", "grid-interval", "grid-color"));
+        noChildren(e);
+        s = s.withImage(e.optional("name", TEXT, s.imageName()), e.optional("width", POSITIVE_INTEGER, s.width()),
+                e.optional("height", POSITIVE_INTEGER, s.height()));
+        return s.withGrid(e.optional("grid-interval", POSITIVE_INTEGER, 0), e.optional("grid-color", COLOR, s.gridColor()));
+    }
+
+    private static RenderSettings render(XmlElement e, RenderSettings s) throws SceneFormatException {
+        e.allowAttributes(List.of("threads", "seed", "bvh", "beam-size", "shadow-samples"));
+        s = s.withThreads(e.optional("threads", THREADS, s.threads())).withSeed(e.optional("seed", LONG, s.seed()))
+                .withTracer(e.optional("bvh", BOOLEAN, s.bvh()), e.optional("beam-size", POSITIVE_INTEGER, s.beamSize()),
+                        e.optional("shadow-samples", POSITIVE_INTEGER, s.shadowSamples()));
+        Map<String, XmlElement> parts = uniqueChildren(e, RENDER_CHILDREN);
+        XmlElement aa = parts.get("anti-aliasing");
+        if (aa != null) {
+            aa.allowAttributes(List.of("mode", "grid", "depth", "threshold"));
+            noChildren(aa);
+            int[] grid = aa.optional("grid", GRID, new int[] { s.aaColumns(), s.aaRows() });
+            s = s.withAntiAliasing(aa.required("mode", ValueType.enumeration(AntiAliasing.class)))
+                    .withAntiAliasingParameters(grid[0], grid[1], aa.optional("depth", ADAPTIVE_DEPTH, s.adaptiveDepth()),
+                            aa.optional("threshold", NON_NEGATIVE, s.adaptiveThreshold()));
+        }
+        XmlElement dof = parts.get("depth-of-field");
+        if (dof != null) {
+            dof.allowAttributes(List.of("focal-distance", "aperture", "samples"));
+            noChildren(dof);
+            s = s.withDepthOfField(dof.required("focal-distance", POSITIVE), dof.required("aperture", NON_NEGATIVE),
+                    dof.optional("samples", POSITIVE_INTEGER, s.dofSamples()));
+        }
+        return s;
+    }
+
+    private static Camera.Builder camera(XmlElement e, RenderSettings settings, Scene scene)
+            throws SceneFormatException {
+        e.allowAttributes(List.of("location", "direction", "up", "target", "vp-size", "vp-distance"));
+        noChildren(e);
+        Camera.Builder camera = Camera.getBuilder().setLocation(e.required("location", POINT));
+        if (e.has("direction") && e.has("target"))
+            throw e.errorAt("target", "<camera> takes either direction and up, or target, not both"
+                    + " (expected one of the two forms)");
+        if (e.has("direction")) {
+            Vector to = e.required("direction", VECTOR);
+            Vector up = e.required("up", VECTOR);
+            try {
+                camera.setDirection(to, up);
+            } catch (IllegalArgumentException ex) {
+                throw e.errorAt("up", "invalid <camera>: " + ex.getMessage()
+                        + " (expected an up vector orthogonal to the direction)");
+            }
+        } else if (e.has("target")) {
+            Point target = e.required("target", POINT);
+            if (e.has("up")) camera.setDirection(target, e.required("up", VECTOR));
+            else camera.setDirection(target);
+        } else {
+            throw e.error("<camera> is missing its view direction (expected attributes direction and up, or target)");
+        }
+        double[] size = e.required("vp-size", SIZE);
+        camera.setVpSize(size[0], size[1]).setVpDistance(e.required("vp-distance", POSITIVE));
+        try {
+            settings.applyTo(camera, scene);
+            camera.build(); // the checks that need every part: target at the location, up along the view
+        } catch (IllegalArgumentException | MissingResourceException ex) {
+            throw e.error("invalid <camera>: " + ex.getMessage()
+                    + " (expected a target away from the location and an up not along the view direction)", ex);
+        }
+        return camera;
+    }
+}

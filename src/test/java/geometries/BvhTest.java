@@ -1,0 +1,412 @@
+package geometries;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+import geometries.Hits.Visit;
+import primitives.Double3;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * The BVH must be invisible: for any scene and any ray it answers exactly what the flat
+ * {@link Geometries} answers (same geometry, same distance, same hits), only faster. Checked on
+ * random scenes with fixed seeds, and on the degenerate scenes a builder gets wrong.
+ */
+class BvhTest {
+
+    /** A scene with a readable name for the parameterized tests. */
+    record Scene(String name, Geometries geometries, Point centre, double half) {
+        @Override
+        public String toString() {
+            return name;
+        }
+    }
+
+    static Stream<Arguments> randomScenes() {
+        return Stream.of(
+                Arguments.of(scene("200 shapes spread out", 1, 200, 50, 4, false)),
+                Arguments.of(scene("80 overlapping shapes", 2, 80, 8, 4, false)),
+                Arguments.of(scene("400 small shapes with planes and tubes beside the tree", 3, 400, 30, 1.5, true)));
+    }
+
+    private static Scene scene(String name, long seed, int count, double half, double size, boolean unbounded) {
+        Random rnd = new Random(seed);
+        Geometries g = new Geometries();
+        for (Geometry shape : RandomScenes.boundedShapes(rnd, count, Point.ZERO, half, size)) g.add(shape);
+        if (unbounded) {
+            g.add(RandomScenes.withMaterial(rnd, new Plane(new Point(0, 0, -half), new Vector(0.1, 0, 1))),
+                    RandomScenes.withMaterial(rnd, new Tube(2, new Ray(new Point(0, half / 2, 0), new Vector(1, 0.2, 0)))),
+                    RandomScenes.withMaterial(rnd, new Plane(new Point(half * 0.8, 0, 0), new Vector(-1, 0, 0))));
+        }
+        return new Scene(name, g, Point.ZERO, half);
+    }
+
+    private static final int RAYS = 1500;
+
+    /** Asserts the tree and the flat list give the same closest hit: same geometry, bit-identical t. */
+    private static void assertSameClosestHits(Intersectable tree, Intersectable flat, List<Ray> rays) {
+        int hits = 0;
+        for (Ray ray : rays) {
+            Visit expected = Hits.closest(flat, ray, Double.POSITIVE_INFINITY);
+            Visit actual = Hits.closest(tree, ray, Double.POSITIVE_INFINITY);
+            if (expected == null) {
+                assertThat(actual).as("closest hit through the tree for %s (flat: none)", ray).isNull();
+                continue;
+            }
+            ++hits;
+            assertThat(actual).as("closest hit through the tree for %s (flat: %s)", ray, expected).isNotNull();
+            assertThat(actual.geometry()).as("closest geometry for %s", ray).isSameAs(expected.geometry());
+            // The tree calls the same primitive test on the same ray: the distance is the same number.
+            assertThat(actual.t()).as("closest distance for %s", ray).isEqualTo(expected.t());
+        }
+        assertThat(hits).as("rays that hit something (the test must not be vacuous)").isGreaterThan(rays.size() / 10);
+    }
+
+    /** The shadow-ray walk: the product of kT of every occluder within maxDistance. */
+    private static final class Transparency implements HitVisitor {
+        double r = 1, g = 1, b = 1;
+        int visits;
+        private final double stopBelow;
+
+        Transparency(double stopBelow) {
+            this.stopBelow = stopBelow;
+        }
+
+        @Override
+        public boolean visit(Geometry geometry, double t) {
+            Double3 kT = geometry.getMaterial().kT;
+            r *= kT.getD1();
+            g *= kT.getD2();
+            b *= kT.getD3();
+            ++visits;
+            return !(r < stopBelow && g < stopBelow && b < stopBelow);
+        }
+    }
+
+    @Nested
+    @DisplayName("random scenes: the tree answers exactly as the flat list")
+    class AgainstTheFlatList {
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#randomScenes")
+        @DisplayName("closest hit: same geometry and same t")
+        void closestHit(Scene scene) {
+            Bvh tree = Bvh.build(scene.geometries());
+            assertSameClosestHits(tree, scene.geometries(), RandomScenes.rays(new Random(100), RAYS, scene.centre(), scene.half()));
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#randomScenes")
+        @DisplayName("shadow transparency: the same kT product within maxDistance, and the same early stop")
+        void transparencyProduct(Scene scene) {
+            Bvh tree = Bvh.build(scene.geometries());
+            Random rnd = new Random(200);
+            int occluded = 0, stopped = 0;
+            for (Ray ray : RandomScenes.rays(new Random(201), RAYS, scene.centre(), scene.half())) {
+                double max = 3 * scene.half() * rnd.nextDouble();
+                Transparency flat = new Transparency(-1), viaTree = new Transparency(-1);
+                scene.geometries().visitHits(ray, max, flat);
+                tree.visitHits(ray, max, viaTree);
+                assertThat(viaTree.visits).as("occluders of %s within %s", ray, max).isEqualTo(flat.visits);
+                assertThat(new double[] { viaTree.r, viaTree.g, viaTree.b }).as("kT product for %s within %s", ray, max)
+                        .containsExactly(new double[] { flat.r, flat.g, flat.b }, org.assertj.core.data.Offset.offset(1e-12));
+                if (flat.visits > 0) ++occluded;
+
+                // With a threshold the walk stops as soon as the product falls below it; the order of the
+                // occluders differs, but since every kT ≤ 1 whether it stops at all does not.
+                Transparency flatStop = new Transparency(0.4), treeStop = new Transparency(0.4);
+                boolean flatDone = scene.geometries().visitHits(ray, max, flatStop);
+                boolean treeDone = tree.visitHits(ray, max, treeStop);
+                assertThat(treeDone).as("walk completed for %s within %s", ray, max).isEqualTo(flatDone);
+                if (!flatDone) ++stopped;
+            }
+            assertThat(occluded).as("occluded rays").isGreaterThan(RAYS / 10);
+            assertThat(stopped).as("walks stopped early").isPositive();
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#randomScenes")
+        @DisplayName("visitHits: the same multiset of (geometry, t)")
+        void visitHits(Scene scene) {
+            Bvh tree = Bvh.build(scene.geometries());
+            Random rnd = new Random(300);
+            for (Ray ray : RandomScenes.rays(new Random(301), RAYS, scene.centre(), scene.half())) {
+                double max = rnd.nextBoolean() ? Double.POSITIVE_INFINITY : 3 * scene.half() * rnd.nextDouble();
+                Hits.assertSameVisits(Hits.visited(tree, ray, max), Hits.visited(scene.geometries(), ray, max), 0,
+                        "tree vs flat walk within " + max + " for " + ray);
+            }
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#randomScenes")
+        @DisplayName("the build is deterministic: the same scene gives the same tree")
+        void deterministicBuild(Scene scene) {
+            Bvh first = Bvh.build(scene.geometries()), second = Bvh.build(scene.geometries());
+            assertThat(second.nodeCount()).isEqualTo(first.nodeCount());
+            assertThat(second.depth()).isEqualTo(first.depth());
+            assertThat(second.primitiveTotal()).isEqualTo(first.primitiveTotal());
+            // The same tree walks the same leaves in the same order: identical visit sequences.
+            for (Ray ray : RandomScenes.rays(new Random(400), 200, scene.centre(), scene.half())) {
+                List<Visit> a = new ArrayList<>(), b = new ArrayList<>();
+                first.visitHits(ray, Double.POSITIVE_INFINITY, (g, t) -> a.add(new Visit(g, t)));
+                second.visitHits(ray, Double.POSITIVE_INFINITY, (g, t) -> b.add(new Visit(g, t)));
+                assertThat(b).as("visit order for %s", ray).containsExactlyElementsOf(a);
+            }
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#randomScenes")
+        @DisplayName("the tree is a real hierarchy: every primitive indexed, depth logarithmic")
+        void treeShape(Scene scene) {
+            Bvh tree = Bvh.build(scene.geometries());
+            int bounded = (int) scene.geometries().getItems().stream().filter(g -> g.getBoundingBox() != null).count();
+            assertThat(tree.primitiveTotal()).isEqualTo(bounded);
+            assertThat(tree.unboundedCount()).isEqualTo(scene.geometries().getItems().size() - bounded);
+            assertThat(tree.nodeCount()).isBetween(bounded / 4, 2 * bounded - 1);
+            assertThat(tree.depth()).isLessThanOrEqualTo(4 * (32 - Integer.numberOfLeadingZeros(bounded)));
+        }
+    }
+
+    @Nested
+    @DisplayName("degenerate scenes")
+    class Degenerate {
+        private final List<Ray> rays = RandomScenes.rays(new Random(500), 500, Point.ZERO, 10);
+
+        @Test
+        @DisplayName("an empty scene: no node, no hit on any face")
+        void empty() {
+            Bvh tree = Bvh.build(new Geometries());
+            assertThat(tree.nodeCount()).isZero();
+            assertThat(tree.depth()).isZero();
+            assertThat(tree.primitiveTotal()).isZero();
+            assertThat(tree.getBoundingBox()).isNull();
+            Hits.assertHits(tree, new Ray(Point.ZERO, new Vector(1, 0, 0)));
+        }
+
+        @Test
+        @DisplayName("a scene of empty lists: no node, no hit")
+        void emptyLists() {
+            Bvh tree = Bvh.build(new Geometries(new Geometries(), new Geometries(new Geometries())));
+            assertThat(tree.nodeCount()).isZero();
+            assertThat(tree.unboundedCount()).isZero();
+            Hits.assertHits(tree, new Ray(Point.ZERO, new Vector(1, 0, 0)));
+        }
+
+        @Test
+        @DisplayName("only unbounded geometries: no node, all of them beside the tree")
+        void onlyUnbounded() {
+            Geometries flat = new Geometries(new Plane(new Point(0, 0, -5), new Vector(0, 0, 1)),
+                    new Plane(new Point(0, 7, 0), new Vector(0.2, 1, 0)), new Tube(1, new Ray(new Point(3, 0, 0), new Vector(0, 1, 1))),
+                    new Tube(2, new Ray(new Point(-4, 0, 0), new Vector(0, 0, 1))));
+            Bvh tree = Bvh.build(flat);
+            assertThat(tree.nodeCount()).isZero();
+            assertThat(tree.unboundedCount()).isEqualTo(4);
+            assertThat(tree.getBoundingBox()).isNull();
+            assertSameClosestHits(tree, flat, rays);
+            for (Ray ray : rays)
+                Hits.assertSameVisits(Hits.visited(tree, ray, 12), Hits.visited(flat, ray, 12), 0, "walk for " + ray);
+        }
+
+        @Test
+        @DisplayName("a single primitive: one leaf")
+        void single() {
+            Geometries flat = new Geometries(new Sphere(new Point(1, 2, 3), 2));
+            Bvh tree = Bvh.build(flat);
+            assertThat(tree.nodeCount()).isEqualTo(1);
+            assertThat(tree.depth()).isEqualTo(1);
+            assertSameClosestHits(tree, flat, RandomScenes.rays(new Random(501), 300, new Point(1, 2, 3), 2));
+        }
+
+        /**
+         * Spheres, squares, axis-aligned triangles and cylinders whose boxes are all centred on one
+         * point: no split plane separates the centroids, yet the tree must stay shallow and correct.
+         */
+        @Test
+        @DisplayName("all primitives at one spot (coincident centroids): builds, stays shallow, answers correctly")
+        void coincidentCentroids() {
+            Random rnd = new Random(502);
+            Point c = new Point(1, -1, 2);
+            Geometries flat = new Geometries();
+            for (int i = 0; i < 20; ++i) {
+                flat.add(new Sphere(c, 0.5 + 0.25 * i));
+                double a = 0.3 + 0.2 * i;
+                // Box [-a,a]×[-a,a]×[-k,k] around c; each triangle in its own plane z = (k/a)·x, so
+                // overlapping triangles never tie at the same distance.
+                double k = 0.03 * (i + 1) * a;
+                flat.add(new Triangle(c.add(new Vector(-a, -a, -k)), c.add(new Vector(a, -a, k)), c.add(new Vector(0, a, 0))));
+                Vector n = RandomScenes.direction(rnd);
+                Vector u = n.crossProduct(Vector.AXIS_X).normalize().scale(a), w = n.crossProduct(u);
+                flat.add(new Polygon(c.add(u), c.add(w), c.add(u.scale(-1)), c.add(w.scale(-1))));
+                Vector v = RandomScenes.direction(rnd);
+                double h = 0.5 + 0.3 * i;
+                flat.add(new Cylinder(0.1 + 0.05 * i, new Ray(c.add(v.scale(-h / 2)), v), h));
+            }
+            Bvh tree = Bvh.build(flat);
+            assertThat(tree.primitiveTotal()).isEqualTo(80);
+            assertThat(tree.nodeCount()).as("leaves are bounded in size, so the tree splits").isGreaterThan(1);
+            // Rounding makes the centroids differ in the last bits, so the splits are not exact halves;
+            // the bound only rules out a tree that degenerates towards a list.
+            assertThat(tree.depth()).as("the tree stays shallow").isLessThanOrEqualTo(3 * 7);
+            List<Ray> near = RandomScenes.rays(new Random(503), RAYS, c, 3);
+            assertSameClosestHits(tree, flat, near);
+            for (Ray ray : near.subList(0, 300))
+                Hits.assertSameVisits(Hits.visited(tree, ray, 4), Hits.visited(flat, ray, 4), 0, "walk for " + ray);
+        }
+
+        @Test
+        @DisplayName("nested lists are flattened: every leaf indexed once, same answers")
+        void nestedListsAreFlattened() {
+            Random rnd = new Random(504);
+            List<Geometry> shapes = RandomScenes.boundedShapes(rnd, 40, Point.ZERO, 10, 3);
+            Geometries nested = new Geometries();
+            Geometries level = nested;
+            for (int i = 0; i < shapes.size(); ++i) {
+                if (i % 8 == 0) {
+                    Geometries deeper = new Geometries();
+                    level.add(deeper, new Geometries()); // an empty list beside every level
+                    level = deeper;
+                }
+                level.add(shapes.get(i));
+            }
+            Bvh tree = Bvh.build(nested);
+            assertThat(tree.primitiveTotal()).isEqualTo(40);
+            assertThat(tree.unboundedCount()).isZero();
+            Geometries flat = new Geometries(shapes.toArray(new Intersectable[0]));
+            assertSameClosestHits(tree, flat, rays);
+            assertSameClosestHits(tree, nested, rays);
+        }
+
+        @Test
+        @DisplayName("a tree inside a scene that is itself built into a tree")
+        void treeInsideATree() {
+            Random rnd = new Random(505);
+            Geometries group = new Geometries();
+            for (Geometry g : RandomScenes.boundedShapes(rnd, 60, Point.ZERO, 10, 3)) group.add(g);
+            Geometries others = new Geometries();
+            for (Geometry g : RandomScenes.boundedShapes(rnd, 60, Point.ZERO, 10, 3)) others.add(g);
+            Geometries scene = new Geometries(Bvh.build(group), others);
+            Geometries flat = new Geometries(group, others);
+            Bvh outer = Bvh.build(scene);
+            assertSameClosestHits(outer, flat, rays);
+            assertSameClosestHits(scene, flat, rays); // the inner tree queried through a flat list
+            assertThat(outer.primitiveTotal()).as("the inner tree's shapes are indexed directly").isEqualTo(120);
+            for (Ray ray : rays)
+                Hits.assertSameVisits(Hits.visited(outer, ray, 15), Hits.visited(flat, ray, 15), 0, "walk for " + ray);
+        }
+
+        @Test
+        @DisplayName("axis-aligned shapes hit by axis-parallel rays (signed zero directions, flat boxes)")
+        void axisAlignedRays() {
+            Geometries flat = new Geometries();
+            for (int i = 0; i < 10; ++i)
+                for (int j = 0; j < 10; ++j)
+                    flat.add(new Polygon(new Point(i, j, 0), new Point(i + 1, j, 0), new Point(i + 1, j + 1, 0), new Point(i, j + 1, 0)));
+            flat.add(new Triangle(new Point(0, 0, 3), new Point(10, 0, 3), new Point(0, 10, 3)));
+            Bvh tree = Bvh.build(flat);
+            List<Ray> axial = new ArrayList<>();
+            Random rnd = new Random(506);
+            for (int k = 0; k < 500; ++k) {
+                // Straight down, and straight up as a shadow ray is built (scale(-1) makes -0.0 components).
+                double x = 10 * rnd.nextDouble(), y = 10 * rnd.nextDouble();
+                axial.add(new Ray(new Point(x, y, 5), new Vector(0, 0, -1)));
+                axial.add(new Ray(new Point(x, y, -1), new Vector(0, 0, -1).scale(-1)));
+                axial.add(new Ray(new Point(-1, y, 1.5 * rnd.nextDouble()), new Vector(1, 0, 0)));
+            }
+            assertSameClosestHits(tree, flat, axial);
+            for (Ray ray : axial)
+                Hits.assertSameVisits(Hits.visited(tree, ray, 4), Hits.visited(flat, ray, 4), 0, "walk for " + ray);
+        }
+
+        @Test
+        @DisplayName("the tree's box encloses every bounded shape; none when something is unbounded")
+        void boundingBox() {
+            Geometries shapes = new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(5, -3, 2), 2));
+            BoundingBox b = Bvh.build(shapes).getBoundingBox();
+            assertThat(b.getMinX()).isLessThanOrEqualTo(-1);
+            assertThat(b.getMinY()).isLessThanOrEqualTo(-5);
+            assertThat(b.getMaxZ()).isGreaterThanOrEqualTo(4);
+            assertThat(b.getMaxX()).isCloseTo(7, org.assertj.core.data.Offset.offset(1e-6));
+            shapes.add(new Plane(Point.ZERO, Vector.AXIS_Z));
+            assertThat(Bvh.build(shapes).getBoundingBox()).isNull();
+        }
+    }
+
+    @Nested
+    @DisplayName("contract: a tree of bounded shapes")
+    class BoundedContract implements GeometryContract {
+        private final Bvh tree = Bvh.build(ContractScenes.bounded());
+
+        @Override
+        public Intersectable subject() {
+            return tree;
+        }
+
+        @Override
+        public Ray knownHit() {
+            return ContractScenes.HIT;
+        }
+
+        @Override
+        public Ray knownMiss() {
+            return ContractScenes.MISS;
+        }
+
+        @Override
+        public Point focus() {
+            return ContractScenes.FOCUS;
+        }
+
+        @Override
+        public double extent() {
+            return ContractScenes.EXTENT;
+        }
+    }
+
+    @Nested
+    @DisplayName("contract: a tree of nested lists with planes and tubes beside it")
+    class MixedContract implements GeometryContract {
+        private final Bvh tree = Bvh.build(ContractScenes.mixed());
+
+        @Override
+        public Intersectable subject() {
+            return tree;
+        }
+
+        @Override
+        public Ray knownHit() {
+            return ContractScenes.HIT;
+        }
+
+        @Override
+        public Ray knownMiss() {
+            return ContractScenes.MISS;
+        }
+
+        @Override
+        public Point focus() {
+            return ContractScenes.FOCUS;
+        }
+
+        @Override
+        public double extent() {
+            return ContractScenes.EXTENT;
+        }
+
+        @Override
+        public boolean bounded() {
+            return false;
+        }
+    }
+}

@@ -1,0 +1,357 @@
+package renderer.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+import javax.imageio.ImageIO;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
+
+import primitives.Vector;
+import renderer.AntiAliasing;
+import renderer.Camera;
+import renderer.ImageWriter;
+import renderer.RayTracerBasic;
+import scene.samples.Showcase;
+
+/**
+ * The {@code render} command, run in-process through picocli with captured streams. Renders are
+ * tiny; every image goes to the test's temporary folder.
+ */
+class RenderCommandTest {
+    @TempDir
+    Path dir;
+
+    /** What a run printed and returned. */
+    record Run(int exitCode, String out, String err) {
+        List<String> errLines() {
+            return err.lines().toList();
+        }
+    }
+
+    private static Run run(boolean terminal, String... args) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+        int code = RenderCommand.commandLine(new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8), terminal).execute(args);
+        return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+    }
+
+    private static Run run(String... args) {
+        return run(false, args);
+    }
+
+    /**
+     * A small lit scene, 40×20 pixels, with a sphere edge against the background and a glossy
+     * floor, so that anti-aliasing, seeds and beams all change pixels.
+     */
+    private static final String SMALL = """
+            <scene name="small" background-color="20 30 40">
+                <ambient-light color="255 255 255" ka="0.1"/>
+                <geometries>
+                    <sphere center="0 0 -50" radius="12" emission="200 60 30">
+                        <material kd="0.5" ks="0.5" shininess="30"/>
+                    </sphere>
+                    <plane point="0 -12 0" normal="0 1 0" emission="30 30 30">
+                        <material kd="0.3" kr="0.5" reflection-spread="0.2"/>
+                    </plane>
+                </geometries>
+                <lights>
+                    <point-light color="300 300 300" position="20 30 0" radius="3"/>
+                </lights>
+                <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="40 20" vp-distance="25"/>
+                <image name="small" width="40" height="20"/>
+                <render threads="1" beam-size="3" shadow-samples="3"/>
+            </scene>
+            """;
+
+    private Path write(String name, String xml) throws IOException {
+        Path file = dir.resolve(name);
+        Files.writeString(file, xml);
+        return file;
+    }
+
+    private Path small() throws IOException {
+        return write("small.xml", SMALL);
+    }
+
+    private static BufferedImage image(Path png) throws IOException {
+        BufferedImage image = ImageIO.read(png.toFile());
+        assertThat(image).as("a PNG at " + png).isNotNull();
+        return image;
+    }
+
+    @Nested
+    @DisplayName("--help and --version")
+    class HelpAndVersion {
+        @Test
+        void help() {
+            Run r = run("--help");
+            assertThat(r.exitCode()).isZero();
+            assertThat(r.out()).startsWith("Usage: render ")
+                    .contains("[SCENE]", "--output=FILE", "--width=N", "--height=N", "--threads=N", "--aa=MODE", "--seed=N",
+                            "--quiet", "--version", "NONE, RANDOM, CORNERS, ADAPTIVE", "Exit codes:");
+            assertThat(r.err()).isEmpty();
+        }
+
+        @Test
+        void version() {
+            Run r = run("--version");
+            assertThat(r.exitCode()).isZero();
+            assertThat(r.out()).startsWith("render (raytracer) ");
+        }
+    }
+
+    @Nested
+    @DisplayName("usage errors: exit code 2, a message and a hint, no image")
+    class UsageErrors {
+        @ParameterizedTest(name = "{0}")
+        @ValueSource(strings = { "--width 0", "--height -3", "--threads -1", "--aa fast", "--seed x", "--bogus",
+                "-o out.jpg", "a.xml b.xml" })
+        void usageError(String arguments) throws IOException {
+            List<String> args = new ArrayList<>(List.of(arguments.split(" ")));
+            if (!arguments.startsWith("-o")) args.addAll(List.of("-o", dir.resolve("out.png").toString()));
+            else args.set(1, dir.resolve("out.jpg").toString());
+            Run r = run(args.toArray(String[]::new));
+            assertThat(r.exitCode()).isEqualTo(2);
+            assertThat(r.errLines()).hasSize(2);
+            assertThat(r.errLines().get(0)).startsWith("render: ");
+            assertThat(r.errLines().get(1)).isEqualTo("Try 'render --help' for more information.");
+            assertThat(r.out()).isEmpty();
+            try (Stream<Path> files = Files.list(dir)) {
+                assertThat(files).isEmpty();
+            }
+        }
+
+        @Test
+        @DisplayName("the message names the bad value")
+        void namesTheValue() {
+            assertThat(run("--width", "0").errLines().get(0)).isEqualTo("render: --width must be at least 1, got 0");
+            assertThat(run("--threads", "-1").errLines().get(0)).isEqualTo(
+                    "render: --threads: thread count must be 0 (calling thread), a positive number or -2 (all cores), got -1");
+        }
+    }
+
+    @Nested
+    @DisplayName("bad scene files: exit code 2, one line FILE:LINE:COLUMN, no stack trace, no image")
+    class BadSceneFiles {
+        static Stream<Arguments> badScenes() {
+            String head = "<scene>\n  <geometries>\n    ";
+            String tail = "\n  </geometries>\n  <camera location=\"0 0 0\" target=\"0 0 -1\" vp-size=\"1\" vp-distance=\"1\"/>\n</scene>\n";
+            return Stream.of(
+                    Arguments.of("malformed XML", head + "<sphere center=\"0 0 -100\" radius=\"5\">" + tail, ":4:5: malformed XML"),
+                    Arguments.of("unknown element", head + "<cube center=\"0 0 0\"/>" + tail, ":3:5: unknown element <cube>"),
+                    Arguments.of("unknown attribute", head + "<sphere center=\"0 0 0\" radius=\"5\" size=\"2\"/>" + tail,
+                            ":3:39: unknown attribute 'size' on <sphere>"),
+                    Arguments.of("missing attribute", head + "<sphere radius=\"5\"/>" + tail,
+                            ":3:5: <sphere> is missing attribute 'center'"),
+                    Arguments.of("malformed number", head + "<sphere center=\"0 0 0\" radius=\"5cm\"/>" + tail,
+                            ":3:28: <sphere radius=\"5cm\">: '5cm' is not a number"),
+                    Arguments.of("non-finite number", head + "<sphere center=\"0 0 0\" radius=\"Infinity\"/>" + tail,
+                            ":3:28: <sphere radius=\"Infinity\">: 'Infinity' is not a finite number"),
+                    Arguments.of("collinear triangle", head + "<triangle p0=\"0 0 0\" p1=\"1 0 0\" p2=\"2 0 0\"/>" + tail,
+                            ":3:5: invalid <triangle>: polygon points must not be collinear"),
+                    Arguments.of("missing mesh file", head + "<mesh file=\"teapot.obj\"/>" + tail,
+                            ":3:11: <mesh file=\"teapot.obj\">: cannot read "),
+                    Arguments.of("no camera", "<scene>\n</scene>\n", ":1:1: the scene has no <camera>"));
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("badScenes")
+        void badScene(String name, String xml, String message) throws IOException {
+            Path file = write("bad.xml", xml);
+            Path png = dir.resolve("out.png");
+            Run r = run(file.toString(), "-o", png.toString());
+            assertThat(r.exitCode()).isEqualTo(2);
+            assertThat(r.errLines()).hasSize(1);
+            assertThat(r.errLines().get(0)).startsWith(file + message).contains("(expected ");
+            assertThat(r.err()).doesNotContain("Exception", "\tat ");
+            assertThat(r.out()).isEmpty();
+            assertThat(png).doesNotExist();
+        }
+
+        @Test
+        @DisplayName("a scene file that does not exist")
+        void missingFile() {
+            Path file = dir.resolve("absent.xml");
+            Run r = run(file.toString(), "-o", dir.resolve("out.png").toString());
+            assertThat(r.exitCode()).isEqualTo(2);
+            assertThat(r.errLines()).containsExactly(
+                    file + ": cannot read the scene file: no such file (expected a readable XML scene file)");
+        }
+    }
+
+    @Nested
+    @DisplayName("options override the file's settings")
+    class Overrides {
+        @Test
+        @DisplayName("without options, the file's size, name and settings")
+        void fileSettings() throws IOException {
+            Path png = dir.resolve("out.png");
+            Run r = run(small().toString(), "-o", png.toString());
+            assertThat(r.exitCode()).isZero();
+            assertThat(r.out()).contains("render small 40x20 [NONE, bvh on, beam 3, shadow samples 3, seed 0]")
+                    .contains("1 threads").contains("wrote " + png + " (40x20)");
+            assertThat(image(png).getWidth()).isEqualTo(40);
+            assertThat(image(png).getHeight()).isEqualTo(20);
+        }
+
+        @Test
+        @DisplayName("--width and --height set the image size")
+        void size() throws IOException {
+            Path png = dir.resolve("out.png");
+            assertThat(run(small().toString(), "-o", png.toString(), "--width", "12", "--height", "9").exitCode()).isZero();
+            assertThat(new int[] { image(png).getWidth(), image(png).getHeight() }).containsExactly(12, 9);
+        }
+
+        @Test
+        @DisplayName("--width alone keeps the file's aspect ratio")
+        void widthAlone() throws IOException {
+            Path png = dir.resolve("out.png");
+            assertThat(run(small().toString(), "-o", png.toString(), "--width", "10").exitCode()).isZero();
+            assertThat(new int[] { image(png).getWidth(), image(png).getHeight() }).containsExactly(10, 5);
+        }
+
+        @Test
+        @DisplayName("--aa changes the sampling: RANDOM with the default 4×4 grid takes 16 samples a pixel")
+        void antiAliasing() throws IOException {
+            Path none = dir.resolve("none.png"), random = dir.resolve("random.png");
+            Run plain = run(small().toString(), "-o", none.toString());
+            Run aa = run(small().toString(), "-o", random.toString(), "--aa", "random");
+            assertThat(plain.out()).contains("(1.00 per px)");
+            assertThat(aa.out()).contains("[RANDOM 4x4,").contains("(16.00 per px)");
+            assertThat(Files.mismatch(none, random)).as("the images differ").isNotEqualTo(-1);
+        }
+
+        @Test
+        @DisplayName("--seed: the same seed gives the same image, another seed another")
+        void seed() throws IOException {
+            Path a = dir.resolve("a.png"), b = dir.resolve("b.png"), c = dir.resolve("c.png");
+            assertThat(run(small().toString(), "-o", a.toString(), "--aa", "random", "--seed", "1").exitCode()).isZero();
+            assertThat(run(small().toString(), "-o", b.toString(), "--aa", "random", "--seed", "1").exitCode()).isZero();
+            Run other = run(small().toString(), "-o", c.toString(), "--aa", "random", "--seed", "2");
+            assertThat(other.out()).contains("seed 2]");
+            assertThat(Files.mismatch(a, b)).isEqualTo(-1);
+            assertThat(Files.mismatch(a, c)).isNotEqualTo(-1);
+        }
+
+        @Test
+        @DisplayName("--threads 1 and --threads 2 write the same bytes")
+        void threads() throws IOException {
+            Path one = dir.resolve("one.png"), two = dir.resolve("two.png");
+            Run r1 = run(small().toString(), "-o", one.toString(), "--threads", "1", "--aa", "random");
+            Run r2 = run(small().toString(), "-o", two.toString(), "--threads", "2", "--aa", "random");
+            assertThat(r1.out()).contains(", 1 threads");
+            assertThat(r2.out()).contains(", 2 threads");
+            assertThat(Files.mismatch(one, two)).isEqualTo(-1);
+        }
+
+        @Test
+        @DisplayName("without -o the image goes to images/<image name>.png")
+        void defaultOutput() throws IOException {
+            String name = "cli-test/default-output";
+            Path expected = ImageWriter.IMAGES.resolve(name + ".png");
+            Files.deleteIfExists(expected);
+            Run r = run(write("named.xml", SMALL.replace("<image name=\"small\"", "<image name=\"" + name + "\"")).toString(),
+                    "--width", "4", "--quiet");
+            assertThat(r.exitCode()).isZero();
+            assertThat(expected).exists();
+            assertThat(image(expected).getWidth()).isEqualTo(4);
+        }
+    }
+
+    @Test
+    @DisplayName("without a scene: the built-in showcase with the showcase camera")
+    void showcase() throws IOException {
+        Path png = dir.resolve("showcase.png");
+        Run r = run("-o", png.toString(), "--width", "16", "--height", "16", "--aa", "none");
+        assertThat(r.exitCode()).isZero();
+        assertThat(r.out()).contains("render showcase 16x16 [NONE,");
+
+        ImageWriter expected = new ImageWriter("showcase", 16, 16);
+        Camera.getBuilder().setLocation(Showcase.CAMERA_LOCATION).setDirection(Showcase.CAMERA_TARGET, Vector.AXIS_Y)
+                .setVpSize(Showcase.VP_SIZE, Showcase.VP_SIZE).setVpDistance(Showcase.VP_DISTANCE)
+                .setImageWriter(expected).setRayTracer(new RayTracerBasic(Showcase.create()))
+                .setAntiAliasing(AntiAliasing.NONE).setSummary(false).build().renderImage();
+        BufferedImage actual = image(png);
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x)
+                assertThat(actual.getRGB(x, y) & 0xFFFFFF).as("pixel (%d,%d)", x, y).isEqualTo(expected.getRgb(x, y));
+    }
+
+    @Nested
+    @DisplayName("progress")
+    class ProgressOutput {
+        private static final Pattern LINE = Pattern.compile("render small:\\s+(\\d+\\.\\d)%.*");
+
+        @Test
+        @DisplayName("not a terminal: plain progress lines in order, the summary, the result")
+        void lines() throws IOException {
+            Run r = run(small().toString(), "-o", dir.resolve("out.png").toString(), "--threads", "2");
+            List<String> lines = r.out().lines().toList();
+            List<Double> percents = new ArrayList<>();
+            for (String line : lines) {
+                Matcher m = LINE.matcher(line);
+                if (m.matches()) percents.add(Double.parseDouble(m.group(1)));
+            }
+            assertThat(percents).hasSizeGreaterThanOrEqualTo(2).isSorted().last().isEqualTo(100.0);
+            assertThat(r.out()).doesNotContain("\r");
+            assertThat(lines.get(lines.size() - 2)).startsWith("render small 40x20 [");
+            assertThat(lines.get(lines.size() - 1)).startsWith("wrote ");
+        }
+
+        @Test
+        @DisplayName("a terminal: one bar redrawn with \\r, then the summary on its own line")
+        void bar() throws IOException {
+            Run r = run(true, small().toString(), "-o", dir.resolve("out.png").toString());
+            assertThat(r.exitCode()).isZero();
+            assertThat(r.out()).contains("\rrender small [").contains("] 100.0%  elapsed ").contains("ETA ");
+            assertThat(r.out().lines().filter(l -> LINE.matcher(l).matches())).as("no plain progress lines").isEmpty();
+            List<String> lines = List.of(r.out().split("\n")); // not lines(): it would split at '\r'
+            assertThat(lines).hasSize(3);
+            assertThat(lines.get(0)).startsWith("\rrender small [");
+            assertThat(lines.get(1)).startsWith("render small 40x20 [");
+            assertThat(lines.get(2)).startsWith("wrote ");
+        }
+
+        @Test
+        @DisplayName("--quiet: nothing on either stream, and the image is written")
+        void quiet() throws IOException {
+            Path png = dir.resolve("out.png");
+            Run r = run(true, small().toString(), "-o", png.toString(), "--quiet");
+            assertThat(r.exitCode()).isZero();
+            assertThat(r.out()).isEmpty();
+            assertThat(r.err()).isEmpty();
+            assertThat(png).exists();
+        }
+    }
+
+    @Test
+    @DisplayName("a failure while writing the image: exit code 1, one line, no stack trace")
+    void writeFailure() throws IOException {
+        Path notADirectory = Files.writeString(dir.resolve("file"), "x");
+        Run r = run(small().toString(), "-o", notADirectory.resolve("out.png").toString(), "--quiet");
+        assertThat(r.exitCode()).isEqualTo(1);
+        assertThat(r.errLines()).hasSize(1);
+        assertThat(r.errLines().get(0)).startsWith("render: cannot write image ");
+        assertThat(r.err()).doesNotContain("\tat ");
+    }
+}
