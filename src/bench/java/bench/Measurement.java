@@ -8,12 +8,12 @@ import renderer.RenderStats;
  * @param config        what was rendered
  * @param runs          timed runs made (fewer than asked when the time budget ran out)
  * @param median        the median render time of the timed runs, seconds (RenderStats.seconds():
- *                      the render loop including the BVH build, without JVM start or PNG writing)
+ *                      the render loop, without the BVH build, JVM start or PNG writing)
  * @param min           the fastest timed run, seconds
  * @param stats         the last timed run's counters (the ray counts are the same in every run:
  *                      renders are deterministic)
- * @param buildSeconds  the median time of {@code Bvh.build} on this scene, timed apart (0 without
- *                      the BVH)
+ * @param buildSeconds  the median preparation time of the timed runs (RenderStats.prepareSeconds():
+ *                      the BVH build; about 0 without the BVH)
  * @param peakHeapBytes the heap's peak over the timed runs ({@link HeapMeter})
  * @param allocPerRay   bytes allocated per traced ray (of every kind) by a small render of the same
  *                      configuration on the calling thread, BVH build excluded; NaN when unknown
@@ -29,13 +29,8 @@ record Measurement(Configuration config, int runs, double median, double min, Re
         return stats.cameraRays() / median / 1e6;
     }
 
-    /** The render time without the BVH build, seconds (never below 0 on a noisy machine). */
-    double traceSeconds() {
-        return Math.max(0, median - buildSeconds);
-    }
-
-    /** Trace time (build excluded) per camera ray, each with its shadow and secondary rays, in ns. */
+    /** Render time (build excluded) per camera ray, each with its shadow and secondary rays, in ns. */
     double nsPerCameraRay() {
-        return traceSeconds() / stats.cameraRays() * 1e9;
+        return median / stats.cameraRays() * 1e9;
     }
 }

@@ -18,7 +18,8 @@ import scene.Scene;
 /**
  * The render benchmark (see BENCHMARKS.md): renders each configuration of {@link Configurations}
  * once to warm the JIT up, then {@code --runs} times, and prints Markdown tables of the medians
- * with the rays traced by kind, the ray rates, the bytes allocated per ray and the peak heap.
+ * with the BVH build time, the rays traced by kind, the ray rates, the bytes allocated per ray and
+ * the peak heap.
  * Progress goes to stderr, the tables to stdout (and {@code --out FILE}).
  *
  * <p>Run it in its own JVM (the {@code bench} Maven profile forks one), on an otherwise idle
@@ -94,14 +95,16 @@ public final class RenderBenchmark {
 
         HeapMeter.reset();
         double[] times = new double[options.runs()];
+        double[] prepare = new double[options.runs()];
         int runs = 0;
         double spent = 0;
         RenderStats last = null;
         while (runs < options.runs()) {
             last = render(c, scene, c.width(), c.height(), c.threads(), options.images() && runs == options.runs() - 1);
+            prepare[runs] = last.prepareSeconds();
             times[runs++] = last.seconds();
             spent += last.seconds();
-            log.printf(Locale.ROOT, "    run %d: %.3f s%n", runs, last.seconds());
+            log.printf(Locale.ROOT, "    run %d: %.3f s (+ %.3f s preparing)%n", runs, last.seconds(), last.prepareSeconds());
             if (options.budgetSeconds() > 0 && spent >= options.budgetSeconds() && runs < options.runs()) {
                 log.printf(Locale.ROOT, "    budget of %.0f s spent: stopping after %d run(s)%n", options.budgetSeconds(), runs);
                 break;
@@ -109,9 +112,8 @@ public final class RenderBenchmark {
         }
         long peak = HeapMeter.peakBytes();
         double[] done = Arrays.copyOf(times, runs);
-        double build = c.bvh() ? buildSeconds(scene, Math.min(runs, 3)) : 0;
-        return new Measurement(c, runs, median(done), Arrays.stream(done).min().orElseThrow(), last, build, peak,
-                allocPerRay);
+        return new Measurement(c, runs, median(done), Arrays.stream(done).min().orElseThrow(), last,
+                median(Arrays.copyOf(prepare, runs)), peak, allocPerRay);
     }
 
     private static RenderStats render(Configuration c, Scene scene, int width, int height, int threads, boolean write) {
@@ -148,18 +150,6 @@ public final class RenderBenchmark {
         }
         if (before < 0 || stats.totalRays() == 0) return Double.NaN;
         return Math.max(0, after - before - build) / (double) stats.totalRays();
-    }
-
-    /** The median of {@code repeats} timed builds of the scene's BVH, in seconds. */
-    private static double buildSeconds(Scene scene, int repeats) {
-        double[] t = new double[Math.max(1, repeats)];
-        for (int i = 0; i < t.length; ++i) {
-            long t0 = System.nanoTime();
-            Bvh bvh = Bvh.build(scene.geometries);
-            t[i] = (System.nanoTime() - t0) / 1e9;
-            if (bvh.primitiveTotal() < 0) throw new AssertionError("unreachable: keeps the build alive");
-        }
-        return median(t);
     }
 
     static double median(double[] values) {

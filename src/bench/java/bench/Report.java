@@ -24,8 +24,8 @@ final class Report {
         s.append("- Machine: ").append(machine.summary())
                 .append(String.format(Locale.ROOT, ", %.2f at the end", loadAtEnd)).append("\n");
         s.append("- Each configuration: one warm-up render, then ").append(o.runs())
-                .append(" timed run(s); times are medians of RenderStats.seconds() (render loop incl. BVH build, "
-                        + "no JVM start, no PNG).\n\n");
+                .append(" timed run(s); render times are medians of RenderStats.seconds() (the render loop: no BVH build, "
+                        + "no JVM start, no PNG); the BVH build is the median of RenderStats.prepareSeconds().\n\n");
 
         for (String group : Options.GROUPS) {
             List<Measurement> rows = results.stream().filter(m -> m.config().group().equals(group)).toList();
@@ -40,13 +40,14 @@ final class Report {
 
     private static String mainTable(List<Measurement> rows) {
         StringBuilder s = new StringBuilder();
-        s.append("| scene | resolution | settings | threads | runs | median s | min s | camera rays | shadow rays "
-                + "| secondary rays | Mrays/s (all) | camera Mrays/s | alloc B/ray | peak heap MB |\n");
-        s.append("|---|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
+        s.append("| scene | resolution | settings | threads | runs | median s | min s | BVH build s | camera rays "
+                + "| shadow rays | secondary rays | Mrays/s (all) | camera Mrays/s | alloc B/ray | peak heap MB |\n");
+        s.append("|---|---|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|\n");
         for (Measurement m : rows) {
             Configuration c = m.config();
-            s.append(String.format(Locale.ROOT, "| %s | %s | %s | %d | %d | %.3f | %.3f | %,d | %,d | %,d | %.2f | %.2f | %s | %,.0f |%n",
+            s.append(String.format(Locale.ROOT, "| %s | %s | %s | %d | %d | %.3f | %.3f | %s | %,d | %,d | %,d | %.2f | %.2f | %s | %,.0f |%n",
                     c.sceneLabel(), c.resolution(), c.settings(), c.threads(), m.runs(), m.median(), m.min(),
+                    c.bvh() ? String.format(Locale.ROOT, "%.3f", m.buildSeconds()) : "–",
                     m.stats().cameraRays(), m.stats().shadowRays(), m.stats().secondaryRays(), m.mraysPerSecond(),
                     m.cameraMraysPerSecond(), Double.isNaN(m.allocPerRay()) ? "?" : String.format(Locale.ROOT, "%.1f", m.allocPerRay()),
                     m.peakHeapBytes() / 1e6));
@@ -58,15 +59,15 @@ final class Report {
     private static String scalingTable(List<Measurement> rows) {
         StringBuilder s = new StringBuilder();
         s.append("Time per camera ray (its shadow ray included), BVH build excluded:\n\n");
-        s.append("| primitives | method | BVH build s | render s (median) | trace s | ns per camera ray | × the 10³ time |\n");
-        s.append("|--:|---|--:|--:|--:|--:|--:|\n");
+        s.append("| primitives | method | BVH build s | render s (median) | ns per camera ray | × the 2×10³ time |\n");
+        s.append("|--:|---|--:|--:|--:|--:|\n");
         for (Measurement m : rows) {
             Configuration c = m.config();
             Optional<Measurement> base = rows.stream()
                     .filter(b -> b.config().primitives() == 2000 && b.config().bvh() == c.bvh()).findFirst();
-            s.append(String.format(Locale.ROOT, "| %s | %s | %s | %.3f | %.3f | %.1f | %s |%n",
+            s.append(String.format(Locale.ROOT, "| %s | %s | %s | %.3f | %.1f | %s |%n",
                     "2×" + Configurations.power(c.primitives() / 2), c.settings(),
-                    c.bvh() ? String.format(Locale.ROOT, "%.3f", m.buildSeconds()) : "–", m.median(), m.traceSeconds(),
+                    c.bvh() ? String.format(Locale.ROOT, "%.3f", m.buildSeconds()) : "–", m.median(),
                     m.nsPerCameraRay(),
                     base.map(b -> String.format(Locale.ROOT, "%.2f", m.nsPerCameraRay() / b.nsPerCameraRay())).orElse("–")));
         }
