@@ -8,25 +8,25 @@ package primitives;
  * coordinates of order 1..10^4 while keeping real geometric quantities distinct.
  */
 public final class Util {
-    /** Values with a binary exponent below this are treated as zero (2^-40 ≈ 9.1e-13). */
-    private static final int ACCURACY = -40;
+    /**
+     * Values below this in magnitude are treated as zero: 2^-40 ≈ 9.1e-13. "Binary exponent below
+     * -40" and "|x| &lt; 2^-40" are the same test for every double (NaN and ±∞ are not zero,
+     * subnormals are); the comparison form stays in floating-point registers, which matters
+     * because the intersection kernels call it several times per ray.
+     */
+    private static final double ACCURACY = 0x1p-40;
 
     private Util() {
     }
 
-    /** The unbiased binary exponent of {@code num}, read directly from its IEEE-754 bits. */
-    private static int getExp(double num) {
-        return (int) ((Double.doubleToRawLongBits(num) & 0x7FF0_0000_0000_0000L) >> 52) - 1023;
-    }
-
     /** @return true when {@code number} is within the library's zero tolerance */
     public static boolean isZero(double number) {
-        return getExp(number) < ACCURACY;
+        return Math.abs(number) < ACCURACY;
     }
 
     /** @return {@code number}, or exactly 0.0 when it is within the zero tolerance */
     public static double alignZero(double number) {
-        return getExp(number) < ACCURACY ? 0.0 : number;
+        return Math.abs(number) < ACCURACY ? 0.0 : number;
     }
 
     /** @return true when both values are non-zero and have the same sign */
