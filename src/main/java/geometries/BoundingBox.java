@@ -72,7 +72,7 @@ public final class BoundingBox {
      *
      * @return true when the ray segment [0, tMax] touches the box
      */
-    boolean intersects(double ox, double oy, double oz, double invDx, double invDy, double invDz, double tMax) {
+    public boolean intersects(double ox, double oy, double oz, double invDx, double invDy, double invDz, double tMax) {
         if (invDx == Double.NEGATIVE_INFINITY) invDx = Double.POSITIVE_INFINITY; // 1/-0.0 from a caller
         if (invDy == Double.NEGATIVE_INFINITY) invDy = Double.POSITIVE_INFINITY;
         if (invDz == Double.NEGATIVE_INFINITY) invDz = Double.POSITIVE_INFINITY;
