@@ -412,7 +412,7 @@ public final class XmlSceneReader {
                 camera.setDirection(to, up);
             } catch (IllegalArgumentException ex) {
                 throw e.errorAt("up", "invalid <camera>: " + ex.getMessage()
-                        + " (expected an up vector orthogonal to the direction)");
+                        + " (expected an up vector orthogonal to the direction)", ex);
             }
         } else if (e.has("target")) {
             Point target = e.required("target", POINT);

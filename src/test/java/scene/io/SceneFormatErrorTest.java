@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
@@ -134,6 +135,19 @@ class SceneFormatErrorTest {
         assertThat(new int[] { e.getLine(), e.getColumn() }).as("line and column").containsExactly(line, column);
         assertThat(e.getMessage()).isEqualTo(file + ":" + line + ":" + column + ": " + e.getReason())
                 .doesNotContain("\n");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+            "up not orthogonal to the direction | location=\"0 0 0\" direction=\"0 0 -1\" up=\"0 1 1\"",
+            "target at the location             | location=\"1 2 3\" target=\"1 2 3\"" })
+    @DisplayName("a camera the library refuses: the library's exception is the cause, its message in the reason")
+    void cameraCause(String name, String view) throws IOException {
+        Path file = dir.resolve("camera.xml");
+        Files.writeString(file, inScene("<camera " + view + " vp-size=\"1\" vp-distance=\"1\"/>"));
+        SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+        assertThat(e.getCause()).isInstanceOf(IllegalArgumentException.class);
+        assertThat(e.getReason()).contains(e.getCause().getMessage());
     }
 
     @Test
