@@ -146,11 +146,14 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
         camera.setImageWriter(image)
                 .setRayTracer(new RayTracerBasic(scene).setBvh(bvh).setBeamSize(beamSize).setShadowSamples(shadowSamples))
-                .setAntiAliasing(antiAliasing, aaColumns, aaRows)
+                .setAntiAliasing(antiAliasing)
                 .setAdaptive(adaptiveDepth, adaptiveThreshold)
                 .setDepthOfFieldSamples(dofSamples)
                 .setSeed(seed)
                 .setMultithreading(threads);
+        // The camera takes a grid only with RANDOM (for the other modes the settings merely keep
+        // it, for a later --aa random).
+        if (antiAliasing == AntiAliasing.RANDOM) camera.setAntiAliasingGrid(aaColumns, aaRows);
         // Aperture 0 is the pinhole camera whatever the focal distance: this also undoes an earlier
         // depth of field on a reused builder.
         if (hasDepthOfField()) camera.setDepthOfField(focalDistance, aperture);
