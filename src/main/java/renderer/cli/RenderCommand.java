@@ -5,9 +5,6 @@ import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.FileSystemException;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -25,6 +22,7 @@ import renderer.Camera;
 import renderer.ImageWriter;
 import scene.Scene;
 import scene.io.LoadedScene;
+import scene.io.Messages;
 import scene.io.RenderSettings;
 import scene.io.SceneFormatException;
 import scene.io.XmlSceneReader;
@@ -152,7 +150,7 @@ public final class RenderCommand implements Callable<Integer> {
             err.println(e.getMessage());
             return BAD_INPUT;
         } catch (IOException e) {
-            err.println(scene + ": cannot read the scene file: " + reason(e) + " (expected a readable XML scene file)");
+            err.println(scene + ": cannot read the scene file: " + Messages.reason(e) + " (expected a readable XML scene file)");
             return BAD_INPUT;
         }
         RenderSettings settings = override(job.settings());
@@ -253,13 +251,6 @@ public final class RenderCommand implements Callable<Integer> {
         RenderSettings settings = RenderSettings.defaults("showcase").withImage("showcase", 600, 600)
                 .withAntiAliasing(AntiAliasing.ADAPTIVE);
         return new Job(scene, camera, settings, "showcase");
-    }
-
-    private static String reason(IOException e) {
-        if (e instanceof NoSuchFileException) return "no such file";
-        if (e instanceof AccessDeniedException) return "access denied";
-        if (e instanceof FileSystemException f && f.getReason() != null) return f.getReason();
-        return describe(e);
     }
 
     /** The version from the jar's manifest; a build from the sources has none. */

@@ -20,10 +20,7 @@ import java.nio.CharBuffer;
 import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.FileSystemException;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
@@ -314,16 +311,8 @@ public final class XmlSceneReader {
         } catch (ObjFormatException ex) {
             throw e.errorAt("file", e.quote("file") + ": " + ex.getMessage() + " (expected " + expected + ")", ex);
         } catch (IOException ex) {
-            throw e.errorAt("file", e.quote("file") + ": cannot read " + obj + ": " + why(ex) + " (expected " + expected + ")", ex);
+            throw e.errorAt("file", e.quote("file") + ": cannot read " + obj + ": " + Messages.reason(ex) + " (expected " + expected + ")", ex);
         }
-    }
-
-    /** The reason a file could not be read, in a few words. */
-    static String why(IOException e) {
-        if (e instanceof NoSuchFileException) return "no such file";
-        if (e instanceof AccessDeniedException) return "access denied";
-        if (e instanceof FileSystemException f && f.getReason() != null) return f.getReason();
-        return e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
     }
 
     /** Required attributes p0 … p(n-1). */
