@@ -1,6 +1,7 @@
 package scene.io;
 
 import java.util.Objects;
+import java.util.function.Consumer;
 
 import primitives.Color;
 import renderer.AntiAliasing;
@@ -58,63 +59,69 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * 16 shadow samples: the camera's and the tracer's own defaults, except the thread count.
      */
     public static RenderSettings defaults(String imageName) {
-        return new RenderSettings(imageName, DEFAULT_SIZE, DEFAULT_SIZE, 0, DEFAULT_GRID_COLOR,
-                AntiAliasing.NONE, 4, 4, 3, 8, 0, 0, 16, -2, 0, true, 16, 16);
+        Editor defaults = new Editor();
+        defaults.imageName = imageName;
+        return defaults.settings();
     }
 
     /** @return these settings with another image name and size */
     public RenderSettings withImage(String name, int width, int height) {
-        return new RenderSettings(name, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> {
+            e.imageName = name;
+            e.width = width;
+            e.height = height;
+        });
     }
 
     /** @return these settings with another grid overlay (interval 0: none) */
     public RenderSettings withGrid(int interval, Color color) {
-        return new RenderSettings(imageName, width, height, interval, color, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> {
+            e.gridInterval = interval;
+            e.gridColor = color;
+        });
     }
 
     /** @return these settings with another anti-aliasing mode (its parameters kept) */
     public RenderSettings withAntiAliasing(AntiAliasing mode) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, mode, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> e.antiAliasing = mode);
     }
 
     /** @return these settings with other anti-aliasing parameters */
     public RenderSettings withAntiAliasingParameters(int columns, int rows, int depth, double threshold) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, columns, rows,
-                depth, threshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize, shadowSamples);
+        return edit(e -> {
+            e.aaColumns = columns;
+            e.aaRows = rows;
+            e.adaptiveDepth = depth;
+            e.adaptiveThreshold = threshold;
+        });
     }
 
     /** @return these settings with another depth of field (focal distance 0: none) */
     public RenderSettings withDepthOfField(double focalDistance, double aperture, int samples) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, samples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> {
+            e.focalDistance = focalDistance;
+            e.aperture = aperture;
+            e.dofSamples = samples;
+        });
     }
 
     /** @return these settings with another thread count */
     public RenderSettings withThreads(int threads) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> e.threads = threads);
     }
 
     /** @return these settings with another seed */
     public RenderSettings withSeed(long seed) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> e.seed = seed);
     }
 
     /** @return these settings with other tracer extensions */
     public RenderSettings withTracer(boolean bvh, int beamSize, int shadowSamples) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> {
+            e.bvh = bvh;
+            e.beamSize = beamSize;
+            e.shadowSamples = shadowSamples;
+        });
     }
 
     /** @return whether these settings ask for depth of field */
@@ -164,5 +171,69 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     /** Draws the grid over a rendered image when these settings ask for one. */
     public void drawGrid(Camera camera) {
         if (gridInterval > 0) camera.printGrid(gridInterval, gridColor);
+    }
+
+    /** A copy of these settings with the fields {@code change} assigns, by name. */
+    private RenderSettings edit(Consumer<Editor> change) {
+        Editor editor = new Editor(this);
+        change.accept(editor);
+        return editor.settings();
+    }
+
+    /**
+     * The settings as named, mutable fields, so that each {@code with…} method assigns what it
+     * changes by name: the record's constructor, whose 18 arguments include adjacent ones of the
+     * same type, is called in one place only. Starts from the defaults (see
+     * {@link #defaults(String)}).
+     */
+    private static final class Editor {
+        String imageName;
+        int width = DEFAULT_SIZE;
+        int height = DEFAULT_SIZE;
+        int gridInterval = 0;
+        Color gridColor = DEFAULT_GRID_COLOR;
+        AntiAliasing antiAliasing = AntiAliasing.NONE;
+        int aaColumns = 4;
+        int aaRows = 4;
+        int adaptiveDepth = 3;
+        double adaptiveThreshold = 8;
+        double focalDistance = 0;
+        double aperture = 0;
+        int dofSamples = 16;
+        int threads = -2;
+        long seed = 0;
+        boolean bvh = true;
+        int beamSize = 16;
+        int shadowSamples = 16;
+
+        Editor() {
+        }
+
+        Editor(RenderSettings s) {
+            imageName = s.imageName;
+            width = s.width;
+            height = s.height;
+            gridInterval = s.gridInterval;
+            gridColor = s.gridColor;
+            antiAliasing = s.antiAliasing;
+            aaColumns = s.aaColumns;
+            aaRows = s.aaRows;
+            adaptiveDepth = s.adaptiveDepth;
+            adaptiveThreshold = s.adaptiveThreshold;
+            focalDistance = s.focalDistance;
+            aperture = s.aperture;
+            dofSamples = s.dofSamples;
+            threads = s.threads;
+            seed = s.seed;
+            bvh = s.bvh;
+            beamSize = s.beamSize;
+            shadowSamples = s.shadowSamples;
+        }
+
+        RenderSettings settings() {
+            return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns,
+                    aaRows, adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh,
+                    beamSize, shadowSamples);
+        }
     }
 }

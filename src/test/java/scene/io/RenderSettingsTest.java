@@ -2,12 +2,20 @@ package scene.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.lang.reflect.RecordComponent;
+import java.util.Map;
+import java.util.function.UnaryOperator;
+import java.util.stream.Stream;
+
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.EnumSource;
+import org.junit.jupiter.params.provider.MethodSource;
 
+import primitives.Color;
 import primitives.Point;
 import renderer.AntiAliasing;
 import renderer.Camera;
@@ -55,6 +63,55 @@ class RenderSettingsTest {
             assertThat(apply(s, camera).describe()).startsWith(mode.name());
             assertThat(camera.setAntiAliasing(AntiAliasing.RANDOM).setSummary(false).build().describe())
                     .startsWith("RANDOM 7x2,");
+        }
+    }
+
+    @Nested
+    @DisplayName("each with… method changes the values it names and nothing else")
+    class With {
+        /** Every value differs from the defaults and from every other value of its type. */
+        private static final RenderSettings BASE = new RenderSettings("base", 10, 20, 3, new Color(1, 2, 3),
+                AntiAliasing.CORNERS, 4, 5, 6, 7.5, 8.5, 9.5, 11, 12, 13L, false, 14, 15);
+        private static final Color GREEN = new Color(0, 255, 0);
+
+        static Stream<Arguments> edits() {
+            return Stream.of(
+                    edit("withImage", s -> s.withImage("other", 30, 40), Map.of("imageName", "other", "width", 30, "height", 40)),
+                    edit("withGrid", s -> s.withGrid(50, GREEN), Map.of("gridInterval", 50, "gridColor", GREEN)),
+                    edit("withAntiAliasing", s -> s.withAntiAliasing(AntiAliasing.ADAPTIVE),
+                            Map.of("antiAliasing", AntiAliasing.ADAPTIVE)),
+                    edit("withAntiAliasingParameters", s -> s.withAntiAliasingParameters(60, 70, 2, 80.5),
+                            Map.of("aaColumns", 60, "aaRows", 70, "adaptiveDepth", 2, "adaptiveThreshold", 80.5)),
+                    edit("withDepthOfField", s -> s.withDepthOfField(90.5, 100.5, 110),
+                            Map.of("focalDistance", 90.5, "aperture", 100.5, "dofSamples", 110)),
+                    edit("withThreads", s -> s.withThreads(120), Map.of("threads", 120)),
+                    edit("withSeed", s -> s.withSeed(-130L), Map.of("seed", -130L)),
+                    edit("withTracer", s -> s.withTracer(true, 140, 150),
+                            Map.of("bvh", true, "beamSize", 140, "shadowSamples", 150)));
+        }
+
+        private static Arguments edit(String name, UnaryOperator<RenderSettings> change, Map<String, Object> changed) {
+            return Arguments.of(name, change, changed);
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("edits")
+        void changesWhatItNames(String name, UnaryOperator<RenderSettings> change, Map<String, Object> changed)
+                throws ReflectiveOperationException {
+            RenderSettings edited = change.apply(BASE);
+            for (RecordComponent c : RenderSettings.class.getRecordComponents()) {
+                Object expected = changed.containsKey(c.getName()) ? changed.get(c.getName())
+                        : c.getAccessor().invoke(BASE);
+                assertThat(c.getAccessor().invoke(edited)).as(c.getName()).isEqualTo(expected);
+            }
+        }
+
+        @Test
+        @DisplayName("the defaults, value by value")
+        void defaults() {
+            RenderSettings d = RenderSettings.defaults("scene");
+            assertThat(d).isEqualTo(new RenderSettings("scene", 500, 500, 0, RenderSettings.DEFAULT_GRID_COLOR,
+                    AntiAliasing.NONE, 4, 4, 3, 8, 0, 0, 16, -2, 0, true, 16, 16));
         }
     }
 }
