@@ -14,11 +14,14 @@ import scene.Scene;
  * How a scene file asks to be rendered: the image, the sampling, the tracer's extensions and the
  * execution. The defaults (see {@link #defaults(String)}) are the plain course render on all
  * cores. A command line overrides values with the {@code with…} methods and then
- * {@linkplain #applyTo(Camera.Builder, Scene) applies} the result to a camera builder.
+ * {@linkplain #applyTo(Camera.Builder, Scene, ImageWriter) applies} the result to a camera
+ * builder. The image size is checked here, so that settings that exist can be rendered as far as
+ * the pixel count goes: the image itself is allocated only when asked for.
  *
  * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise
- * @param width            image width in pixels
- * @param height           image height in pixels
+ * @param width            image width in pixels, at least 1
+ * @param height           image height in pixels, at least 1; width × height at most
+ *                         {@link #MAX_PIXELS}
  * @param gridInterval     a grid line every this many pixels over the image (the course's
  *                         {@code printGrid}); 0: no grid
  * @param gridColor        the grid lines' colour
@@ -45,11 +48,27 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     public static final int DEFAULT_SIZE = 500;
     /** The course's grid colour (java.awt.Color.YELLOW). */
     public static final Color DEFAULT_GRID_COLOR = new Color(255, 255, 0);
+    /**
+     * The most pixels an image can have: {@link ImageWriter} keeps them in one {@code int} array,
+     * and JVMs allocate arrays of at most {@code Integer.MAX_VALUE - 8} elements (ImageWriter's own
+     * limit, checked here without allocating).
+     */
+    public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
 
+    /**
+     * @throws IllegalArgumentException for a side below 1 pixel or more than {@link #MAX_PIXELS}
+     *                                  pixels, naming the size
+     */
     public RenderSettings {
         Objects.requireNonNull(imageName, "image name");
         Objects.requireNonNull(gridColor, "grid colour");
         Objects.requireNonNull(antiAliasing, "anti-aliasing mode");
+        if (width < 1 || height < 1)
+            throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
+        long pixels = (long) width * height;
+        if (pixels > MAX_PIXELS)
+            throw new IllegalArgumentException("image size " + width + "x" + height + " is " + pixels
+                    + " pixels, more than an image can hold (" + MAX_PIXELS + ")");
     }
 
     /**
@@ -130,9 +149,10 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     }
 
     /**
-     * Sets everything but the view on {@code camera}: a new image writer of this name and size, a
-     * new {@link RayTracerBasic} for {@code scene} with these extensions, the sampling, seed and
-     * thread count. The view (location, direction, view plane) is left as it is.
+     * Sets everything but the view on {@code camera}: a new image writer of this name and size
+     * (this allocates the image: 4 bytes a pixel), a new {@link RayTracerBasic} for {@code scene}
+     * with these extensions, the sampling, seed and thread count. The view (location, direction,
+     * view plane) is left as it is.
      *
      * @return {@code camera}, for chaining
      * @throws IllegalArgumentException for a value the camera or tracer refuses
@@ -141,14 +161,15 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         return applyTo(camera, scene, newImageWriter());
     }
 
-    /** @return a new, black image writer of this name and size */
+    /** @return a new, black image writer of this name and size (4 bytes a pixel) */
     public ImageWriter newImageWriter() {
         return new ImageWriter(imageName, width, height);
     }
 
     /**
      * As {@link #applyTo(Camera.Builder, Scene)}, with an image writer of the caller's (which
-     * keeps a reference to it, e.g. to write it elsewhere than images/).
+     * keeps a reference to it, e.g. to write it elsewhere than images/, or to allocate it where
+     * it can report a lack of memory); its size is the caller's business.
      */
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
         camera.setImageWriter(image)

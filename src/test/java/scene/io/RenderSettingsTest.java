@@ -1,6 +1,7 @@
 package scene.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.lang.reflect.RecordComponent;
 import java.util.Map;
@@ -12,6 +13,7 @@ import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
@@ -112,6 +114,36 @@ class RenderSettingsTest {
             RenderSettings d = RenderSettings.defaults("scene");
             assertThat(d).isEqualTo(new RenderSettings("scene", 500, 500, 0, RenderSettings.DEFAULT_GRID_COLOR,
                     AntiAliasing.NONE, 4, 4, 3, 8, 0, 0, 16, -2, 0, true, 16, 16));
+        }
+    }
+
+    @Nested
+    @DisplayName("the image size: each side at least 1, at most MAX_PIXELS pixels, checked without allocating")
+    class ImageSize {
+        @ParameterizedTest(name = "{0}x{1}")
+        @CsvSource({ "0, 1", "1, 0", "-3, 5", "50000, 50000", "1, 2147483640", "16383, 131080" })
+        @DisplayName("refused, naming the size")
+        void refused(int width, int height) {
+            assertThatThrownBy(() -> RenderSettings.defaults("x").withImage("x", width, height))
+                    .isInstanceOf(IllegalArgumentException.class).hasMessageContaining(width + "x" + height);
+        }
+
+        /** 16383 × 131080 = 2^31 - 8 = MAX_PIXELS + 1 (16383 = 2^14 - 1, 131080 = 8 (2^14 + 1)). */
+        @Test
+        @DisplayName("the limit is ImageWriter's: one pixel more and both refuse")
+        void imageWritersLimit() {
+            assertThat(16383L * 131080).isEqualTo(RenderSettings.MAX_PIXELS + 1);
+            assertThatThrownBy(() -> new ImageWriter("x", 16383, 131080)).isInstanceOf(IllegalArgumentException.class);
+            assertThatThrownBy(() -> RenderSettings.defaults("x").withImage("x", 16383, 131080))
+                    .isInstanceOf(IllegalArgumentException.class);
+        }
+
+        @ParameterizedTest(name = "{0}x{1}")
+        @CsvSource({ "1, 1", "2147483639, 1", "1, 2147483639", "46340, 46340" })
+        @DisplayName("accepted up to the limit (nothing is allocated)")
+        void accepted(int width, int height) {
+            RenderSettings s = RenderSettings.defaults("x").withImage("x", width, height);
+            assertThat(new int[] { s.width(), s.height() }).containsExactly(width, height);
         }
     }
 }
