@@ -404,6 +404,26 @@ class RenderCommandTest {
             assertThat(png).doesNotExist();
         }
 
+        /**
+         * 2000 × 2000 pixels are 16 MB: they fit once in a 32 MB heap, not twice (as they did
+         * when writing the PNG copied the pixels into a BufferedImage).
+         */
+        @Test
+        @DisplayName("an image that fits in memory once is rendered and written: writing makes no copy of it")
+        void fitsOnce() throws Exception {
+            Path scene = write("empty.xml", """
+                    <scene name="empty">
+                        <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="1" vp-distance="1"/>
+                        <image width="2000" height="2000"/>
+                    </scene>
+                    """);
+            Path png = dir.resolve("out.png");
+            Run r = runJava("-Xmx32m", scene.toString(), "-o", png.toString(), "--quiet");
+            assertThat(r.err()).isEmpty();
+            assertThat(r.exitCode()).isZero();
+            assertThat(new int[] { image(png).getWidth(), image(png).getHeight() }).containsExactly(2000, 2000);
+        }
+
         /** Runs the jar's entry point in a new JVM with this JVM's Java, the classes and picocli. */
         private Run runJava(String heap, String... args) throws IOException, InterruptedException {
             String classPath = location(RenderCommand.class) + File.pathSeparator + location(CommandLine.class);
