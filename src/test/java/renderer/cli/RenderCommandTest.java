@@ -42,8 +42,8 @@ import scene.samples.Showcase;
  * tiny; every image goes to the test's temporary folder.
  */
 class RenderCommandTest {
-    /** The jar's Main-Class. */
-    private static final String MAIN_CLASS = "renderer.Main";
+    /** The jar's Main-Class (pom.xml's main.class). */
+    private static final String MAIN_CLASS = "renderer.cli.Main";
 
     @TempDir
     Path dir;
@@ -100,6 +100,27 @@ class RenderCommandTest {
         return write("small.xml", SMALL);
     }
 
+    /** Runs the jar's entry point in a new JVM with this JVM's Java, the classes and picocli. */
+    private Run runJava(String heap, String... args) throws IOException, InterruptedException {
+        String classPath = location(RenderCommand.class) + File.pathSeparator + location(CommandLine.class);
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                heap, "-cp", classPath, MAIN_CLASS));
+        command.addAll(List.of(args));
+        Process process = new ProcessBuilder(command).directory(dir.toFile())
+                .redirectOutput(dir.resolve("stdout.txt").toFile()).redirectError(dir.resolve("stderr.txt").toFile()).start();
+        assertThat(process.waitFor(60, TimeUnit.SECONDS)).as("the command ends").isTrue();
+        return new Run(process.exitValue(), Files.readString(dir.resolve("stdout.txt")),
+                Files.readString(dir.resolve("stderr.txt")));
+    }
+
+    private static String location(Class<?> type) {
+        try {
+            return Path.of(type.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
+        } catch (URISyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
     private static BufferedImage image(Path png) throws IOException {
         BufferedImage image = ImageIO.read(png.toFile());
         assertThat(image).as("a PNG at " + png).isNotNull();
@@ -124,6 +145,17 @@ class RenderCommandTest {
             Run r = run("--version");
             assertThat(r.exitCode()).isZero();
             assertThat(r.out()).startsWith("render (raytracer) ");
+        }
+
+        @Test
+        @DisplayName("the jar's entry point runs the command and exits with its code")
+        void entryPoint() throws Exception {
+            Run version = runJava("-Xmx64m", "--version");
+            assertThat(version.exitCode()).isZero();
+            assertThat(version.out()).startsWith("render (raytracer) ");
+            Run usage = runJava("-Xmx64m", "--width", "0");
+            assertThat(usage.exitCode()).isEqualTo(2);
+            assertThat(usage.err()).startsWith("render: --width must be at least 1, got 0");
         }
     }
 
@@ -422,27 +454,6 @@ class RenderCommandTest {
             assertThat(r.err()).isEmpty();
             assertThat(r.exitCode()).isZero();
             assertThat(new int[] { image(png).getWidth(), image(png).getHeight() }).containsExactly(2000, 2000);
-        }
-
-        /** Runs the jar's entry point in a new JVM with this JVM's Java, the classes and picocli. */
-        private Run runJava(String heap, String... args) throws IOException, InterruptedException {
-            String classPath = location(RenderCommand.class) + File.pathSeparator + location(CommandLine.class);
-            List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                    heap, "-cp", classPath, MAIN_CLASS));
-            command.addAll(List.of(args));
-            Process process = new ProcessBuilder(command).directory(dir.toFile())
-                    .redirectOutput(dir.resolve("stdout.txt").toFile()).redirectError(dir.resolve("stderr.txt").toFile()).start();
-            assertThat(process.waitFor(60, TimeUnit.SECONDS)).as("the command ends").isTrue();
-            return new Run(process.exitValue(), Files.readString(dir.resolve("stdout.txt")),
-                    Files.readString(dir.resolve("stderr.txt")));
-        }
-
-        private static String location(Class<?> type) {
-            try {
-                return Path.of(type.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
-            } catch (URISyntaxException e) {
-                throw new IllegalStateException(e);
-            }
         }
     }
 
