@@ -42,7 +42,7 @@ import scene.samples.Showcase;
                 "Without a scene, renders the built-in showcase (600x600, adaptive anti-aliasing) into images/showcase.png." },
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = { "0:the image was written",
-                "1:the render or the writing of the image failed (e.g. not enough memory for the image)",
+                "1:the render or the writing failed (e.g. not enough memory for the image)",
                 "2:bad input: a usage error or an invalid scene file (nothing is written)" })
 public final class RenderCommand implements Callable<Integer> {
     /** Exit code of a render or write failure. */
@@ -71,14 +71,15 @@ public final class RenderCommand implements Callable<Integer> {
     private Integer height;
 
     @Option(names = "--threads", paramLabel = "N",
-            description = "Render threads: 0 renders on the calling thread, -2 uses all cores. Default: the file's, else all cores.")
+            description = "Render threads: N > 0 worker threads, 0 the calling thread, -2 all cores. Default: the file's, else all cores.")
     private Integer threads;
 
     @Option(names = "--aa", paramLabel = "MODE",
-            description = "Anti-aliasing: ${COMPLETION-CANDIDATES} (case-insensitive); the parameters stay the file's.")
+            description = "Anti-aliasing: ${COMPLETION-CANDIDATES} (case-insensitive); the parameters stay the file's. Default: the file's, else NONE.")
     private AntiAliasing antiAliasing;
 
-    @Option(names = "--seed", paramLabel = "N", description = "The seed of every random number of the render.")
+    @Option(names = "--seed", paramLabel = "N",
+            description = "The seed of every random number of the render. Default: the file's, else 0.")
     private Long seed;
 
     @Option(names = { "-q", "--quiet" }, description = "Print nothing but errors.")

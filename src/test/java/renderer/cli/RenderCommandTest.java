@@ -30,6 +30,8 @@ import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 import picocli.CommandLine;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
@@ -138,6 +140,19 @@ class RenderCommandTest {
                     .contains("[SCENE]", "--output=FILE", "--width=N", "--height=N", "--threads=N", "--aa=MODE", "--seed=N",
                             "--quiet", "--version", "NONE, RANDOM, CORNERS, ADAPTIVE", "Exit codes:");
             assertThat(r.err()).isEmpty();
+        }
+
+        @Test
+        @DisplayName("--help explains every option and parameter, and lists the three exit codes")
+        void helpIsComplete() {
+            String help = run("--help").out();
+            CommandSpec spec = RenderCommand.commandLine(System.out, System.err, false).getCommandSpec();
+            for (OptionSpec option : spec.options()) {
+                assertThat(option.description()).as(option.longestName()).isNotEmpty();
+                assertThat(help).contains(option.longestName()).contains(option.description()[0].substring(0, 20));
+            }
+            assertThat(spec.positionalParameters()).allSatisfy(p -> assertThat(p.description()).isNotEmpty());
+            assertThat(help.lines().filter(l -> l.matches("  [012]   \\S.*"))).hasSize(3);
         }
 
         @Test
