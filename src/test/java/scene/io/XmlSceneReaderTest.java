@@ -82,6 +82,12 @@ class XmlSceneReaderTest {
                 .containsExactly(new double[] { x, y, z }, within(1e-12));
     }
 
+    /** The camera of a view builder, completed with a 2×2 image and a tracer of the loaded scene. */
+    private static Camera withSmallImage(Camera.Builder view, LoadedScene loaded) {
+        return view.setImageWriter(new ImageWriter("small", 2, 2)).setRayTracer(new RayTracerBasic(loaded.scene()))
+                .build();
+    }
+
     private static boolean hits(Intersectable geometry, Point from, Vector direction) {
         return geometry.findIntersections(new Ray(from, direction)) != null;
     }
@@ -401,8 +407,7 @@ class XmlSceneReaderTest {
                     "<camera location=\"1 2 3\" target=\"1 2 0\" vp-size=\"4 2\" vp-distance=\"5\"/>");
             Camera.Builder view = loaded.requireView();
             assertThatThrownBy(view::build).isInstanceOf(MissingResourceException.class).hasMessageContaining("image writer");
-            Camera camera = view.setImageWriter(new ImageWriter("view", 4, 2)).setRayTracer(new RayTracerBasic(loaded.scene()))
-                    .build();
+            Camera camera = withSmallImage(view, loaded);
             assertPoint(camera.getLocation(), 1, 2, 3);
             assertPoint(camera.getVTo(), 0, 0, -1);
         }
@@ -416,8 +421,7 @@ class XmlSceneReaderTest {
             assertThat(loaded.requireCamera()).isNotSameAs(first);
             first.setLocation(new Point(9, 9, 9));
             assertPoint(loaded.requireCamera().build().getLocation(), 0, 0, 0);
-            assertPoint(loaded.requireView().setImageWriter(new ImageWriter("v", 1, 1))
-                    .setRayTracer(new RayTracerBasic(loaded.scene())).build().getLocation(), 0, 0, 0);
+            assertPoint(withSmallImage(loaded.requireView(), loaded).getLocation(), 0, 0, 0);
         }
 
         @Test
@@ -519,9 +523,7 @@ class XmlSceneReaderTest {
                     <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="10" vp-distance="10"/>
                     <image width="46340" height="46340"/>""");
             assertThat(new int[] { loaded.settings().width(), loaded.settings().height() }).containsExactly(side, side);
-            Camera camera = loaded.requireView().setImageWriter(new ImageWriter("small", 2, 2))
-                    .setRayTracer(new RayTracerBasic(loaded.scene())).build();
-            assertPoint(camera.getVTo(), 0, 0, -1);
+            assertPoint(withSmallImage(loaded.requireView(), loaded).getVTo(), 0, 0, -1);
         }
 
         @Test
