@@ -32,8 +32,8 @@ import scene.samples.Showcase;
  * The {@code render} command: renders a scene file, or the built-in showcase, into a PNG.
  * Command-line options override the file's settings. Exit codes: 0 success, 1 a failure while
  * rendering or writing the image (not enough memory for the image included), 2 bad input (a usage
- * error or an invalid scene file); failures and bad input are reported in one line on the error
- * stream, never as a stack trace, and write no image.
+ * error or an invalid scene file). Bad input, a failed write and an image too large for the memory
+ * are each reported in one line on the error stream, not as a stack trace, and leave no image.
  */
 @Command(name = "render", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
