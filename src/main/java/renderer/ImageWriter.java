@@ -1,6 +1,10 @@
 package renderer;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
+import java.awt.image.DirectColorModel;
+import java.awt.image.Raster;
+import java.awt.image.WritableRaster;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.AtomicMoveNotSupportedException;
@@ -92,8 +96,12 @@ public class ImageWriter {
      * @throws UncheckedIOException naming the file when it cannot be written
      */
     public void writeToImage(Path file) {
-        BufferedImage image = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
-        image.setRGB(0, 0, nX, nY, pixels, 0, nX);
+        // A view of the pixel buffer, not a copy: TYPE_INT_RGB's own layout (0xRRGGBB ints, row
+        // by row), so writing needs no second image's worth of memory.
+        DirectColorModel rgb = new DirectColorModel(24, 0xFF0000, 0x00FF00, 0x0000FF);
+        WritableRaster raster = Raster.createPackedRaster(new DataBufferInt(pixels, pixels.length), nX, nY, nX,
+                rgb.getMasks(), null);
+        BufferedImage image = new BufferedImage(rgb, raster, false, null);
         Path target = file.toAbsolutePath();
         Path tmp = null;
         try {

@@ -5,11 +5,13 @@ import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.awt.image.BufferedImage;
+import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Comparator;
+import java.util.Random;
 import java.util.UUID;
 import java.util.stream.Stream;
 
@@ -19,6 +21,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
@@ -108,6 +111,31 @@ class ImageWriterTest {
             assertThat(read.getRGB(1, 0) & 0xFFFFFF).isEqualTo(0x0A141E);
             assertThat(read.getRGB(0, 1) & 0xFFFFFF).isZero();
             assertNoTemporaryFiles(file.getParent());
+        }
+
+        /**
+         * The writer hands ImageIO a view of its pixel buffer rather than a copy (so that writing
+         * needs no second image's worth of memory); the file must be what ImageIO writes for a
+         * TYPE_INT_RGB copy of the same pixels.
+         */
+        @Test
+        @DisplayName("the PNG is byte for byte the one of a TYPE_INT_RGB copy of the pixels")
+        void sameBytesAsCopy(@TempDir Path dir) throws IOException {
+            int nX = 37, nY = 23;
+            Random random = new Random(42);
+            ImageWriter image = new ImageWriter("any", nX, nY);
+            BufferedImage copy = new BufferedImage(nX, nY, BufferedImage.TYPE_INT_RGB);
+            for (int y = 0; y < nY; ++y)
+                for (int x = 0; x < nX; ++x) {
+                    Color color = new Color(random.nextInt(256), random.nextInt(256), random.nextInt(256));
+                    image.writePixel(x, y, color);
+                    copy.setRGB(x, y, color.toRgb());
+                }
+            Path file = dir.resolve("view.png");
+            image.writeToImage(file);
+            ByteArrayOutputStream expected = new ByteArrayOutputStream();
+            assertThat(ImageIO.write(copy, "png", expected)).isTrue();
+            assertThat(Files.readAllBytes(file)).isEqualTo(expected.toByteArray());
         }
 
         @Test

@@ -5,9 +5,6 @@ import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.FileSystemException;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -25,6 +22,7 @@ import renderer.Camera;
 import renderer.ImageWriter;
 import scene.Scene;
 import scene.io.LoadedScene;
+import scene.io.Messages;
 import scene.io.RenderSettings;
 import scene.io.SceneFormatException;
 import scene.io.XmlSceneReader;
@@ -33,8 +31,9 @@ import scene.samples.Showcase;
 /**
  * The {@code render} command: renders a scene file, or the built-in showcase, into a PNG.
  * Command-line options override the file's settings. Exit codes: 0 success, 1 a failure while
- * rendering or writing the image, 2 bad input (a usage error or an invalid scene file); bad input
- * is reported in one line on the error stream, never as a stack trace, and writes no image.
+ * rendering or writing the image (not enough memory for the image included), 2 bad input (a usage
+ * error or an invalid scene file). Bad input, a failed write and an image too large for the memory
+ * are each reported in one line on the error stream, not as a stack trace, and leave no image.
  */
 @Command(name = "render", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
@@ -43,7 +42,7 @@ import scene.samples.Showcase;
                 "Without a scene, renders the built-in showcase (600x600, adaptive anti-aliasing) into images/showcase.png." },
         exitCodeListHeading = "%nExit codes:%n",
         exitCodeList = { "0:the image was written",
-                "1:the render or the writing of the image failed",
+                "1:the render or the writing failed (e.g. not enough memory for the image)",
                 "2:bad input: a usage error or an invalid scene file (nothing is written)" })
 public final class RenderCommand implements Callable<Integer> {
     /** Exit code of a render or write failure. */
@@ -72,14 +71,15 @@ public final class RenderCommand implements Callable<Integer> {
     private Integer height;
 
     @Option(names = "--threads", paramLabel = "N",
-            description = "Render threads: 0 renders on the calling thread, -2 uses all cores. Default: the file's, else all cores.")
+            description = "Render threads: N > 0 worker threads, 0 the calling thread, -2 all cores. Default: the file's, else all cores.")
     private Integer threads;
 
     @Option(names = "--aa", paramLabel = "MODE",
-            description = "Anti-aliasing: ${COMPLETION-CANDIDATES} (case-insensitive); the parameters stay the file's.")
+            description = "Anti-aliasing: ${COMPLETION-CANDIDATES} (case-insensitive); the parameters stay the file's. Default: the file's, else NONE.")
     private AntiAliasing antiAliasing;
 
-    @Option(names = "--seed", paramLabel = "N", description = "The seed of every random number of the render.")
+    @Option(names = "--seed", paramLabel = "N",
+            description = "The seed of every random number of the render. Default: the file's, else 0.")
     private Long seed;
 
     @Option(names = { "-q", "--quiet" }, description = "Print nothing but errors.")
@@ -152,31 +152,38 @@ public final class RenderCommand implements Callable<Integer> {
             err.println(e.getMessage());
             return BAD_INPUT;
         } catch (IOException e) {
-            err.println(scene + ": cannot read the scene file: " + reason(e) + " (expected a readable XML scene file)");
+            err.println(scene + ": cannot read the scene file: " + Messages.reason(e) + " (expected a readable XML scene file)");
             return BAD_INPUT;
         }
         RenderSettings settings = override(job.settings());
         Path target = output != null ? output : ImageWriter.IMAGES.resolve(settings.imageName() + ".png");
 
+        // The one image of the run, at its final size: the reader allocated none.
         ImageWriter image;
+        try {
+            image = settings.newImageWriter();
+        } catch (OutOfMemoryError e) {
+            err.println(notEnoughMemory(settings));
+            return FAILURE;
+        }
         Camera camera;
         PrintStream progress = out;
         ProgressBar bar = null;
         try {
-            image = settings.newImageWriter();
-            settings.applyTo(job.camera(), job.scene(), image).setSummary(!quiet);
+            settings.applyTo(job.view(), job.scene(), image).setSummary(!quiet);
             if (quiet) {
-                job.camera().setDebugPrint(0);
+                job.view().setDebugPrint(0);
             } else if (terminal) {
                 bar = new ProgressBar(out);
                 progress = new PrintStream(bar, true, StandardCharsets.UTF_8);
-                job.camera().setDebugPrint(BAR_STEP);
+                job.view().setDebugPrint(BAR_STEP);
             } else {
-                job.camera().setDebugPrint(LOG_STEP);
+                job.view().setDebugPrint(LOG_STEP);
             }
-            camera = job.camera().setOutput(progress).build();
+            camera = job.view().setOutput(progress).build();
         } catch (IllegalArgumentException e) {
-            // Settings that each passed their check but not together (e.g. too many pixels).
+            // A value the camera refuses that neither the reader nor the options rejected: bad
+            // input all the same, in one line.
             err.println(job.source() + ": " + e.getMessage());
             return BAD_INPUT;
         }
@@ -221,13 +228,22 @@ public final class RenderCommand implements Callable<Integer> {
         return new ParameterException(spec.commandLine(), message);
     }
 
-    /** The file's settings with the command line's overrides. */
+    /**
+     * The file's settings with the command line's overrides.
+     *
+     * @throws ParameterException for a size with too many pixels
+     */
     RenderSettings override(RenderSettings s) {
         if (width != null || height != null) {
             // One side alone keeps the file's aspect ratio, so the view plane is not stretched.
-            int w = width != null ? width : Math.max(1, (int) Math.round((double) s.width() * height / s.height()));
-            int h = height != null ? height : Math.max(1, (int) Math.round((double) s.height() * width / s.width()));
-            s = s.withImage(s.imageName(), w, h);
+            int w = width != null ? width : otherSide("--height", height, s.height(), s.width());
+            int h = height != null ? height : otherSide("--width", width, s.width(), s.height());
+            try {
+                s = s.withImage(s.imageName(), w, h);
+            } catch (IllegalArgumentException e) {
+                String options = width == null ? "--height" : height == null ? "--width" : "--width/--height";
+                throw usage(options + ": " + e.getMessage());
+            }
         }
         if (threads != null) s = s.withThreads(threads);
         if (antiAliasing != null) s = s.withAntiAliasing(antiAliasing);
@@ -235,13 +251,41 @@ public final class RenderCommand implements Callable<Integer> {
         return s;
     }
 
-    /** What to render: a scene, its camera and settings, and where they came from (for messages). */
-    private record Job(Scene scene, Camera.Builder camera, RenderSettings settings, String source) {
+    /**
+     * The side that follows a given one at the file's aspect ratio: {@code given} pixels where the
+     * file has {@code fileGiven}, so {@code fileOther × given / fileGiven}, rounded, at least 1.
+     */
+    private int otherSide(String option, int given, int fileGiven, int fileOther) {
+        long side = Math.max(1, Math.round((double) fileOther * given / fileGiven));
+        if (side > Integer.MAX_VALUE)
+            throw usage(option + " " + given + " at the file's aspect ratio makes the other side " + side
+                    + " pixels, more than an image can hold");
+        return (int) side;
+    }
+
+    /**
+     * The one line for an image the JVM cannot allocate: the pixel buffer (4 bytes a pixel, the
+     * one allocation that grows with the image) against the most memory this JVM may use.
+     */
+    private static String notEnoughMemory(RenderSettings s) {
+        long mb = 1 << 20;
+        long needed = ((long) s.width() * s.height() * Integer.BYTES + mb - 1) / mb;
+        long max = Runtime.getRuntime().maxMemory();
+        String limit = max == Long.MAX_VALUE ? "" : "; Java may use at most " + max / mb + " MB here";
+        return String.format(Locale.ROOT, "render: image %dx%d needs %d MB%s (render it smaller with --width or"
+                + " --height, or give Java more memory with -Xmx)", s.width(), s.height(), needed, limit);
+    }
+
+    /**
+     * What to render: a scene, a camera builder with only the view set, the settings to apply to
+     * it, and where they came from (for messages).
+     */
+    private record Job(Scene scene, Camera.Builder view, RenderSettings settings, String source) {
     }
 
     private static Job load(Path file) throws IOException, SceneFormatException {
         LoadedScene loaded = XmlSceneReader.read(file);
-        return new Job(loaded.scene(), loaded.requireCamera(), loaded.settings(), file.toString());
+        return new Job(loaded.scene(), loaded.requireView(), loaded.settings(), file.toString());
     }
 
     /** The built-in showcase, framed as in its documentation. */
@@ -253,13 +297,6 @@ public final class RenderCommand implements Callable<Integer> {
         RenderSettings settings = RenderSettings.defaults("showcase").withImage("showcase", 600, 600)
                 .withAntiAliasing(AntiAliasing.ADAPTIVE);
         return new Job(scene, camera, settings, "showcase");
-    }
-
-    private static String reason(IOException e) {
-        if (e instanceof NoSuchFileException) return "no such file";
-        if (e instanceof AccessDeniedException) return "access denied";
-        if (e instanceof FileSystemException f && f.getReason() != null) return f.getReason();
-        return describe(e);
     }
 
     /** The version from the jar's manifest; a build from the sources has none. */

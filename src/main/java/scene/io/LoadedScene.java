@@ -2,25 +2,30 @@ package scene.io;
 
 import java.util.Objects;
 import java.util.Optional;
+import java.util.function.Consumer;
 
 import renderer.Camera;
+import renderer.ImageWriter;
 import scene.Scene;
 
 /**
- * What a scene file describes: the scene, the camera when the file has one (a builder with the
- * view and the file's {@link RenderSettings} already applied, ready to {@code build()} or to
- * be overridden first) and the render settings themselves.
+ * What a scene file describes: the scene, the camera's view when the file has a camera, and the
+ * render settings. Reading a file allocates nothing of the image's size: a camera builder, with
+ * its image writer and tracer, is made when asked for, either with the file's settings
+ * ({@link #requireCamera()}) or with the caller's ({@link #requireView()} and
+ * {@link RenderSettings#applyTo(Camera.Builder, Scene, ImageWriter)}).
  */
 public final class LoadedScene {
     private final Scene scene;
-    private final Camera.Builder camera;
+    /** Sets the file's view on a builder; null when the file has no {@code <camera>}. */
+    private final Consumer<Camera.Builder> view;
     private final RenderSettings settings;
     /** The error to report when a caller needs the camera that is not there (at {@code <scene>}). */
     private final SceneFormatException noCamera;
 
-    LoadedScene(Scene scene, Camera.Builder camera, RenderSettings settings, SceneFormatException noCamera) {
+    LoadedScene(Scene scene, Consumer<Camera.Builder> view, RenderSettings settings, SceneFormatException noCamera) {
         this.scene = Objects.requireNonNull(scene, "scene");
-        this.camera = camera;
+        this.view = view;
         this.settings = Objects.requireNonNull(settings, "settings");
         this.noCamera = noCamera;
     }
@@ -30,19 +35,38 @@ public final class LoadedScene {
     }
 
     /**
-     * @return the camera builder, empty when the file has no {@code <camera>} (the course's scene
-     *         files describe only the scene)
+     * @return a new camera builder with the file's view and {@linkplain #settings() settings}
+     *         applied, ready to {@code build()} or to be changed first; empty when the file has no
+     *         {@code <camera>} (the course's scene files describe only the scene). Each call
+     *         allocates a new image of the file's size.
      */
     public Optional<Camera.Builder> camera() {
-        return Optional.ofNullable(camera);
+        return view == null ? Optional.empty() : Optional.of(settings.applyTo(newView(), scene));
     }
 
     /**
-     * @return the camera builder
+     * @return as {@link #camera()}
      * @throws SceneFormatException at the {@code <scene>} element when the file has no camera
      */
     public Camera.Builder requireCamera() throws SceneFormatException {
-        if (camera == null) throw noCamera;
+        return settings.applyTo(requireView(), scene);
+    }
+
+    /**
+     * @return a new camera builder with only the file's view (location, direction, view plane):
+     *         the caller sets the rest, typically with changed settings and
+     *         {@link RenderSettings#applyTo(Camera.Builder, Scene, ImageWriter)}, so that the image
+     *         is allocated once, at its final size
+     * @throws SceneFormatException at the {@code <scene>} element when the file has no camera
+     */
+    public Camera.Builder requireView() throws SceneFormatException {
+        if (view == null) throw noCamera;
+        return newView();
+    }
+
+    private Camera.Builder newView() {
+        Camera.Builder camera = Camera.getBuilder();
+        view.accept(camera);
         return camera;
     }
 

@@ -1,6 +1,7 @@
 package scene.io;
 
 import java.util.Objects;
+import java.util.function.Consumer;
 
 import primitives.Color;
 import renderer.AntiAliasing;
@@ -13,11 +14,14 @@ import scene.Scene;
  * How a scene file asks to be rendered: the image, the sampling, the tracer's extensions and the
  * execution. The defaults (see {@link #defaults(String)}) are the plain course render on all
  * cores. A command line overrides values with the {@code with…} methods and then
- * {@linkplain #applyTo(Camera.Builder, Scene) applies} the result to a camera builder.
+ * {@linkplain #applyTo(Camera.Builder, Scene, ImageWriter) applies} the result to a camera
+ * builder. The image size is checked here, so that settings that exist can be rendered as far as
+ * the pixel count goes: the image itself is allocated only when asked for.
  *
  * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise
- * @param width            image width in pixels
- * @param height           image height in pixels
+ * @param width            image width in pixels, at least 1
+ * @param height           image height in pixels, at least 1; width × height at most
+ *                         {@link #MAX_PIXELS}
  * @param gridInterval     a grid line every this many pixels over the image (the course's
  *                         {@code printGrid}); 0: no grid
  * @param gridColor        the grid lines' colour
@@ -44,11 +48,27 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     public static final int DEFAULT_SIZE = 500;
     /** The course's grid colour (java.awt.Color.YELLOW). */
     public static final Color DEFAULT_GRID_COLOR = new Color(255, 255, 0);
+    /**
+     * The most pixels an image can have: {@link ImageWriter} keeps them in one {@code int} array,
+     * and JVMs allocate arrays of at most {@code Integer.MAX_VALUE - 8} elements (ImageWriter's own
+     * limit, checked here without allocating).
+     */
+    public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
 
+    /**
+     * @throws IllegalArgumentException for a side below 1 pixel or more than {@link #MAX_PIXELS}
+     *                                  pixels, naming the size
+     */
     public RenderSettings {
         Objects.requireNonNull(imageName, "image name");
         Objects.requireNonNull(gridColor, "grid colour");
         Objects.requireNonNull(antiAliasing, "anti-aliasing mode");
+        if (width < 1 || height < 1)
+            throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
+        long pixels = (long) width * height;
+        if (pixels > MAX_PIXELS)
+            throw new IllegalArgumentException("image size " + width + "x" + height + " is " + pixels
+                    + " pixels, more than an image can hold (" + MAX_PIXELS + ")");
     }
 
     /**
@@ -58,63 +78,69 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * 16 shadow samples: the camera's and the tracer's own defaults, except the thread count.
      */
     public static RenderSettings defaults(String imageName) {
-        return new RenderSettings(imageName, DEFAULT_SIZE, DEFAULT_SIZE, 0, DEFAULT_GRID_COLOR,
-                AntiAliasing.NONE, 4, 4, 3, 8, 0, 0, 16, -2, 0, true, 16, 16);
+        Editor defaults = new Editor();
+        defaults.imageName = imageName;
+        return defaults.settings();
     }
 
     /** @return these settings with another image name and size */
     public RenderSettings withImage(String name, int width, int height) {
-        return new RenderSettings(name, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> {
+            e.imageName = name;
+            e.width = width;
+            e.height = height;
+        });
     }
 
     /** @return these settings with another grid overlay (interval 0: none) */
     public RenderSettings withGrid(int interval, Color color) {
-        return new RenderSettings(imageName, width, height, interval, color, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> {
+            e.gridInterval = interval;
+            e.gridColor = color;
+        });
     }
 
     /** @return these settings with another anti-aliasing mode (its parameters kept) */
     public RenderSettings withAntiAliasing(AntiAliasing mode) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, mode, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> e.antiAliasing = mode);
     }
 
     /** @return these settings with other anti-aliasing parameters */
     public RenderSettings withAntiAliasingParameters(int columns, int rows, int depth, double threshold) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, columns, rows,
-                depth, threshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize, shadowSamples);
+        return edit(e -> {
+            e.aaColumns = columns;
+            e.aaRows = rows;
+            e.adaptiveDepth = depth;
+            e.adaptiveThreshold = threshold;
+        });
     }
 
     /** @return these settings with another depth of field (focal distance 0: none) */
     public RenderSettings withDepthOfField(double focalDistance, double aperture, int samples) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, samples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> {
+            e.focalDistance = focalDistance;
+            e.aperture = aperture;
+            e.dofSamples = samples;
+        });
     }
 
     /** @return these settings with another thread count */
     public RenderSettings withThreads(int threads) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> e.threads = threads);
     }
 
     /** @return these settings with another seed */
     public RenderSettings withSeed(long seed) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> e.seed = seed);
     }
 
     /** @return these settings with other tracer extensions */
     public RenderSettings withTracer(boolean bvh, int beamSize, int shadowSamples) {
-        return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns, aaRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh, beamSize,
-                shadowSamples);
+        return edit(e -> {
+            e.bvh = bvh;
+            e.beamSize = beamSize;
+            e.shadowSamples = shadowSamples;
+        });
     }
 
     /** @return whether these settings ask for depth of field */
@@ -123,9 +149,10 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     }
 
     /**
-     * Sets everything but the view on {@code camera}: a new image writer of this name and size, a
-     * new {@link RayTracerBasic} for {@code scene} with these extensions, the sampling, seed and
-     * thread count. The view (location, direction, view plane) is left as it is.
+     * Sets everything but the view on {@code camera}: a new image writer of this name and size
+     * (this allocates the image: 4 bytes a pixel), a new {@link RayTracerBasic} for {@code scene}
+     * with these extensions, the sampling, seed and thread count. The view (location, direction,
+     * view plane) is left as it is.
      *
      * @return {@code camera}, for chaining
      * @throws IllegalArgumentException for a value the camera or tracer refuses
@@ -134,24 +161,27 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         return applyTo(camera, scene, newImageWriter());
     }
 
-    /** @return a new, black image writer of this name and size */
+    /** @return a new, black image writer of this name and size (4 bytes a pixel) */
     public ImageWriter newImageWriter() {
         return new ImageWriter(imageName, width, height);
     }
 
     /**
      * As {@link #applyTo(Camera.Builder, Scene)}, with an image writer of the caller's (which
-     * keeps a reference to it, e.g. to write it elsewhere than images/).
+     * keeps a reference to it, e.g. to write it elsewhere than images/, or to allocate it where
+     * it can report a lack of memory); its size is the caller's business.
      */
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
         camera.setImageWriter(image)
                 .setRayTracer(new RayTracerBasic(scene).setBvh(bvh).setBeamSize(beamSize).setShadowSamples(shadowSamples))
                 .setAntiAliasing(antiAliasing)
-                .setAntiAliasingGrid(aaColumns, aaRows) // the grid is RANDOM's; kept for a later --aa RANDOM
                 .setAdaptive(adaptiveDepth, adaptiveThreshold)
                 .setDepthOfFieldSamples(dofSamples)
                 .setSeed(seed)
                 .setMultithreading(threads);
+        // The camera takes a grid only with RANDOM (for the other modes the settings merely keep
+        // it, for a later --aa random).
+        if (antiAliasing == AntiAliasing.RANDOM) camera.setAntiAliasingGrid(aaColumns, aaRows);
         // Aperture 0 is the pinhole camera whatever the focal distance: this also undoes an earlier
         // depth of field on a reused builder.
         if (hasDepthOfField()) camera.setDepthOfField(focalDistance, aperture);
@@ -162,5 +192,69 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     /** Draws the grid over a rendered image when these settings ask for one. */
     public void drawGrid(Camera camera) {
         if (gridInterval > 0) camera.printGrid(gridInterval, gridColor);
+    }
+
+    /** A copy of these settings with the fields {@code change} assigns, by name. */
+    private RenderSettings edit(Consumer<Editor> change) {
+        Editor editor = new Editor(this);
+        change.accept(editor);
+        return editor.settings();
+    }
+
+    /**
+     * The settings as named, mutable fields, so that each {@code with…} method assigns what it
+     * changes by name: the record's constructor, whose 18 arguments include adjacent ones of the
+     * same type, is called in one place only. Starts from the defaults (see
+     * {@link #defaults(String)}).
+     */
+    private static final class Editor {
+        String imageName;
+        int width = DEFAULT_SIZE;
+        int height = DEFAULT_SIZE;
+        int gridInterval = 0;
+        Color gridColor = DEFAULT_GRID_COLOR;
+        AntiAliasing antiAliasing = AntiAliasing.NONE;
+        int aaColumns = 4;
+        int aaRows = 4;
+        int adaptiveDepth = 3;
+        double adaptiveThreshold = 8;
+        double focalDistance = 0;
+        double aperture = 0;
+        int dofSamples = 16;
+        int threads = -2;
+        long seed = 0;
+        boolean bvh = true;
+        int beamSize = 16;
+        int shadowSamples = 16;
+
+        Editor() {
+        }
+
+        Editor(RenderSettings s) {
+            imageName = s.imageName;
+            width = s.width;
+            height = s.height;
+            gridInterval = s.gridInterval;
+            gridColor = s.gridColor;
+            antiAliasing = s.antiAliasing;
+            aaColumns = s.aaColumns;
+            aaRows = s.aaRows;
+            adaptiveDepth = s.adaptiveDepth;
+            adaptiveThreshold = s.adaptiveThreshold;
+            focalDistance = s.focalDistance;
+            aperture = s.aperture;
+            dofSamples = s.dofSamples;
+            threads = s.threads;
+            seed = s.seed;
+            bvh = s.bvh;
+            beamSize = s.beamSize;
+            shadowSamples = s.shadowSamples;
+        }
+
+        RenderSettings settings() {
+            return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns,
+                    aaRows, adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh,
+                    beamSize, shadowSamples);
+        }
     }
 }

@@ -20,16 +20,13 @@ import java.nio.CharBuffer;
 import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.AccessDeniedException;
-import java.nio.file.FileSystemException;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.MissingResourceException;
+import java.util.function.Consumer;
 
 import geometries.Cylinder;
 import geometries.Geometry;
@@ -51,6 +48,8 @@ import primitives.Ray;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.ImageWriter;
+import renderer.RayTracerBasic;
 import scene.Scene;
 
 /**
@@ -141,8 +140,8 @@ public final class XmlSceneReader {
         RenderSettings settings = RenderSettings.defaults(scene.name);
         if ((part = parts.get("image")) != null) settings = image(part, settings);
         if ((part = parts.get("render")) != null) settings = render(part, settings);
-        Camera.Builder camera = (part = parts.get("camera")) != null ? camera(part, settings, scene) : null;
-        return new LoadedScene(scene, camera, settings, camera != null ? null
+        Consumer<Camera.Builder> view = (part = parts.get("camera")) != null ? camera(part, scene) : null;
+        return new LoadedScene(scene, view, settings, view != null ? null
                 : root.error("the scene has no <camera> (expected a <camera> element inside <scene> to render it)"));
     }
 
@@ -314,16 +313,8 @@ public final class XmlSceneReader {
         } catch (ObjFormatException ex) {
             throw e.errorAt("file", e.quote("file") + ": " + ex.getMessage() + " (expected " + expected + ")", ex);
         } catch (IOException ex) {
-            throw e.errorAt("file", e.quote("file") + ": cannot read " + obj + ": " + why(ex) + " (expected " + expected + ")", ex);
+            throw e.errorAt("file", e.quote("file") + ": cannot read " + obj + ": " + Messages.reason(ex) + " (expected " + expected + ")", ex);
         }
-    }
-
-    /** The reason a file could not be read, in a few words. */
-    static String why(IOException e) {
-        if (e instanceof NoSuchFileException) return "no such file";
-        if (e instanceof AccessDeniedException) return "access denied";
-        if (e instanceof FileSystemException f && f.getReason() != null) return f.getReason();
-        return e.getMessage() != null ? e.getMessage() : e.getClass().getSimpleName();
     }
 
     /** Required attributes p0 … p(n-1). */
@@ -367,8 +358,16 @@ public final class XmlSceneReader {
     private static RenderSettings image(XmlElement e, RenderSettings s) throws SceneFormatException {
         e.allowAttributes(List.of("name", "width", "height", "grid-interval", "grid-color"));
         noChildren(e);
-        s = s.withImage(e.optional("name", TEXT, s.imageName()), e.optional("width", POSITIVE_INTEGER, s.width()),
-                e.optional("height", POSITIVE_INTEGER, s.height()));
+        String name = e.optional("name", TEXT, s.imageName());
+        int width = e.optional("width", POSITIVE_INTEGER, s.width());
+        int height = e.optional("height", POSITIVE_INTEGER, s.height());
+        try {
+            s = s.withImage(name, width, height);
+        } catch (IllegalArgumentException ex) { // too many pixels: each side alone is valid
+            String at = e.has("width") ? "width" : "height";
+            throw e.errorAt(at, e.quote(at) + ": " + ex.getMessage() + " (expected width × height at most "
+                    + RenderSettings.MAX_PIXELS + " pixels)", ex);
+        }
         return s.withGrid(e.optional("grid-interval", POSITIVE_INTEGER, 0), e.optional("grid-color", COLOR, s.gridColor()));
     }
 
@@ -397,39 +396,51 @@ public final class XmlSceneReader {
         return s;
     }
 
-    private static Camera.Builder camera(XmlElement e, RenderSettings settings, Scene scene)
-            throws SceneFormatException {
+    /**
+     * The camera's view (location, direction, view plane), as an action that sets it on a builder:
+     * the image and the tracer are not the reader's to allocate, but whoever renders makes them
+     * once, at the final size (see {@link LoadedScene}).
+     */
+    private static Consumer<Camera.Builder> camera(XmlElement e, Scene scene) throws SceneFormatException {
         e.allowAttributes(List.of("location", "direction", "up", "target", "vp-size", "vp-distance"));
         noChildren(e);
-        Camera.Builder camera = Camera.getBuilder().setLocation(e.required("location", POINT));
+        Point location = e.required("location", POINT);
         if (e.has("direction") && e.has("target"))
             throw e.errorAt("target", "<camera> takes either direction and up, or target, not both"
                     + " (expected one of the two forms)");
+        Consumer<Camera.Builder> direction;
         if (e.has("direction")) {
             Vector to = e.required("direction", VECTOR);
             Vector up = e.required("up", VECTOR);
             try {
-                camera.setDirection(to, up);
+                Camera.getBuilder().setDirection(to, up); // checked here to report it at 'up'
             } catch (IllegalArgumentException ex) {
                 throw e.errorAt("up", "invalid <camera>: " + ex.getMessage()
-                        + " (expected an up vector orthogonal to the direction)");
+                        + " (expected an up vector orthogonal to the direction)", ex);
             }
+            direction = camera -> camera.setDirection(to, up);
         } else if (e.has("target")) {
             Point target = e.required("target", POINT);
-            if (e.has("up")) camera.setDirection(target, e.required("up", VECTOR));
-            else camera.setDirection(target);
+            Vector up = e.optional("up", VECTOR, null);
+            direction = up != null ? camera -> camera.setDirection(target, up) : camera -> camera.setDirection(target);
         } else {
             throw e.error("<camera> is missing its view direction (expected attributes direction and up, or target)");
         }
         double[] size = e.required("vp-size", SIZE);
-        camera.setVpSize(size[0], size[1]).setVpDistance(e.required("vp-distance", POSITIVE));
+        double distance = e.required("vp-distance", POSITIVE);
+        Consumer<Camera.Builder> view = camera -> direction
+                .accept(camera.setLocation(location).setVpSize(size[0], size[1]).setVpDistance(distance));
+
+        // The checks that need every part (target at the location, up along the view) are
+        // Camera.build()'s: a probe runs them with a 1x1 image and a tracer that is never prepared.
+        Camera.Builder probe = Camera.getBuilder();
+        view.accept(probe);
         try {
-            settings.applyTo(camera, scene);
-            camera.build(); // the checks that need every part: target at the location, up along the view
-        } catch (IllegalArgumentException | MissingResourceException ex) {
+            probe.setImageWriter(new ImageWriter("probe", 1, 1)).setRayTracer(new RayTracerBasic(scene)).build();
+        } catch (IllegalArgumentException ex) {
             throw e.error("invalid <camera>: " + ex.getMessage()
                     + " (expected a target away from the location and an up not along the view direction)", ex);
         }
-        return camera;
+        return view;
     }
 }

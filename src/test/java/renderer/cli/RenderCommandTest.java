@@ -4,13 +4,16 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import java.awt.image.BufferedImage;
 import java.io.ByteArrayOutputStream;
+import java.io.File;
 import java.io.IOException;
 import java.io.PrintStream;
+import java.net.URISyntaxException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -26,6 +29,9 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
+import picocli.CommandLine;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
@@ -38,6 +44,9 @@ import scene.samples.Showcase;
  * tiny; every image goes to the test's temporary folder.
  */
 class RenderCommandTest {
+    /** The jar's Main-Class (pom.xml's main.class). */
+    private static final String MAIN_CLASS = "renderer.cli.Main";
+
     @TempDir
     Path dir;
 
@@ -93,6 +102,27 @@ class RenderCommandTest {
         return write("small.xml", SMALL);
     }
 
+    /** Runs the jar's entry point in a new JVM with this JVM's Java, the classes and picocli. */
+    private Run runJava(String heap, String... args) throws IOException, InterruptedException {
+        String classPath = location(RenderCommand.class) + File.pathSeparator + location(CommandLine.class);
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                heap, "-cp", classPath, MAIN_CLASS));
+        command.addAll(List.of(args));
+        Process process = new ProcessBuilder(command).directory(dir.toFile())
+                .redirectOutput(dir.resolve("stdout.txt").toFile()).redirectError(dir.resolve("stderr.txt").toFile()).start();
+        assertThat(process.waitFor(60, TimeUnit.SECONDS)).as("the command ends").isTrue();
+        return new Run(process.exitValue(), Files.readString(dir.resolve("stdout.txt")),
+                Files.readString(dir.resolve("stderr.txt")));
+    }
+
+    private static String location(Class<?> type) {
+        try {
+            return Path.of(type.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
+        } catch (URISyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
     private static BufferedImage image(Path png) throws IOException {
         BufferedImage image = ImageIO.read(png.toFile());
         assertThat(image).as("a PNG at " + png).isNotNull();
@@ -113,10 +143,34 @@ class RenderCommandTest {
         }
 
         @Test
+        @DisplayName("--help explains every option and parameter, and lists the three exit codes")
+        void helpIsComplete() {
+            String help = run("--help").out();
+            CommandSpec spec = RenderCommand.commandLine(System.out, System.err, false).getCommandSpec();
+            for (OptionSpec option : spec.options()) {
+                assertThat(option.description()).as(option.longestName()).isNotEmpty();
+                assertThat(help).contains(option.longestName()).contains(option.description()[0].substring(0, 20));
+            }
+            assertThat(spec.positionalParameters()).allSatisfy(p -> assertThat(p.description()).isNotEmpty());
+            assertThat(help.lines().filter(l -> l.matches("  [012]   \\S.*"))).hasSize(3);
+        }
+
+        @Test
         void version() {
             Run r = run("--version");
             assertThat(r.exitCode()).isZero();
             assertThat(r.out()).startsWith("render (raytracer) ");
+        }
+
+        @Test
+        @DisplayName("the jar's entry point runs the command and exits with its code")
+        void entryPoint() throws Exception {
+            Run version = runJava("-Xmx64m", "--version");
+            assertThat(version.exitCode()).isZero();
+            assertThat(version.out()).startsWith("render (raytracer) ");
+            Run usage = runJava("-Xmx64m", "--width", "0");
+            assertThat(usage.exitCode()).isEqualTo(2);
+            assertThat(usage.err()).startsWith("render: --width must be at least 1, got 0");
         }
     }
 
@@ -125,7 +179,7 @@ class RenderCommandTest {
     class UsageErrors {
         @ParameterizedTest(name = "{0}")
         @ValueSource(strings = { "--width 0", "--height -3", "--threads -1", "--aa fast", "--seed x", "--bogus",
-                "-o out.jpg", "a.xml b.xml" })
+                "-o out.jpg", "a.xml b.xml", "--width 50000 --height 50000" })
         void usageError(String arguments) throws IOException {
             List<String> args = new ArrayList<>(List.of(arguments.split(" ")));
             if (!arguments.startsWith("-o")) args.addAll(List.of("-o", dir.resolve("out.png").toString()));
@@ -147,6 +201,26 @@ class RenderCommandTest {
             assertThat(run("--width", "0").errLines().get(0)).isEqualTo("render: --width must be at least 1, got 0");
             assertThat(run("--threads", "-1").errLines().get(0)).isEqualTo(
                     "render: --threads: thread count must be 0 (calling thread), a positive number or -2 (all cores), got -1");
+            // 50000 × 50000 = 2,500,000,000 > 2^31 - 9 = 2,147,483,639 pixels (one int array).
+            assertThat(run("--width", "50000", "--height", "50000").errLines().get(0)).isEqualTo(
+                    "render: --width/--height: image size 50000x50000 is 2500000000 pixels, more than an image can hold"
+                            + " (2147483639)");
+        }
+
+        /**
+         * A file 1 pixel wide and 1000 high: --width 4300000 alone makes the height 4.3e9, beyond
+         * an int (it must not wrap around to a small height and render a stretched image).
+         */
+        @Test
+        @DisplayName("one side whose aspect-ratio partner is beyond an int")
+        void otherSideTooLarge() throws IOException {
+            Path file = write("tall.xml", SMALL.replace("width=\"40\" height=\"20\"", "width=\"1\" height=\"1000\""));
+            Run r = run(file.toString(), "-o", dir.resolve("out.png").toString(), "--width", "4300000");
+            assertThat(r.exitCode()).isEqualTo(2);
+            assertThat(r.errLines()).containsExactly(
+                    "render: --width 4300000 at the file's aspect ratio makes the other side 4300000000 pixels,"
+                            + " more than an image can hold",
+                    "Try 'render --help' for more information.");
         }
     }
 
@@ -341,6 +415,63 @@ class RenderCommandTest {
             assertThat(r.out()).isEmpty();
             assertThat(r.err()).isEmpty();
             assertThat(png).exists();
+        }
+    }
+
+    /**
+     * The command in a JVM of its own with a small heap (64 MB), as {@code java -Xmx64m -jar}
+     * runs it: the file asks for 40000 × 40000 pixels, 6.4 GB.
+     */
+    @Nested
+    @DisplayName("memory: the image is allocated once, at its final size")
+    class Memory {
+        private static final String HUGE = SMALL.replace("width=\"40\" height=\"20\"", "width=\"40000\" height=\"40000\"");
+
+        @Test
+        @DisplayName("--width makes the file's huge image small: nothing of the file's size is allocated")
+        void overriddenSize() throws Exception {
+            Path png = dir.resolve("out.png");
+            Run r = runJava("-Xmx64m", write("huge.xml", HUGE).toString(), "-o", png.toString(), "--width", "20", "--quiet");
+            assertWritten(r, png, 20, 20);
+        }
+
+        /** A quiet run that succeeded: nothing printed, exit code 0, a PNG of this size. */
+        private static void assertWritten(Run r, Path png, int width, int height) throws IOException {
+            assertThat(r.err()).isEmpty();
+            assertThat(r.exitCode()).isZero();
+            assertThat(new int[] { image(png).getWidth(), image(png).getHeight() }).containsExactly(width, height);
+        }
+
+        /** 40000² pixels × 4 bytes = 6,400,000,000 bytes = 6103.5 MiB, rounded up. */
+        @Test
+        @DisplayName("an image that does not fit: exit code 1, one line with the memory it needs, no stack trace")
+        void notEnoughMemory() throws Exception {
+            Path png = dir.resolve("out.png");
+            Run r = runJava("-Xmx64m", write("huge.xml", HUGE).toString(), "-o", png.toString());
+            assertThat(r.exitCode()).isEqualTo(1);
+            assertThat(r.errLines()).hasSize(1);
+            assertThat(r.errLines().get(0)).matches(
+                    "render: image 40000x40000 needs 6104 MB; Java may use at most \\d+ MB here \\(render it smaller with"
+                            + " --width or --height, or give Java more memory with -Xmx\\)");
+            assertThat(png).doesNotExist();
+        }
+
+        /**
+         * 2000 × 2000 pixels are 16 MB: they fit once in a 32 MB heap, not twice (as they did
+         * when writing the PNG copied the pixels into a BufferedImage).
+         */
+        @Test
+        @DisplayName("an image that fits in memory once is rendered and written: writing makes no copy of it")
+        void fitsOnce() throws Exception {
+            Path scene = write("empty.xml", """
+                    <scene name="empty">
+                        <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="1" vp-distance="1"/>
+                        <image width="2000" height="2000"/>
+                    </scene>
+                    """);
+            Path png = dir.resolve("out.png");
+            Run r = runJava("-Xmx32m", scene.toString(), "-o", png.toString(), "--quiet");
+            assertWritten(r, png, 2000, 2000);
         }
     }
 

@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
 /**
@@ -111,6 +112,15 @@ class SceneFormatErrorTest {
                         "adaptive depth must be in 1..6, got 7 (expected an integer from 1 to 6)"),
                 Arguments.of("a zero image width", inScene("<image width=\"0\"/>"), 2, 10,
                         "0 is less than 1 (expected an integer ≥ 1)"),
+                // 50000 × 50000 = 2,500,000,000 > 2^31 - 9 = 2,147,483,639 pixels (one int array).
+                Arguments.of("an image of too many pixels, before a camera: at <image width>, not at <camera>",
+                        inScene("<image width=\"50000\" height=\"50000\"/>\n  <camera location=\"0 0 0\" target=\"0 0 -1\""
+                                + " vp-size=\"1\" vp-distance=\"1\"/>"), 2, 10,
+                        "<image width=\"50000\">: image size 50000x50000 is 2500000000 pixels, more than an image can hold"
+                                + " (2147483639) (expected width × height at most 2147483639 pixels)"),
+                Arguments.of("an image of too many pixels by its height alone (width 500 by default): at height",
+                        inScene("<image height=\"5000000\"/>"), 2, 10,
+                        "<image height=\"5000000\">: image size 500x5000000 is 2500000000 pixels"),
                 Arguments.of("camera without a direction",
                         inScene("<camera location=\"0 0 0\" vp-size=\"1\" vp-distance=\"1\"/>"), 2, 3,
                         "<camera> is missing its view direction (expected attributes direction and up, or target)"),
@@ -134,6 +144,19 @@ class SceneFormatErrorTest {
         assertThat(new int[] { e.getLine(), e.getColumn() }).as("line and column").containsExactly(line, column);
         assertThat(e.getMessage()).isEqualTo(file + ":" + line + ":" + column + ": " + e.getReason())
                 .doesNotContain("\n");
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+            "up not orthogonal to the direction | location=\"0 0 0\" direction=\"0 0 -1\" up=\"0 1 1\"",
+            "target at the location             | location=\"1 2 3\" target=\"1 2 3\"" })
+    @DisplayName("a camera the library refuses: the library's exception is the cause, its message in the reason")
+    void cameraCause(String name, String view) throws IOException {
+        Path file = dir.resolve("camera.xml");
+        Files.writeString(file, inScene("<camera " + view + " vp-size=\"1\" vp-distance=\"1\"/>"));
+        SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+        assertThat(e.getCause()).isInstanceOf(IllegalArgumentException.class);
+        assertThat(e.getReason()).contains(e.getCause().getMessage());
     }
 
     @Test

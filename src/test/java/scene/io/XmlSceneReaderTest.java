@@ -1,12 +1,15 @@
 package scene.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.MissingResourceException;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
@@ -36,6 +39,8 @@ import primitives.Ray;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.ImageWriter;
+import renderer.RayTracerBasic;
 import renderer.RenderStats;
 
 /** Every element and attribute of the scene format, read into the library's objects. */
@@ -75,6 +80,12 @@ class XmlSceneReaderTest {
     private static void assertPoint(Point actual, double x, double y, double z) {
         assertThat(new double[] { actual.getX(), actual.getY(), actual.getZ() })
                 .containsExactly(new double[] { x, y, z }, within(1e-12));
+    }
+
+    /** The camera of a view builder, completed with a 2×2 image and a tracer of the loaded scene. */
+    private static Camera withSmallImage(Camera.Builder view, LoadedScene loaded) {
+        return view.setImageWriter(new ImageWriter("small", 2, 2)).setRayTracer(new RayTracerBasic(loaded.scene()))
+                .build();
     }
 
     private static boolean hits(Intersectable geometry, Point from, Vector direction) {
@@ -390,6 +401,30 @@ class XmlSceneReaderTest {
         }
 
         @Test
+        @DisplayName("requireView: the view alone, without image or tracer")
+        void viewOnly() throws Exception {
+            LoadedScene loaded = readScene(
+                    "<camera location=\"1 2 3\" target=\"1 2 0\" vp-size=\"4 2\" vp-distance=\"5\"/>");
+            Camera.Builder view = loaded.requireView();
+            assertThatThrownBy(view::build).isInstanceOf(MissingResourceException.class).hasMessageContaining("image writer");
+            Camera camera = withSmallImage(view, loaded);
+            assertPoint(camera.getLocation(), 1, 2, 3);
+            assertPoint(camera.getVTo(), 0, 0, -1);
+        }
+
+        @Test
+        @DisplayName("each requireCamera and requireView is a new builder: changing one leaves the next alone")
+        void newBuilders() throws Exception {
+            LoadedScene loaded = readScene(
+                    "<camera location=\"0 0 0\" direction=\"0 0 -1\" up=\"0 1 0\" vp-size=\"1\" vp-distance=\"1\"/>");
+            Camera.Builder first = loaded.requireCamera();
+            assertThat(loaded.requireCamera()).isNotSameAs(first);
+            first.setLocation(new Point(9, 9, 9));
+            assertPoint(loaded.requireCamera().build().getLocation(), 0, 0, 0);
+            assertPoint(withSmallImage(loaded.requireView(), loaded).getLocation(), 0, 0, 0);
+        }
+
+        @Test
         @DisplayName("one vp-size number makes a square view plane")
         void squareViewPlane() throws Exception {
             Camera c = camera("location=\"0 0 0\" direction=\"0 0 -1\" up=\"0 1 0\" vp-size=\"100\" vp-distance=\"50\"");
@@ -471,6 +506,24 @@ class XmlSceneReaderTest {
                     <render><anti-aliasing mode="adaptive" depth="5" threshold="2.5"/></render>""")
                     .requireCamera().build();
             assertThat(camera.describe()).startsWith("ADAPTIVE depth 5 threshold 2.5, bvh on, beam 16, shadow samples 16");
+        }
+
+        /**
+         * 46340 × 46340 pixels is just below the limit of one int array, and 8.6 GB: more than the
+         * test JVM may use (else the test is skipped), so reading fails with an
+         * OutOfMemoryError if it allocates the image.
+         */
+        @Test
+        @DisplayName("an image larger than the memory: reading the file allocates nothing of its size")
+        void hugeImage() throws Exception {
+            int side = 46340;
+            assumeTrue((long) side * side * Integer.BYTES > Runtime.getRuntime().maxMemory(),
+                    "the JVM could allocate the image");
+            LoadedScene loaded = readScene("""
+                    <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="10" vp-distance="10"/>
+                    <image width="46340" height="46340"/>""");
+            assertThat(new int[] { loaded.settings().width(), loaded.settings().height() }).containsExactly(side, side);
+            assertPoint(withSmallImage(loaded.requireView(), loaded).getVTo(), 0, 0, -1);
         }
 
         @Test
