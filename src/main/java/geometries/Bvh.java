@@ -24,6 +24,8 @@ public final class Bvh extends Intersectable {
     private static final int MAX_LEAF = 4;
     /** Cost of visiting a node relative to testing one primitive, for the SAH. */
     private static final double TRAVERSAL_COST = 1.0;
+    /** Nodes with more primitives than this are binned along their widest axis only. */
+    private static final int FULL_SEARCH_LIMIT = 1 << 16;
 
     /** The leaves this tree indexes, as collected: what it contributes to a tree built around it. */
     private final Intersectable[] leaves;
@@ -331,17 +333,22 @@ public final class Bvh extends Intersectable {
             box[o + 4] = by1;
             box[o + 5] = bz1;
             int n = end - start;
-            // Bin along the axis where the centroids spread most (as pbrt does): a third of the
-            // work of trying all three, for trees of nearly the same quality.
-            double ex = cx1 - cx0, ey = cy1 - cy0, ez = cz1 - cz0;
-            int a = ex >= ey && ex >= ez ? 0 : ey >= ez ? 1 : 2;
-            double lo = a == 0 ? cx0 : a == 1 ? cy0 : cz0;
-            double extent = a == 0 ? ex : a == 1 ? ey : ez;
+            // Binned SAH over every axis whose centroids spread; for very large nodes only along
+            // the widest one (as pbrt does), a third of the work for trees of nearly the same
+            // quality where it matters for build time. Small and medium nodes get the full search:
+            // it makes measurably better trees (fewer box tests per ray).
+            double[] extentOf = { cx1 - cx0, cy1 - cy0, cz1 - cz0 };
+            double[] lowOf = { cx0, cy0, cz0 };
+            int widest = extentOf[0] >= extentOf[1] && extentOf[0] >= extentOf[2] ? 0 : extentOf[1] >= extentOf[2] ? 1 : 2;
             int mid = -1;
-            if (n > 1 && extent > 0) {
+            double bestCost = Double.POSITIVE_INFINITY;
+            int bestBin = -1, bestAxis = -1;
+            double parentArea = (bx1 - bx0) * (by1 - by0) + (by1 - by0) * (bz1 - bz0) + (bz1 - bz0) * (bx1 - bx0);
+            for (int a = 0; a < 3 && n > 1; ++a) {
+                if (!(extentOf[a] > 0) || (n > FULL_SEARCH_LIMIT && a != widest)) continue;
                 java.util.Arrays.fill(binCount, 0);
                 for (int k = 0; k < BINS; ++k) resetBox(binBox, k);
-                double scale = BINS / extent;
+                double lo = lowOf[a], scale = BINS / extentOf[a];
                 for (int i = start; i < end; ++i) {
                     int p = order[i];
                     int k = bin(centroid[p * 3 + a], lo, scale);
@@ -355,9 +362,7 @@ public final class Bvh extends Intersectable {
                     rightArea[k] = halfArea(acc, 0);
                 }
                 resetBox(acc, 0);
-                double parentArea = (bx1 - bx0) * (by1 - by0) + (by1 - by0) * (bz1 - bz0) + (bz1 - bz0) * (bx1 - bx0);
-                double bestCost = Double.POSITIVE_INFINITY;
-                int bestBin = -1, leftCount = 0;
+                int leftCount = 0;
                 for (int k = 0; k < BINS - 1; ++k) {
                     growBox(acc, 0, binBox, k);
                     leftCount += binCount[k];
@@ -367,19 +372,21 @@ public final class Bvh extends Intersectable {
                     if (cost < bestCost) {
                         bestCost = cost;
                         bestBin = k;
+                        bestAxis = a;
                     }
                 }
-                if (bestBin >= 0 && (bestCost < n || n > MAX_LEAF)) {
-                    // Stable partition through the shared scratch buffer: deterministic order.
-                    int l = start, r = 0;
-                    for (int i = start; i < end; ++i) {
-                        int p = order[i];
-                        if (bin(centroid[p * 3 + a], lo, scale) <= bestBin) order[l++] = p;
-                        else scratch[r++] = p;
-                    }
-                    System.arraycopy(scratch, 0, order, l, r);
-                    mid = l;
+            }
+            if (bestBin >= 0 && (bestCost < n || n > MAX_LEAF)) {
+                // Stable partition through the shared scratch buffer: deterministic order.
+                double lo = lowOf[bestAxis], scale = BINS / extentOf[bestAxis];
+                int l = start, r = 0;
+                for (int i = start; i < end; ++i) {
+                    int p = order[i];
+                    if (bin(centroid[p * 3 + bestAxis], lo, scale) <= bestBin) order[l++] = p;
+                    else scratch[r++] = p;
                 }
+                System.arraycopy(scratch, 0, order, l, r);
+                mid = l;
             }
             if (mid < 0 && n > MAX_LEAF) {
                 // All centroids coincide: split the range in half to bound the leaf size.
