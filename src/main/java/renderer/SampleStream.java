@@ -13,13 +13,19 @@ package renderer;
 final class SampleStream {
     private static final long GOLDEN = 0x9E37_79B9_7F4A_7C15L;
     private long state;
+    // The key of the last reset; hashed into the state only when a number is first drawn, since
+    // most samples of a plain render (no lens, no glossy surface, no area light) draw none.
+    private long seed;
+    private int x, y, index;
+    private boolean pending;
 
     /** Positions the stream at the start of the numbers of sample {@code index} of pixel (x, y). */
     SampleStream reset(long seed, int x, int y, int index) {
-        long h = mix(seed + GOLDEN);
-        h = mix(h ^ (x * 0xD1B5_4A32_D192_ED03L));
-        h = mix(h ^ (y * 0xABC9_8388_FB8F_AC03L));
-        state = mix(h ^ (index * 0x8CB9_2BA7_2F3D_8DD7L));
+        this.seed = seed;
+        this.x = x;
+        this.y = y;
+        this.index = index;
+        pending = true;
         return this;
     }
 
@@ -29,6 +35,13 @@ final class SampleStream {
     }
 
     long nextLong() {
+        if (pending) {
+            long h = mix(seed + GOLDEN);
+            h = mix(h ^ (x * 0xD1B5_4A32_D192_ED03L));
+            h = mix(h ^ (y * 0xABC9_8388_FB8F_AC03L));
+            state = mix(h ^ (index * 0x8CB9_2BA7_2F3D_8DD7L));
+            pending = false;
+        }
         state += GOLDEN;
         return mix(state);
     }
