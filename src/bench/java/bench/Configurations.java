@@ -41,6 +41,12 @@ final class Configurations {
                 list.add(new Configuration("teapot", "teapot", TeapotScene::create, "teapot (992 tri + 400 spheres)",
                         bvh ? "BVH" : "flat (no BVH)", side, side, threads, bvh, 0, 1,
                         scene -> TeapotScene.camera().setRayTracer(new RayTracerBasic(scene).setBvh(bvh))));
+        // The tracing core alone (camera rays through the BVH, closest hit, no shading): the
+        // figure comparable with Embree's primary-ray rate.
+        for (int threads : new int[] { 1, 2 })
+            list.add(new Configuration("teapot", "teapot", TeapotScene::create, "teapot (992 tri + 400 spheres)",
+                    "primary rays only (closest hit, no shading)", side, side, threads, true, 0, 1,
+                    scene -> TeapotScene.camera().setRayTracer(new PrimaryRayTracer(scene))));
     }
 
     /** The second report's glossy wall with beams of 1, 5, 10 and 50 rays, 2 threads. */

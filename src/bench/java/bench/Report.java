@@ -81,7 +81,8 @@ final class Report {
 
     private static String barTable(List<Measurement> results) {
         List<Bar> bars = new ArrayList<>();
-        Predicate<Configuration> teapot = c -> c.group().equals("teapot") && c.width() == 1000;
+        Predicate<Configuration> primary = c -> c.settings().startsWith("primary rays");
+        Predicate<Configuration> teapot = c -> c.group().equals("teapot") && c.width() == 1000 && !primary.test(c);
         bars.add(new Bar("course teapot 1000×1000, no acceleration, 1 thread", 25, "25 s",
                 teapot.and(c -> !c.bvh() && c.threads() == 1), 1, "", Double.NaN));
         bars.add(new Bar("course teapot 1000×1000, no acceleration, all cores", 9.3, "9.3 s",
@@ -123,9 +124,14 @@ final class Report {
         s.append("\n| measure | ours | target | met? |\n|---|--:|--:|---|\n");
         bvh2.ifPresent(m -> {
             double rate = m.cameraMraysPerSecond();
-            s.append(String.format(Locale.ROOT, "| teapot camera rays, BVH, 2 threads (Mrays/s) | %.2f | ≥ 15 | %s |%n",
+            s.append(String.format(Locale.ROOT, "| teapot camera rays in the full render (shaded, shadows), BVH, 2 threads (Mrays/s) | %.2f | ≥ 15 | %s |%n",
                     rate, rate >= 15 ? "yes" : "**no**"));
-            s.append(String.format(Locale.ROOT, "| … as a fraction of Embree's ~37 Mrays/s (within 2× = ≥ 0.50) | %.2f | ≥ 0.50 | %s |%n",
+        });
+        find(results, c -> c.group().equals("teapot") && c.width() == 1000 && primary.test(c) && c.threads() == 2).ifPresent(m -> {
+            double rate = m.cameraMraysPerSecond();
+            s.append(String.format(Locale.ROOT, "| teapot primary rays, tracing core only (closest hit, no shading), 2 threads (Mrays/s) | %.2f | ≥ 15 | %s |%n",
+                    rate, rate >= 15 ? "yes" : "**no**"));
+            s.append(String.format(Locale.ROOT, "| … as a fraction of Embree's ~37 Mrays/s primary rays (within 2× = ≥ 0.50) | %.2f | ≥ 0.50 | %s |%n",
                     rate / 37, rate / 37 >= 0.5 ? "yes" : "**no**"));
         });
         if (bvh1.isPresent() && bvh2.isPresent()) {

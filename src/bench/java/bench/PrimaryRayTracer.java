@@ -1,0 +1,33 @@
+package bench;
+
+import geometries.Bvh;
+import geometries.Hit;
+import primitives.Color;
+import primitives.Ray;
+import renderer.RayTracerBase;
+import scene.Scene;
+
+/**
+ * The tracing core alone, for comparison with Embree's primary-ray figure: each camera ray is one
+ * closest-hit query through the BVH, with no shading, shadow or secondary rays. White where
+ * something is hit, black elsewhere (so the picture still shows the scene's silhouette).
+ *
+ * <p>It runs through the library's own render loop (tiles, threads, ray generation), so the rate
+ * it gives includes generating the camera rays, as a render's would.
+ */
+final class PrimaryRayTracer extends RayTracerBase {
+    private static final Color WHITE = new Color(255, 255, 255);
+    private final Bvh bvh;
+    // One hit record per thread: a tracer outside the renderer package gets no worker context.
+    private final ThreadLocal<Hit> hits = ThreadLocal.withInitial(Hit::new);
+
+    PrimaryRayTracer(Scene scene) {
+        super(scene);
+        this.bvh = Bvh.build(scene.geometries);
+    }
+
+    @Override
+    public Color traceRay(Ray ray) {
+        return bvh.closestHit(ray, hits.get().reset(Double.POSITIVE_INFINITY)) ? WHITE : Color.BLACK;
+    }
+}
