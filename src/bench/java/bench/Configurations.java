@@ -28,6 +28,7 @@ final class Configurations {
         if (o.groups().contains("teapot")) teapot(o, list);
         if (o.groups().contains("glossy")) glossy(o, list);
         if (o.groups().contains("showcase")) showcase(o, list);
+        if (o.groups().contains("aa")) antiAliasing(o, list);
         if (o.groups().contains("scaling")) scaling(o, list);
         if (o.match() != null) list.removeIf(c -> !o.match().matcher(c.describe()).find());
         return list;
@@ -71,6 +72,28 @@ final class Configurations {
                 scene -> showcaseCamera(scene).setAntiAliasing(AntiAliasing.RANDOM, big, big)));
         list.add(showcase(label, "RANDOM " + huge + "×" + huge, side, 0.25,
                 scene -> showcaseCamera(scene).setAntiAliasing(AntiAliasing.RANDOM, huge, huge)));
+    }
+
+    /**
+     * Every anti-aliasing mode on the showcase, on 1 and 2 threads: wall time, rays and samples
+     * per pixel of each mode, and the 2-thread speed-up (issue 3's report).
+     */
+    private static void antiAliasing(Options o, List<Configuration> list) {
+        int side = o.quick() ? 60 : 600;
+        String label = "showcase (" + Showcase.create().geometries.getItems().size() + " geometries)";
+        for (int threads : new int[] { 1, 2 }) {
+            list.add(aa(label, "NONE", side, threads, s -> showcaseCamera(s).setAntiAliasing(AntiAliasing.NONE)));
+            list.add(aa(label, "CORNERS", side, threads, s -> showcaseCamera(s).setAntiAliasing(AntiAliasing.CORNERS)));
+            list.add(aa(label, "RANDOM 4×4", side, threads, s -> showcaseCamera(s).setAntiAliasing(AntiAliasing.RANDOM, 4, 4)));
+            list.add(aa(label, "RANDOM 8×8", side, threads, s -> showcaseCamera(s).setAntiAliasing(AntiAliasing.RANDOM, 8, 8)));
+            list.add(aa(label, "ADAPTIVE depth 3 (≤8×8), threshold 8", side, threads,
+                    s -> showcaseCamera(s).setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(3, 8)));
+        }
+    }
+
+    private static Configuration aa(String label, String settings, int side, int threads, Configuration.CameraFactory camera) {
+        return new Configuration("aa", "showcase", Showcase::create, label, settings, side, side, threads, true, 0,
+                0.25, camera);
     }
 
     private static Configuration showcase(String label, String settings, int side, double warmupScale,
