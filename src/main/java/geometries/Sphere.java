@@ -42,7 +42,10 @@ public class Sphere extends Geometry {
 
     @Override
     public Vector getNormal(Point point) {
-        return point.subtract(center).normalize();
+        // Divided by the radius first: for a point on the surface that is already unit length
+        // within the zero tolerance, so normalize() returns it without a second allocation.
+        return new Vector((point.getX() - center.getX()) / radius, (point.getY() - center.getY()) / radius,
+                (point.getZ() - center.getZ()) / radius).normalize();
     }
 
     /** Distance along the ray to the point nearest the centre: the middle of the two roots. */

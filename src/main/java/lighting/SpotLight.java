@@ -57,7 +57,11 @@ public class SpotLight extends PointLight {
 
     @Override
     public Color getIntensity(Point p) {
-        double cos = Util.alignZero(direction.dotProduct(getL(p)));
+        // cos of the angle between the beam axis and the light-to-point direction, in doubles
+        // (this runs once per light per shaded point).
+        double dx = p.getX() - position.getX(), dy = p.getY() - position.getY(), dz = p.getZ() - position.getZ();
+        double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        double cos = Util.alignZero((direction.getX() * dx + direction.getY() * dy + direction.getZ() * dz) / len);
         if (cos <= 0) return Color.BLACK;
         double factor = narrowBeam == 1 ? cos : Math.pow(cos, narrowBeam);
         return intensity.scale(factor * attenuation(p));

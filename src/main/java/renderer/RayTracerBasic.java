@@ -251,7 +251,9 @@ public class RayTracerBasic extends RayTracerBase {
         if (!material.kR.isZero()) { // most materials neither reflect nor transmit: no products then
             Double3 kkr = k.product(material.kR);
             if (!kkr.lowerThan(MIN_CALC_COLOR_K)) {
-                Vector r = nv == 0 ? v : v.subtract(n.scale(2 * nv));
+                // r = v − 2(v·n)n, in one allocation.
+                Vector r = nv == 0 ? v : new Vector(v.getX() - 2 * nv * n.getX(), v.getY() - 2 * nv * n.getY(),
+                        v.getZ() - 2 * nv * n.getZ());
                 color = color.add(beam(p, n, r, material.reflectionSpread, material.kR, kkr, level, budget, ctx));
             }
         }
