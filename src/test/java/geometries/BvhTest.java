@@ -345,63 +345,23 @@ class BvhTest {
 
     @Nested
     @DisplayName("contract: a tree of bounded shapes")
-    class BoundedContract implements GeometryContract {
+    class BoundedContract extends ContractScenes.SceneContract {
         private final Bvh tree = Bvh.build(ContractScenes.bounded());
 
         @Override
         public Intersectable subject() {
             return tree;
         }
-
-        @Override
-        public Ray knownHit() {
-            return ContractScenes.HIT;
-        }
-
-        @Override
-        public Ray knownMiss() {
-            return ContractScenes.MISS;
-        }
-
-        @Override
-        public Point focus() {
-            return ContractScenes.FOCUS;
-        }
-
-        @Override
-        public double extent() {
-            return ContractScenes.EXTENT;
-        }
     }
 
     @Nested
     @DisplayName("contract: a tree of nested lists with planes and tubes beside it")
-    class MixedContract implements GeometryContract {
+    class MixedContract extends ContractScenes.SceneContract {
         private final Bvh tree = Bvh.build(ContractScenes.mixed());
 
         @Override
         public Intersectable subject() {
             return tree;
-        }
-
-        @Override
-        public Ray knownHit() {
-            return ContractScenes.HIT;
-        }
-
-        @Override
-        public Ray knownMiss() {
-            return ContractScenes.MISS;
-        }
-
-        @Override
-        public Point focus() {
-            return ContractScenes.FOCUS;
-        }
-
-        @Override
-        public double extent() {
-            return ContractScenes.EXTENT;
         }
 
         @Override

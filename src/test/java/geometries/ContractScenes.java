@@ -31,4 +31,30 @@ final class ContractScenes {
         return new Geometries(new Geometries(inner), new Plane(new Point(0, 0, -10), new Vector(0, 0, 1)),
                 new Tube(1, new Ray(new Point(0, 9, 0), new Vector(1, 0, 0.2))));
     }
+
+    /**
+     * The geometry contract over one of these scenes: the rays and sizes are the scenes', only
+     * the subject (the flat list, or a tree built from it) differs between implementations.
+     */
+    abstract static class SceneContract implements GeometryContract {
+        @Override
+        public Ray knownHit() {
+            return HIT;
+        }
+
+        @Override
+        public Ray knownMiss() {
+            return MISS;
+        }
+
+        @Override
+        public Point focus() {
+            return FOCUS;
+        }
+
+        @Override
+        public double extent() {
+            return EXTENT;
+        }
+    }
 }

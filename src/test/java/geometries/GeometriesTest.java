@@ -101,63 +101,23 @@ class GeometriesTest {
     /** The contract, for the flat list of several shapes (bounded ones only, so the box is checked). */
     @Nested
     @DisplayName("contract: a flat list of bounded shapes")
-    class BoundedContract implements GeometryContract {
+    class BoundedContract extends ContractScenes.SceneContract {
         private final Geometries scene = ContractScenes.bounded();
 
         @Override
         public Intersectable subject() {
             return scene;
         }
-
-        @Override
-        public Ray knownHit() {
-            return ContractScenes.HIT;
-        }
-
-        @Override
-        public Ray knownMiss() {
-            return ContractScenes.MISS;
-        }
-
-        @Override
-        public Point focus() {
-            return ContractScenes.FOCUS;
-        }
-
-        @Override
-        public double extent() {
-            return ContractScenes.EXTENT;
-        }
     }
 
     @Nested
     @DisplayName("contract: a flat list with planes and tubes")
-    class MixedContract implements GeometryContract {
+    class MixedContract extends ContractScenes.SceneContract {
         private final Geometries scene = ContractScenes.mixed();
 
         @Override
         public Intersectable subject() {
             return scene;
-        }
-
-        @Override
-        public Ray knownHit() {
-            return ContractScenes.HIT;
-        }
-
-        @Override
-        public Ray knownMiss() {
-            return ContractScenes.MISS;
-        }
-
-        @Override
-        public Point focus() {
-            return ContractScenes.FOCUS;
-        }
-
-        @Override
-        public double extent() {
-            return ContractScenes.EXTENT;
         }
 
         @Override
