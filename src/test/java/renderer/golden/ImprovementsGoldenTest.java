@@ -105,6 +105,21 @@ class ImprovementsGoldenTest {
     }
 
     @Test
+    @DisplayName("glossy reflection off (spread 0): the same floor mirrors the sphere with a sharp edge")
+    void glossyReflectionOff() {
+        ImageWriter image = Golden.image("glossy-off", FLOOR_SIZE, FLOOR_SIZE);
+        FLOOR_VIEW.builder().setImageWriter(image)
+                .setRayTracer(new RayTracerBasic(sphereOverMirror("glossy off", 0)).setBeamSize(32))
+                .build().renderImage().writeToImage();
+
+        Point mirrored = new Point(0, -35, 0);
+        int[] reflection = FLOOR_VIEW.pixelOf(mirrored, FLOOR_SIZE);
+        int reflectedEdge = FLOOR_VIEW.pixelOf(mirrored.add(new Vector(30, 0, 0)), FLOOR_SIZE)[0];
+        assertThat(transitionWidth(image, reflection[1], reflection[0], reflectedEdge + 12))
+                .as("reflection's right edge, perfect mirror").isLessThanOrEqualTo(1);
+    }
+
+    @Test
     @DisplayName("diffuse glass: stripes behind a frosted pane smear, behind a clear pane they stay sharp")
     void diffuseGlass() {
         Scene scene = new Scene("diffuse glass").setAmbientLight(new AmbientLight(new Color(WHITE), 0.05));
