@@ -188,18 +188,24 @@ public class RayTracerBasic extends RayTracerBase {
             Vector l = light.getL(p);
             double nl = Util.alignZero(n.dotProduct(l));
             if (nl * nv <= 0) continue; // the light is on the other side of the surface from the viewer
-            Double3 ktr = transparency(p, light, l, n, ctx);
-            if (ktr.getD1() * k.getD1() < MIN_CALC_COLOR_K && ktr.getD2() * k.getD2() < MIN_CALC_COLOR_K
-                    && ktr.getD3() * k.getD3() < MIN_CALC_COLOR_K) continue;
             // Phong: kD·|n·l| + kS·max(0, −r·v)^shininess, with r = l − 2(n·l)n.
             double rx = l.getX() - 2 * nl * n.getX(), ry = l.getY() - 2 * nl * n.getY(), rz = l.getZ() - 2 * nl * n.getZ();
             double minusVR = -Util.alignZero(rx * v.getX() + ry * v.getY() + rz * v.getZ());
             double spec = minusVR <= 0 ? 0 : Math.pow(minusVR, material.nShininess);
             double absNl = Math.abs(nl);
             Color iL = light.getIntensity(p);
-            cr += iL.getR() * ktr.getD1() * (kd.getD1() * absNl + ks.getD1() * spec);
-            cg += iL.getG() * ktr.getD2() * (kd.getD2() * absNl + ks.getD2() * spec);
-            cb += iL.getB() * ktr.getD3() * (kd.getD3() * absNl + ks.getD3() * spec);
+            double fr = kd.getD1() * absNl + ks.getD1() * spec;
+            double fg = kd.getD2() * absNl + ks.getD2() * spec;
+            double fb = kd.getD3() * absNl + ks.getD3() * spec;
+            // Nothing to shadow (a spot light turned away, a material with kD = kS = 0): the term
+            // is exactly zero whatever the occluders, so the shadow walk is not traced.
+            if (iL.getR() * fr == 0 && iL.getG() * fg == 0 && iL.getB() * fb == 0) continue;
+            Double3 ktr = transparency(p, light, l, n, ctx);
+            if (ktr.getD1() * k.getD1() < MIN_CALC_COLOR_K && ktr.getD2() * k.getD2() < MIN_CALC_COLOR_K
+                    && ktr.getD3() * k.getD3() < MIN_CALC_COLOR_K) continue;
+            cr += iL.getR() * ktr.getD1() * fr;
+            cg += iL.getG() * ktr.getD2() * fg;
+            cb += iL.getB() * ktr.getD3() * fb;
         }
         return new Color(cr, cg, cb);
     }

@@ -60,4 +60,22 @@ class RayTracerBasicTest {
         for (int y = 0; y < 8; ++y)
             for (int x = 0; x < 8; ++x) assertThat(image.getRgb(x, y)).as("pixel (%d,%d) untouched", x, y).isZero();
     }
+
+    @Test
+    @DisplayName("no shadow ray is traced toward a light that cannot contribute (turned away, or kD = kS = 0)")
+    void noShadowRayWithoutContribution() {
+        Scene scene = new Scene("nothing to shadow");
+        scene.geometries.add(new geometries.Plane(Point.ZERO, new Vector(0, 0, 1)).setMaterial(new Material().setKd(0.5)),
+                new Sphere(new Point(0, 0, -3), 1).setMaterial(new Material().setKr(0.5))); // a pure mirror
+        // A spot light above the plane, pointing up: its beam never reaches the plane.
+        scene.lights.add(new lighting.SpotLight(new Color(255, 255, 255), new Point(0, 0, 5), new Vector(0, 0, 1)));
+        ImageWriter image = new ImageWriter("no-shadow-rays", 8, 8);
+        RenderStats stats = TestScenes.camera(scene, image).setSummary(false).build().render();
+        assertThat(stats.shadowRays()).isZero();
+
+        // The same light turned toward the plane: now every lit pixel needs its shadow ray.
+        scene.lights.set(0, new lighting.SpotLight(new Color(255, 255, 255), new Point(0, 0, 5), new Vector(0, 0, -1)));
+        RenderStats lit = TestScenes.camera(scene, image).setSummary(false).build().render();
+        assertThat(lit.shadowRays()).isPositive();
+    }
 }
