@@ -107,18 +107,7 @@ class SceneFilesTest {
     @DisplayName("the course's scene file as the course wrote it (no camera) renders like its Java scene")
     void courseSnippet() throws Exception {
         Path file = dir.resolve("basicRenderTestTwoColors.xml");
-        Files.writeString(file, """
-                <scene background-color="75 127 90">
-                <ambient-light color="255 191 191"/>
-                <geometries>
-                <sphere center="0 0 -100" radius="50"/>
-                <triangle p0="-100 0 -100" p1="0 100 -100" p2="-100 100 -100"/>
-                <triangle p0="100 0 -100" p1="0 100 -100" p2="100 100 -100"/>
-                <triangle p0="-100 0 -100" p1="0 -100 -100" p2="-100 -100 -100"/>
-                <triangle p0="100 0 -100" p1="0 -100 -100" p2="100 -100 -100"/>
-                </geometries>
-                </scene>
-                """);
+        Files.writeString(file, CourseXml.TWO_COLORS);
         LoadedScene loaded = XmlSceneReader.read(file);
         assertThat(loaded.camera()).isEmpty();
         int[] fromFile = pixels(render(courseCamera(loaded.scene()), "file", 60, 40));

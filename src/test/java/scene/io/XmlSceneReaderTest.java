@@ -98,17 +98,7 @@ class XmlSceneReaderTest {
         @Test
         @DisplayName("the course's scene file reads unchanged")
         void courseFile() throws Exception {
-            LoadedScene loaded = read("""
-                    <scene background-color="75 127 90">
-                    <ambient-light color="255 191 191"/>
-                    <geometries>
-                    <sphere center="0 0 -100" radius="50"/>
-                    <triangle p0="-100 0 -100" p1="0 100 -100" p2="-100 100 -100"/>
-                    <triangle p0="100 0 -100" p1="0 100 -100" p2="100 100 -100"/>
-                    <triangle p0="-100 0 -100" p1="0 -100 -100" p2="-100 -100 -100"/>
-                    <triangle p0="100 0 -100" p1="0 -100 -100" p2="100 -100 -100"/>
-                    </geometries>
-                    </scene>""");
+            LoadedScene loaded = read(CourseXml.TWO_COLORS);
             assertColor(loaded.scene().background, 75, 127, 90);
             // The course's Java scene: new AmbientLight(new Color(255, 191, 191), Double3.ONE).
             assertColor(loaded.scene().ambientLight.getIntensity(), 255, 191, 191);
