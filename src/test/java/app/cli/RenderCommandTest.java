@@ -1,4 +1,4 @@
-package renderer.cli;
+package app.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
@@ -45,7 +45,7 @@ import scene.samples.Showcase;
  */
 class RenderCommandTest {
     /** The jar's Main-Class (pom.xml's main.class). */
-    private static final String MAIN_CLASS = "renderer.cli.Main";
+    private static final String MAIN_CLASS = "app.cli.Main";
 
     @TempDir
     Path dir;

@@ -1,9 +1,9 @@
-package renderer.cli;
+package app.cli;
 
 /**
  * The jar's entry point: {@code java -jar target/raytracer.jar [SCENE] [options]}; see
- * {@link RenderCommand} and {@code --help}. It lives beside the command, so that the package
- * {@code renderer} does not depend on {@code renderer.cli}, which depends on it.
+ * {@link RenderCommand} and {@code --help}. The package {@code app} holds the entry points, the
+ * top layer: it uses the library, and nothing in the library uses it.
  */
 public final class Main {
     private Main() {

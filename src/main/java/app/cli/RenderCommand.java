@@ -1,4 +1,4 @@
-package renderer.cli;
+package app.cli;
 
 import java.io.IOException;
 import java.io.PrintStream;

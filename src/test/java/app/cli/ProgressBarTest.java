@@ -1,4 +1,4 @@
-package renderer.cli;
+package app.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
