@@ -2,10 +2,14 @@ package geometries;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 
+import lighting.LightSource;
+import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
+import primitives.Vector;
 
 /**
  * Anything a ray can hit. It has two faces:
@@ -17,18 +21,29 @@ import primitives.Util;
  * builds a list.</li>
  * </ul>
  * Both faces accept a hit at distance {@code t} when {@code alignZero(t) > 0}, so the two always
- * agree. A subclass written by a user only needs {@link #findGeoIntersectionsHelper}; the lean
- * path then falls back to it (correct, but allocating).
+ * agree. A subclass written by a user only needs one of the three course years' hooks
+ * ({@link #findGeoIntersectionsHelper}, {@link #calculateIntersectionsHelper},
+ * {@link #calcIntersectionsHelper}); every year's query method and the lean path then fall back
+ * to it (correct, but allocating).
  */
 public abstract class Intersectable {
 
-    /** A hit point together with the geometry it lies on. Value equality on both fields. */
+    /**
+     * A hit point together with the geometry it lies on (the 2023–24 course's hit record). Two
+     * GeoPoints are equal when they hold the same geometry instance and equal points; a GeoPoint
+     * is never equal to an {@link Intersection} (each record keeps its own year's rule, and
+     * equality stays symmetric).
+     */
     public static class GeoPoint {
         /** The geometry that was hit. */
         public final Geometry geometry;
         /** The hit point. */
         public final Point point;
 
+        /**
+         * @param geometry the geometry hit
+         * @param point    the hit point on it
+         */
         public GeoPoint(Geometry geometry, Point point) {
             this.geometry = geometry;
             this.point = point;
@@ -37,7 +52,8 @@ public abstract class Intersectable {
         @Override
         public boolean equals(Object obj) {
             if (this == obj) return true;
-            return obj instanceof GeoPoint other && geometry == other.geometry && point.equals(other.point);
+            return obj != null && obj.getClass() == getClass() && geometry == ((GeoPoint) obj).geometry
+                    && point.equals(((GeoPoint) obj).point);
         }
 
         @Override
@@ -47,8 +63,66 @@ public abstract class Intersectable {
 
         @Override
         public String toString() {
-            return "GeoPoint{" + geometry.getClass().getSimpleName() + " " + point + "}";
+            return getClass().getSimpleName() + "{" + geometry.getClass().getSimpleName() + " " + point + "}";
         }
+    }
+
+    /**
+     * The hit record of the 2024–25 and 2025–26 courses: a {@link GeoPoint} that also carries the
+     * geometry's material and the shading quantities a course tracer fills in per light. The
+     * library's own tracer does not read the mutable fields; they are there for users' code.
+     * Two Intersections are equal when they refer to the same geometry instance and equal
+     * points; the mutable fields take no part.
+     */
+    public static class Intersection extends GeoPoint {
+        /** The material of {@link #geometry} when the record was made. */
+        public final Material material;
+        /** The unit surface normal at the point (filled in by the tracer that uses the record). */
+        public Vector normal;
+        /** The direction of the ray that made the hit. */
+        public Vector v;
+        /** normal · v. */
+        public double vNormal;
+        /** The light currently being shaded. */
+        public LightSource light;
+        /** The direction from {@link #light} to the point. */
+        public Vector l;
+        /** normal · l. */
+        public double lNormal;
+
+        /**
+         * @param geometry the geometry hit; its material becomes {@link #material}
+         * @param point    the hit point on it
+         * @throws NullPointerException when geometry or point is null
+         */
+        public Intersection(Geometry geometry, Point point) {
+            super(Objects.requireNonNull(geometry, "geometry"), Objects.requireNonNull(point, "point"));
+            this.material = geometry.getMaterial();
+        }
+
+        @Override
+        public boolean equals(Object obj) {
+            if (this == obj) return true;
+            return obj instanceof Intersection other && geometry == other.geometry && point.equals(other.point);
+        }
+
+        @Override
+        public int hashCode() {
+            return System.identityHashCode(geometry);
+        }
+    }
+
+    /**
+     * Checks that the concrete class answers intersection queries: it overrides one of the three
+     * years' hooks (or is a library shape, which overrides {@link #findGeoIntersectionsHelper}).
+     * Without one, the three default hooks would only call each other.
+     *
+     * @throws IllegalStateException when the class overrides none of the hooks
+     */
+    protected Intersectable() {
+        if (!HookCheck.overridesAHook(getClass()))
+            throw new IllegalStateException(getClass().getName() + " overrides none of findGeoIntersectionsHelper, "
+                    + "calculateIntersectionsHelper or calcIntersectionsHelper(Ray, double): override the one of your course year");
     }
 
     /** @return the intersection points, or null when there are none */
@@ -66,21 +140,113 @@ public abstract class Intersectable {
     }
 
     /**
-     * @param maxDistance intersections farther than this from the ray head are ignored
+     * @param ray         the ray to intersect
+     * @param maxDistance intersections farther than this from the ray head are ignored (a hit at
+     *                    exactly this distance counts)
      * @return the intersections within {@code maxDistance}, or null when there are none
      */
     public final List<GeoPoint> findGeoIntersections(Ray ray, double maxDistance) {
-        List<GeoPoint> result = findGeoIntersectionsHelper(ray, maxDistance);
-        return result == null || result.isEmpty() ? null : result;
+        return nullWhenEmpty(findGeoIntersectionsHelper(ray, maxDistance));
     }
 
     /**
-     * Every intersection at distance {@code t} with {@code alignZero(t) > 0} and
-     * {@code alignZero(t - maxDistance) <= 0}.
+     * The 2024–25 spelling of {@link #findGeoIntersections(Ray)}.
      *
+     * @param ray the ray to intersect
+     * @return the intersections as {@link Intersection} records, or null when there are none
+     */
+    public final List<Intersection> calculateIntersections(Ray ray) {
+        return calculateIntersections(ray, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * The 2024–25 spelling of {@link #findGeoIntersections(Ray, double)} (same inclusive bound).
+     *
+     * @param ray         the ray to intersect
+     * @param maxDistance intersections farther than this from the ray head are ignored
+     * @return the intersections within {@code maxDistance}, or null when there are none
+     */
+    public final List<Intersection> calculateIntersections(Ray ray, double maxDistance) {
+        return nullWhenEmpty(calculateIntersectionsHelper(ray, maxDistance));
+    }
+
+    /**
+     * The 2025–26 spelling of {@link #findGeoIntersections(Ray)}.
+     *
+     * @param ray the ray to intersect
+     * @return the intersections as {@link Intersection} records, or null when there are none
+     */
+    public final List<Intersection> calcIntersections(Ray ray) {
+        return calcIntersections(ray, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * The 2025–26 spelling of {@link #findGeoIntersections(Ray, double)} (same inclusive bound).
+     *
+     * @param ray         the ray to intersect
+     * @param maxDistance intersections farther than this from the ray head are ignored
+     * @return the intersections within {@code maxDistance}, or null when there are none
+     */
+    public final List<Intersection> calcIntersections(Ray ray, double maxDistance) {
+        return nullWhenEmpty(calcIntersectionsHelper(ray, maxDistance));
+    }
+
+    private static <T> List<T> nullWhenEmpty(List<T> list) {
+        return list == null || list.isEmpty() ? null : list;
+    }
+
+    /*
+     * The three years' hooks. Each default calls the next one round the circle
+     * findGeo… → calculate… → calc… → findGeo…, so a class overriding any one of them answers
+     * every year's query (and the renderer's lean path, whose defaults call findGeo…); the
+     * constructor rejects a class overriding none, which would only go round.
+     */
+
+    /**
+     * Every intersection at distance {@code t} with {@code alignZero(t) > 0} and
+     * {@code alignZero(t - maxDistance) <= 0}. The 2023–24 hook: the library's shapes override
+     * this one.
+     *
+     * @param ray         the ray to intersect
+     * @param maxDistance the largest distance from the ray head that counts
      * @return the intersections, or null (or an empty list) when there are none
      */
-    protected abstract List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance);
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        List<Intersection> found = calculateIntersectionsHelper(ray, maxDistance);
+        if (found == null) return null;
+        List<GeoPoint> result = new ArrayList<>(found.size());
+        for (GeoPoint gp : found) result.add(gp.getClass() == GeoPoint.class ? gp : new GeoPoint(gp.geometry, gp.point));
+        return result;
+    }
+
+    /**
+     * The 2024–25 hook: same contract as {@link #findGeoIntersectionsHelper}, with
+     * {@link Intersection} records.
+     *
+     * @param ray         the ray to intersect
+     * @param maxDistance the largest distance from the ray head that counts
+     * @return the intersections, or null (or an empty list) when there are none
+     */
+    protected List<Intersection> calculateIntersectionsHelper(Ray ray, double maxDistance) {
+        return calcIntersectionsHelper(ray, maxDistance);
+    }
+
+    /**
+     * The 2025–26 hook: same contract as {@link #findGeoIntersectionsHelper}, with
+     * {@link Intersection} records.
+     *
+     * @param ray         the ray to intersect
+     * @param maxDistance the largest distance from the ray head that counts
+     * @return the intersections, or null (or an empty list) when there are none
+     */
+    protected List<Intersection> calcIntersectionsHelper(Ray ray, double maxDistance) {
+        List<GeoPoint> found = findGeoIntersectionsHelper(ray, maxDistance);
+        if (found == null) return null;
+        List<Intersection> result = new ArrayList<>(found.size());
+        for (GeoPoint gp : found)
+            result.add(gp instanceof Intersection i ? i : new Intersection(gp.geometry, gp.point));
+        return result;
+    }
 
     /**
      * The lean closest-hit query. {@code hit.t} is the current upper bound: a hit nearer than it

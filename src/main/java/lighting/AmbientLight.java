@@ -13,6 +13,17 @@ public class AmbientLight extends Light {
         super(iA.scale(kA));
     }
 
+    /**
+     * The 2024–25 form: the light as it is, its attenuation now being the material's
+     * {@link primitives.Material#kA} (the two compose: both default to 1).
+     *
+     * @param iA the ambient intensity
+     * @throws NullPointerException when iA is null
+     */
+    public AmbientLight(Color iA) {
+        this(iA, Double3.ONE);
+    }
+
     /** @param kA factor ≥ 0 */
     public AmbientLight(Color iA, double kA) {
         super(iA.scale(kA));

@@ -37,6 +37,36 @@ public final class Double3 {
         return d3;
     }
 
+    /** @return the first component: the 2024–25 (record) spelling of {@link #getD1()} */
+    public double d1() {
+        return d1;
+    }
+
+    /** @return the second component: the 2024–25 (record) spelling of {@link #getD2()} */
+    public double d2() {
+        return d2;
+    }
+
+    /** @return the third component: the 2024–25 (record) spelling of {@link #getD3()} */
+    public double d3() {
+        return d3;
+    }
+
+    /** @return the first component: the 2025–26 (record) spelling of {@link #getD1()} */
+    public double _d1() {
+        return d1;
+    }
+
+    /** @return the second component: the 2025–26 (record) spelling of {@link #getD2()} */
+    public double _d2() {
+        return d2;
+    }
+
+    /** @return the third component: the 2025–26 (record) spelling of {@link #getD3()} */
+    public double _d3() {
+        return d3;
+    }
+
     public Double3 add(Double3 rhs) {
         return new Double3(d1 + rhs.d1, d2 + rhs.d2, d3 + rhs.d3);
     }

@@ -6,6 +6,11 @@ package primitives;
  * building a scene, and leave them alone during a render.
  */
 public class Material {
+    /**
+     * Ambient reflection coefficient per channel, each ≥ 0 (the 2024–25 course's): the ambient
+     * light reaching a surface is scaled by it; 1 (the default) leaves it as it is.
+     */
+    public Double3 kA = Double3.ONE;
     /** Diffuse reflection coefficient per channel, each ≥ 0. */
     public Double3 kD = Double3.ZERO;
     /** Specular reflection coefficient per channel, each ≥ 0. */
@@ -92,6 +97,105 @@ public class Material {
     public Material setKr(Double3 kr) {
         this.kR = check(kr, "kR", true);
         return this;
+    }
+
+    /**
+     * @param ka the ambient coefficient of all three channels: finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException when ka is negative, NaN or infinite, naming it
+     */
+    public Material setKA(double ka) {
+        return setKA(new Double3(ka));
+    }
+
+    /**
+     * @param ka the ambient coefficient per channel, each finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
+     */
+    public Material setKA(Double3 ka) {
+        this.kA = check(ka, "kA", false);
+        return this;
+    }
+
+    /**
+     * The 2024–25 spelling of {@link #setKd(double)}.
+     *
+     * @param kd the diffuse coefficient of all three channels
+     * @return this material
+     */
+    public Material setKD(double kd) {
+        return setKd(kd);
+    }
+
+    /**
+     * The 2024–25 spelling of {@link #setKd(Double3)}.
+     *
+     * @param kd the diffuse coefficient per channel
+     * @return this material
+     */
+    public Material setKD(Double3 kd) {
+        return setKd(kd);
+    }
+
+    /**
+     * The 2024–25 spelling of {@link #setKs(double)}.
+     *
+     * @param ks the specular coefficient of all three channels
+     * @return this material
+     */
+    public Material setKS(double ks) {
+        return setKs(ks);
+    }
+
+    /**
+     * The 2024–25 spelling of {@link #setKs(Double3)}.
+     *
+     * @param ks the specular coefficient per channel
+     * @return this material
+     */
+    public Material setKS(Double3 ks) {
+        return setKs(ks);
+    }
+
+    /**
+     * The 2024–25 spelling of {@link #setKt(double)}.
+     *
+     * @param kt the transmitted fraction of all three channels, in [0, 1]
+     * @return this material
+     */
+    public Material setKT(double kt) {
+        return setKt(kt);
+    }
+
+    /**
+     * The 2024–25 spelling of {@link #setKt(Double3)}.
+     *
+     * @param kt the transmitted fraction per channel, each in [0, 1]
+     * @return this material
+     */
+    public Material setKT(Double3 kt) {
+        return setKt(kt);
+    }
+
+    /**
+     * The 2024–25 spelling of {@link #setKr(double)}.
+     *
+     * @param kr the mirrored fraction of all three channels, in [0, 1]
+     * @return this material
+     */
+    public Material setKR(double kr) {
+        return setKr(kr);
+    }
+
+    /**
+     * The 2024–25 spelling of {@link #setKr(Double3)}.
+     *
+     * @param kr the mirrored fraction per channel, each in [0, 1]
+     * @return this material
+     */
+    public Material setKR(Double3 kr) {
+        return setKr(kr);
     }
 
     /**

@@ -3,6 +3,7 @@ package primitives;
 import java.util.List;
 
 import geometries.Intersectable.GeoPoint;
+import geometries.Intersectable.Intersection;
 
 /**
  * An immutable half-line: a head point and a unit direction. Points on it are
@@ -49,6 +50,16 @@ public final class Ray {
         return direction;
     }
 
+    /** @return the head: the 2025–26 spelling of {@link #getHead()} */
+    public Point origin() {
+        return head;
+    }
+
+    /** @return the unit direction: the 2025–26 spelling of {@link #getDirection()} */
+    public Vector direction() {
+        return direction;
+    }
+
     /** @return {@code head + t·direction}; {@code t = 0} (within tolerance) gives the head itself */
     public Point getPoint(double t) {
         if (Util.isZero(t)) return head;
@@ -70,12 +81,29 @@ public final class Ray {
         return closest;
     }
 
-    /** @return the intersection closest to the head, or null for a null or empty list */
+    /**
+     * @param points hit records, typically a geometry's {@code findGeoIntersections}
+     * @return the intersection closest to the head, or null for a null or empty list
+     */
     public GeoPoint findClosestGeoPoint(List<GeoPoint> points) {
+        return closest(points);
+    }
+
+    /**
+     * The 2024–25 and 2025–26 spelling of {@link #findClosestGeoPoint}.
+     *
+     * @param intersections hit records, typically a geometry's {@code calculateIntersections}
+     * @return the intersection closest to the head, or null for a null or empty list
+     */
+    public Intersection findClosestIntersection(List<Intersection> intersections) {
+        return closest(intersections);
+    }
+
+    private <T extends GeoPoint> T closest(List<T> points) {
         if (points == null || points.isEmpty()) return null;
-        GeoPoint closest = null;
+        T closest = null;
         double best = Double.POSITIVE_INFINITY;
-        for (GeoPoint gp : points) {
+        for (T gp : points) {
             double d = gp.point.distanceSquared(head);
             if (d < best) {
                 best = d;

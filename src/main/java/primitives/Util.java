@@ -1,5 +1,7 @@
 package primitives;
 
+import java.util.SplittableRandom;
+
 /**
  * Floating-point helpers shared by the whole library.
  *
@@ -16,7 +18,35 @@ public final class Util {
      */
     private static final double ACCURACY = 0x1p-40;
 
+    /**
+     * The generator behind {@link #random(double, double)}: fixed seed, so a program that builds
+     * its scene with the same calls gets the same scene on every run. Guarded by its own lock.
+     */
+    private static final SplittableRandom SCENE_RANDOM = new SplittableRandom(0x5EED_5784L);
+
     private Util() {
+    }
+
+    /**
+     * A uniformly distributed number in [min, max) for building scenes (the course's helper, e.g.
+     * to scatter spheres). Unlike the course's {@code Math.random()}, the sequence is reproducible:
+     * it starts from a fixed seed in every JVM, so the n-th call of a run always returns the same
+     * number. The renderer never calls this; its sampling draws from per-pixel streams.
+     *
+     * @param min the smallest value, finite
+     * @param max the bound, finite and not below {@code min}; {@code min == max} returns min
+     * @return a number in [min, max)
+     * @throws IllegalArgumentException when a bound is NaN or infinite, or {@code max < min}
+     */
+    public static double random(double min, double max) {
+        requireFinite(min, "random minimum");
+        requireFinite(max, "random maximum");
+        if (max < min) throw new IllegalArgumentException("random maximum " + max + " is below the minimum " + min);
+        double u;
+        synchronized (SCENE_RANDOM) {
+            u = SCENE_RANDOM.nextDouble();
+        }
+        return min + u * (max - min);
     }
 
     /** @return true when {@code number} is within the library's zero tolerance */

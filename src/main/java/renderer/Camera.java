@@ -9,6 +9,7 @@ import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
 import primitives.Vector;
+import scene.Scene;
 
 /**
  * A pinhole (or thin-lens) camera: where it stands, where it looks, its view plane, and how a
@@ -43,7 +44,7 @@ public final class Camera {
     private final boolean summary;
     private final PrintStream output;
 
-    private Camera(Builder b, Vector vTo, Vector vUp) {
+    private Camera(Builder b, Vector vTo, Vector vUp, ImageWriter imageWriter, RayTracerBase rayTracer) {
         location = b.location;
         this.vTo = vTo;
         this.vUp = vUp;
@@ -51,8 +52,8 @@ public final class Camera {
         vpWidth = b.vpWidth;
         vpHeight = b.vpHeight;
         vpDistance = b.vpDistance;
-        imageWriter = b.imageWriter;
-        rayTracer = b.rayTracer;
+        this.imageWriter = imageWriter;
+        this.rayTracer = rayTracer;
         antiAliasing = b.antiAliasing;
         gridColumns = b.gridColumns;
         gridRows = b.gridRows;
@@ -62,7 +63,7 @@ public final class Camera {
         aperture = b.aperture;
         lensSamples = b.lensSamples;
         seed = b.seed;
-        threads = b.threads == -2 ? Runtime.getRuntime().availableProcessors() : b.threads;
+        threads = b.threads < 0 ? Runtime.getRuntime().availableProcessors() : b.threads; // -1, -2: all cores
         debugPrint = b.debugPrint;
         summary = b.summary;
         output = b.output;
@@ -100,6 +101,19 @@ public final class Camera {
         if (j < 0 || j >= nX || i < 0 || i >= nY)
             throw new IllegalArgumentException("pixel (" + j + "," + i + ") is outside the " + nX + "x" + nY + " view plane");
         return pinholeRay((j - (nX - 1) / 2.0) * (vpWidth / nX), -(i - (nY - 1) / 2.0) * (vpHeight / nY));
+    }
+
+    /**
+     * The 2025–26 form of {@link #constructRay(int, int, int, int)}: the ray through the centre of
+     * pixel (column j, row i) of this camera's own resolution (its image writer's).
+     *
+     * @param j the column, 0 at the left
+     * @param i the row, 0 at the top
+     * @return the ray from the camera through that pixel's centre
+     * @throws IllegalArgumentException for a pixel outside the resolution
+     */
+    public Ray constructRay(int j, int i) {
+        return constructRay(imageWriter.getNx(), imageWriter.getNy(), j, i);
     }
 
     /**
@@ -244,20 +258,42 @@ public final class Camera {
         return this;
     }
 
-    /** Writes the image to images/&lt;name&gt;.png. */
+    /**
+     * Writes the image to images/&lt;name&gt;.png, the name the image writer was made with.
+     *
+     * @throws IllegalStateException when the camera's writer has no name (it was made from
+     *                               {@link Builder#setResolution}): use {@link #writeToImage(String)}
+     */
     public void writeToImage() {
         imageWriter.writeToImage();
     }
 
     /**
-     * Collects camera settings; each setter validates at once, {@link #build()} checks that nothing
-     * is missing. A builder can be reused: each build returns an independent camera.
+     * Writes the image to images/&lt;imageName&gt;.png (the 2024–25 course's form).
+     *
+     * @param imageName the file name without ".png"; may contain sub-folders
+     * @throws IllegalArgumentException for a blank name
+     */
+    public void writeToImage(String imageName) {
+        imageWriter.writeToImage(imageName);
+    }
+
+    /**
+     * Collects camera settings. Most setters validate at once; the view plane's size and distance
+     * and the resolution are checked by {@link #build()} (the 2025–26 course sets them up first
+     * and expects only {@code build()} to throw), still naming the bad value. A builder can be
+     * reused: each build returns an independent camera.
+     * <p>Defaults (the 2024–25 course's): without an image writer or resolution the image is
+     * 1×1; without a tracer, a {@link SimpleRayTracer} on an empty scene.
      */
     public static final class Builder {
         private Point location;
         private Vector to, up;
         private Point target;
         private double vpWidth, vpHeight, vpDistance;
+        private boolean vpSizeSet, vpDistanceSet;
+        /** The resolution for a writer the camera makes itself; used when imageWriter is null. */
+        private int nX = 1, nY = 1;
         private ImageWriter imageWriter;
         private RayTracerBase rayTracer;
         private AntiAliasing antiAliasing = AntiAliasing.NONE;
@@ -308,7 +344,16 @@ public final class Camera {
             return this;
         }
 
-        /** Looks at {@code target} with +y as up (+z when looking straight along y). */
+        /**
+         * Looks at {@code target} with +y as the up hint (the image's up is its part orthogonal
+         * to the view direction).
+         *
+         * @param target the point at the image's centre
+         * @return this builder
+         * @throws IllegalArgumentException from {@link #build()} when the target lies straight
+         *                                  along ±y from the location (no up can be derived;
+         *                                  give one with {@link #setDirection(Point, Vector)})
+         */
         public Builder setDirection(Point target) {
             this.target = Objects.requireNonNull(target, "camera target");
             this.up = null;
@@ -316,27 +361,84 @@ public final class Camera {
             return this;
         }
 
-        /** @throws IllegalArgumentException when a size is not a positive finite number */
+        /**
+         * The view plane's size in scene units; checked by {@link #build()}.
+         *
+         * @param width  the width, a positive finite number
+         * @param height the height, a positive finite number
+         * @return this builder
+         */
         public Builder setVpSize(double width, double height) {
-            this.vpWidth = Util.requirePositive(width, "view plane width");
-            this.vpHeight = Util.requirePositive(height, "view plane height");
+            this.vpWidth = width;
+            this.vpHeight = height;
+            this.vpSizeSet = true;
             return this;
         }
 
-        /** @throws IllegalArgumentException when the distance is not a positive finite number */
+        /**
+         * The view plane's distance from the location along the view direction; checked by
+         * {@link #build()}.
+         *
+         * @param distance a positive finite number of scene units
+         * @return this builder
+         */
         public Builder setVpDistance(double distance) {
-            this.vpDistance = Util.requirePositive(distance, "view plane distance");
+            this.vpDistance = distance;
+            this.vpDistanceSet = true;
             return this;
         }
 
+        /**
+         * The writer the camera renders into (the 2023–24 form; replaces a
+         * {@link #setResolution resolution} given before). Cameras built with it share it.
+         *
+         * @param imageWriter the writer, which also fixes the resolution
+         * @return this builder
+         */
         public Builder setImageWriter(ImageWriter imageWriter) {
             this.imageWriter = Objects.requireNonNull(imageWriter, "image writer");
+            this.nX = imageWriter.getNx();
+            this.nY = imageWriter.getNy();
             return this;
         }
 
+        /**
+         * The image size (the 2024–25 form): each built camera makes its own unnamed writer of
+         * this size (replaces an {@link #setImageWriter image writer} given before); name the
+         * file with {@link Camera#writeToImage(String)}. Checked by {@link #build()}.
+         *
+         * @param nX the number of columns, positive
+         * @param nY the number of rows, positive
+         * @return this builder
+         */
+        public Builder setResolution(int nX, int nY) {
+            this.nX = nX;
+            this.nY = nY;
+            this.imageWriter = null;
+            return this;
+        }
+
+        /**
+         * @param rayTracer the tracer that colours each camera ray
+         * @return this builder
+         */
         public Builder setRayTracer(RayTracerBase rayTracer) {
             this.rayTracer = Objects.requireNonNull(rayTracer, "ray tracer");
             return this;
+        }
+
+        /**
+         * A new tracer of the given kind for {@code scene} (the 2024–25 form); see
+         * {@link RayTracerType} for what each kind gives.
+         *
+         * @param scene the scene to trace
+         * @param type  the kind of tracer
+         * @return this builder
+         * @throws NullPointerException when scene or type is null
+         */
+        public Builder setRayTracer(Scene scene, RayTracerType type) {
+            Objects.requireNonNull(scene, "scene");
+            return setRayTracer(Objects.requireNonNull(type, "ray tracer type").create(scene));
         }
 
         /** How pixels are sampled (default NONE). */
@@ -409,10 +511,12 @@ public final class Camera {
 
         /**
          * @param threads 0: render on the calling thread; n &gt; 0: n worker threads; -2: one per
-         *                available core
+         *                available core; -1 (the course's "parallel streams"): the same as -2, the
+         *                library's one render loop on all cores
+         * @return this builder
          */
         public Builder setMultithreading(int threads) {
-            if (threads < -2 || threads == -1)
+            if (threads < -2)
                 throw new IllegalArgumentException("thread count must be 0 (calling thread), a positive number or -2 (all cores), got " + threads);
             this.threads = threads;
             return this;
@@ -439,18 +543,26 @@ public final class Camera {
         }
 
         /**
-         * @throws MissingResourceException naming the first missing part
-         * @throws IllegalArgumentException when the settings contradict each other
+         * Checks the settings and makes the camera, with a 1×1 image and a
+         * {@link SimpleRayTracer} on an empty scene when none were given.
+         *
+         * @return a new camera, independent of cameras built before
+         * @throws MissingResourceException naming the location or direction when it is missing
+         * @throws IllegalArgumentException when the view plane's size or distance is missing, when
+         *                                  it or the resolution is not positive (naming the
+         *                                  value), or when the settings contradict each other
          */
         public Camera build() {
             final String missing = "Missing rendering data";
             final String camera = "Camera";
             if (location == null) throw new MissingResourceException(missing + ": location", camera, "location");
             if (to == null && target == null) throw new MissingResourceException(missing + ": direction", camera, "direction");
-            if (vpWidth == 0) throw new MissingResourceException(missing + ": view plane size", camera, "vpSize");
-            if (vpDistance == 0) throw new MissingResourceException(missing + ": view plane distance", camera, "vpDistance");
-            if (imageWriter == null) throw new MissingResourceException(missing + ": image writer", camera, "imageWriter");
-            if (rayTracer == null) throw new MissingResourceException(missing + ": ray tracer", camera, "rayTracer");
+            if (!vpSizeSet) throw new IllegalArgumentException(missing + ": view plane size (setVpSize)");
+            Util.requirePositive(vpWidth, "view plane width");
+            Util.requirePositive(vpHeight, "view plane height");
+            if (!vpDistanceSet) throw new IllegalArgumentException(missing + ": view plane distance (setVpDistance)");
+            Util.requirePositive(vpDistance, "view plane distance");
+            if (nX <= 0 || nY <= 0) throw new IllegalArgumentException("resolution must be positive, got " + nX + "x" + nY);
             Vector vTo, vUp;
             if (to != null) {
                 vTo = to;
@@ -460,13 +572,16 @@ public final class Camera {
                     throw new IllegalArgumentException("camera target " + target + " is the camera location");
                 vTo = target.subtract(location).normalize();
                 Vector upHint = up != null ? up : Vector.AXIS_Y;
-                if (up == null && Util.isZero(Math.abs(vTo.dotProduct(upHint)) - 1)) upHint = Vector.AXIS_Z;
                 if (Util.isZero(Math.abs(vTo.dotProduct(upHint)) - 1))
-                    throw new IllegalArgumentException("camera up " + up + " is parallel to the view direction " + vTo);
+                    throw new IllegalArgumentException("camera target " + target + " seen from " + location
+                            + " lies along the up " + (up != null ? "vector " : "hint +y ") + upHint
+                            + ": no image up can be derived; give an up vector not parallel to the view direction " + vTo);
                 Vector right = vTo.crossProduct(upHint).normalize();
                 vUp = right.crossProduct(vTo).normalize();
             }
-            return new Camera(this, vTo, vUp);
+            ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
+            RayTracerBase tracer = rayTracer != null ? rayTracer : RayTracerType.SIMPLE.create(new Scene("empty scene"));
+            return new Camera(this, vTo, vUp, writer, tracer);
         }
     }
 }

@@ -15,7 +15,8 @@ import primitives.Vector;
 import scene.Scene;
 
 /**
- * The Whitted tracer of the course: emission, ambient light, Phong diffuse and specular per
+ * The Whitted tracer of the course (named {@link SimpleRayTracer} from 2024–25 on): emission,
+ * ambient light scaled by the material's {@code kA}, Phong diffuse and specular per
  * light, shadows attenuated by the product of kT of the occluders up to the light, and mirror
  * reflection and (direction-keeping) refraction recursing to {@link #MAX_CALC_COLOR_LEVEL} while
  * the accumulated coefficient stays above {@link #MIN_CALC_COLOR_K}.
@@ -159,8 +160,9 @@ public class RayTracerBasic extends RayTracerBase {
         Intersectable w = world;
         Hit hit = ctx.hit(MAX_CALC_COLOR_LEVEL, Double.POSITIVE_INFINITY);
         if (!w.closestHit(ray, hit)) return scene.background;
+        Double3 kA = hit.getGeometry().getMaterial().kA; // ambient = I_A·kA(light)·kA(material)
         return calcColor(hit, ray, MAX_CALC_COLOR_LEVEL, INITIAL_K, beamSize, ctx)
-                .add(scene.ambientLight.getIntensity());
+                .add(scene.ambientLight.getIntensity().scale(kA));
     }
 
     /**
