@@ -517,7 +517,7 @@ public final class Camera {
          */
         public Builder setMultithreading(int threads) {
             if (threads < -2)
-                throw new IllegalArgumentException("thread count must be 0 (calling thread), a positive number or -2 (all cores), got " + threads);
+                throw new IllegalArgumentException("thread count must be 0 (calling thread), a positive number, or -1 or -2 (all cores), got " + threads);
             this.threads = threads;
             return this;
         }

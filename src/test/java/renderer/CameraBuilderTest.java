@@ -24,10 +24,11 @@ import primitives.Vector;
 import scene.Scene;
 
 /**
- * The camera builder's contract: every bad value is rejected at once with an
- * IllegalArgumentException naming it, a missing part fails {@code build()} with a
- * MissingResourceException whose key names the part, and a reused builder gives independent
- * cameras.
+ * The camera builder's contract: every bad value is rejected with an IllegalArgumentException
+ * naming it (at once by most setters, by {@code build()} for the view plane and the resolution),
+ * a missing location or direction fails {@code build()} with a MissingResourceException whose key
+ * names the part, a missing view plane with an IllegalArgumentException, a missing image or tracer
+ * is defaulted, and a reused builder gives independent cameras.
  */
 class CameraBuilderTest {
     private static Camera.Builder complete() {
@@ -54,18 +55,28 @@ class CameraBuilderTest {
 
         @ParameterizedTest(name = "width {0}, height {1}")
         @CsvSource({"0, 4, 0.0", "-2, 4, -2.0", "4, 0, 0.0", "4, -0.5, -0.5", "NaN, 4, NaN", "4, Infinity, Infinity"})
-        @DisplayName("a view-plane size that is not a positive finite number is rejected")
+        @DisplayName("a view-plane size that is not a positive finite number is rejected by build()")
         void vpSize(double width, double height, String named) {
-            assertThatIllegalArgumentException().isThrownBy(() -> Camera.getBuilder().setVpSize(width, height))
+            Camera.Builder builder = complete().setVpSize(width, height);
+            assertThatIllegalArgumentException().isThrownBy(builder::build)
                     .withMessageContaining("view plane").withMessageContaining(named);
         }
 
         @ParameterizedTest(name = "distance {0}")
         @ValueSource(doubles = {0, -1, Double.NaN})
-        @DisplayName("a view-plane distance that is not positive is rejected")
+        @DisplayName("a view-plane distance that is not positive is rejected by build()")
         void vpDistance(double distance) {
-            assertThatIllegalArgumentException().isThrownBy(() -> Camera.getBuilder().setVpDistance(distance))
+            Camera.Builder builder = complete().setVpDistance(distance);
+            assertThatIllegalArgumentException().isThrownBy(builder::build)
                     .withMessageContaining("view plane distance").withMessageContaining(String.valueOf(distance));
+        }
+
+        @ParameterizedTest(name = "{0}x{1}")
+        @CsvSource({"0, 4", "4, 0", "-1, 1"})
+        @DisplayName("a resolution that is not positive is rejected by build(), naming it")
+        void resolution(int nX, int nY) {
+            Camera.Builder builder = complete().setResolution(nX, nY);
+            assertThatIllegalArgumentException().isThrownBy(builder::build).withMessageContaining(nX + "x" + nY);
         }
 
         @Test
@@ -84,16 +95,7 @@ class CameraBuilderTest {
             // Each case sets everything but one part (build() checks them in this order).
             return Stream.of(
                     Arguments.of("location", (Consumer<Camera.Builder>) b -> {}),
-                    Arguments.of("direction", (Consumer<Camera.Builder>) b -> b.setLocation(Point.ZERO)),
-                    Arguments.of("vpSize", (Consumer<Camera.Builder>) b -> b.setLocation(Point.ZERO)
-                            .setDirection(new Point(0, 0, -1))),
-                    Arguments.of("vpDistance", (Consumer<Camera.Builder>) b -> b.setLocation(Point.ZERO)
-                            .setDirection(new Point(0, 0, -1)).setVpSize(1, 1)),
-                    Arguments.of("imageWriter", (Consumer<Camera.Builder>) b -> b.setLocation(Point.ZERO)
-                            .setDirection(new Point(0, 0, -1)).setVpSize(1, 1).setVpDistance(1)),
-                    Arguments.of("rayTracer", (Consumer<Camera.Builder>) b -> b.setLocation(Point.ZERO)
-                            .setDirection(new Point(0, 0, -1)).setVpSize(1, 1).setVpDistance(1)
-                            .setImageWriter(new ImageWriter("missing", 1, 1))));
+                    Arguments.of("direction", (Consumer<Camera.Builder>) b -> b.setLocation(Point.ZERO)));
         }
 
         @ParameterizedTest(name = "missing {0}")
@@ -105,6 +107,25 @@ class CameraBuilderTest {
                 assertThat(e.getKey()).isEqualTo(key);
                 assertThat(e.getClassName()).isEqualTo("Camera");
             });
+        }
+
+        @Test
+        @DisplayName("a missing view-plane size or distance is an IllegalArgumentException naming it")
+        void viewPlane() {
+            Camera.Builder noSize = Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Point(0, 0, -1));
+            assertThatIllegalArgumentException().isThrownBy(noSize::build).withMessageContaining("view plane size");
+            Camera.Builder noDistance = noSize.setVpSize(1, 1);
+            assertThatIllegalArgumentException().isThrownBy(noDistance::build).withMessageContaining("view plane distance");
+        }
+
+        @Test
+        @DisplayName("without an image writer or tracer the camera gets a 1x1 image and a SimpleRayTracer")
+        void defaults() {
+            Camera camera = Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Point(0, 0, -1))
+                    .setVpSize(1, 1).setVpDistance(1).build();
+            assertThat(camera.imageWriter().getNx()).isEqualTo(1);
+            assertThat(camera.imageWriter().getNy()).isEqualTo(1);
+            assertThat(camera.rayTracer()).isExactlyInstanceOf(SimpleRayTracer.class);
         }
 
         @Test
@@ -220,16 +241,16 @@ class CameraBuilderTest {
         }
 
         @ParameterizedTest(name = "threads {0}")
-        @ValueSource(ints = {-1, -3, -100})
-        @DisplayName("thread counts other than 0, positive or -2 are rejected")
+        @ValueSource(ints = {-3, -100})
+        @DisplayName("thread counts below -2 are rejected")
         void threads(int threads) {
             assertThatIllegalArgumentException().isThrownBy(() -> Camera.getBuilder().setMultithreading(threads))
                     .withMessageContaining("got " + threads);
         }
 
         @ParameterizedTest(name = "threads {0}")
-        @ValueSource(ints = {0, 1, 3, -2})
-        @DisplayName("thread counts 0, positive and -2 (all cores) are accepted")
+        @ValueSource(ints = {0, 1, 3, -2, -1})
+        @DisplayName("thread counts 0, positive, -2 (all cores) and -1 (the course's parallel streams: all cores) are accepted")
         void threadsAccepted(int threads) {
             assertThat(complete().setMultithreading(threads).build()).isNotNull();
         }

@@ -186,13 +186,12 @@ class CameraRayTest {
         }
 
         @Test
-        @DisplayName("setDirection(target) straight down the y axis takes +z as up")
+        @DisplayName("setDirection(target) straight down the y axis has no up: build() rejects it, naming the target")
         void targetStraightDown() {
-            // vTo = −ŷ; right = vTo × ẑ = (−1,0,0); vUp = right × vTo = (0,0,1).
-            Camera camera = at(new Point(0, 10, 0), courseCamera().setDirection(Point.ZERO));
-            assertThat(camera.getVTo()).isEqualTo(new Vector(0, -1, 0));
-            assertThat(camera.getVUp()).isEqualTo(new Vector(0, 0, 1));
-            assertOrthonormal(camera);
+            // vTo = −ŷ is parallel to the +y up hint: the course throws (no +z fallback).
+            assertThatIllegalArgumentException()
+                    .isThrownBy(() -> at(new Point(0, 10, 0), courseCamera().setDirection(Point.ZERO)))
+                    .withMessageContaining("up hint").withMessageContaining(Point.ZERO.toString());
         }
 
         static Stream<Arguments> obliqueTargets() {

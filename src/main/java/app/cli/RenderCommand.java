@@ -71,7 +71,7 @@ public final class RenderCommand implements Callable<Integer> {
     private Integer height;
 
     @Option(names = "--threads", paramLabel = "N",
-            description = "Render threads: N > 0 worker threads, 0 the calling thread, -2 all cores. Default: the file's, else all cores.")
+            description = "Render threads: N > 0 worker threads, 0 the calling thread, -1 or -2 all cores. Default: the file's, else all cores.")
     private Integer threads;
 
     @Option(names = "--aa", paramLabel = "MODE",

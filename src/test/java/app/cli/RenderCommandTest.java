@@ -178,7 +178,7 @@ class RenderCommandTest {
     @DisplayName("usage errors: exit code 2, a message and a hint, no image")
     class UsageErrors {
         @ParameterizedTest(name = "{0}")
-        @ValueSource(strings = { "--width 0", "--height -3", "--threads -1", "--aa fast", "--seed x", "--bogus",
+        @ValueSource(strings = { "--width 0", "--height -3", "--threads -3", "--aa fast", "--seed x", "--bogus",
                 "-o out.jpg", "a.xml b.xml", "--width 50000 --height 50000" })
         void usageError(String arguments) throws IOException {
             List<String> args = new ArrayList<>(List.of(arguments.split(" ")));
@@ -199,8 +199,8 @@ class RenderCommandTest {
         @DisplayName("the message names the bad value")
         void namesTheValue() {
             assertThat(run("--width", "0").errLines().get(0)).isEqualTo("render: --width must be at least 1, got 0");
-            assertThat(run("--threads", "-1").errLines().get(0)).isEqualTo(
-                    "render: --threads: thread count must be 0 (calling thread), a positive number or -2 (all cores), got -1");
+            assertThat(run("--threads", "-3").errLines().get(0)).isEqualTo(
+                    "render: --threads: thread count must be 0 (calling thread), a positive number, or -1 or -2 (all cores), got -3");
             // 50000 × 50000 = 2,500,000,000 > 2^31 - 9 = 2,147,483,639 pixels (one int array).
             assertThat(run("--width", "50000", "--height", "50000").errLines().get(0)).isEqualTo(
                     "render: --width/--height: image size 50000x50000 is 2500000000 pixels, more than an image can hold"
