@@ -174,6 +174,33 @@ interface GeometryContract {
     }
 
     @Test
+    @DisplayName("contract: every course year's query (findGeo…, calculate…, calc…) lists the same hits, each year's record type")
+    default void everyYearsQueryListsTheSameHits() {
+        Random rnd = new Random(0x5EED_0003L);
+        int hits = 0;
+        for (Ray ray : randomRays()) {
+            double max = rnd.nextBoolean() ? Double.POSITIVE_INFINITY : 4 * extent() * rnd.nextDouble();
+            List<Intersectable.GeoPoint> geoPoints = subject().findGeoIntersections(ray, max);
+            List<Intersectable.Intersection> calculated = subject().calculateIntersections(ray, max);
+            List<Intersectable.Intersection> calc = subject().calcIntersections(ray, max);
+            if (geoPoints == null) {
+                assertThat(calculated).as("calculateIntersections for %s within %s", ray, max).isNull();
+                assertThat(calc).as("calcIntersections for %s within %s", ray, max).isNull();
+                continue;
+            }
+            ++hits;
+            List<Intersectable.Intersection> expected = geoPoints.stream()
+                    .map(gp -> new Intersectable.Intersection(gp.geometry, gp.point)).toList();
+            assertThat(calculated).as("calculateIntersections for %s within %s", ray, max).isEqualTo(expected);
+            assertThat(calc).as("calcIntersections for %s within %s", ray, max).isEqualTo(expected);
+            assertThat(calc).allSatisfy(i -> assertThat(i.material).isSameAs(i.geometry.getMaterial()));
+            assertThat(geoPoints).as("findGeoIntersections keeps plain GeoPoint records")
+                    .allSatisfy(gp -> assertThat(gp).isExactlyInstanceOf(Intersectable.GeoPoint.class));
+        }
+        assertThat(hits).as("random rays that hit (the test must not be vacuous)").isGreaterThan(RAY_COUNT / 20);
+    }
+
+    @Test
     @DisplayName("contract: normals at hit points are unit length")
     default void normalsAtHitPointsAreUnitLength() {
         for (Ray ray : randomRays()) {
