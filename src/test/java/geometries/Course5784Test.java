@@ -1,0 +1,207 @@
+package geometries;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException;
+import static primitives.Util.random;
+
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.List;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+import geometries.Intersectable.GeoPoint;
+import geometries.Intersectable.Intersection;
+import lighting.AmbientLight;
+import primitives.Color;
+import primitives.Material;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Vector;
+import renderer.Camera;
+import renderer.ImageWriter;
+import renderer.RayTracerBase;
+import renderer.SimpleRayTracer;
+import scene.Scene;
+
+/**
+ * The 2023–24 (5784) course API, written the way that year's tests are written: its names only
+ * ({@code findGeoIntersections}, {@code GeoPoint}, {@code SimpleRayTracer}, {@code setImageWriter},
+ * {@code writeToImage()}, {@code Util.random}), one nested class per class under test. It lives in
+ * package {@code geometries} because the course's tests call the protected hook there.
+ */
+class Course5784Test {
+
+    @Nested
+    @DisplayName("Util (5784)")
+    class UtilTest {
+        @Test
+        @DisplayName("random(min, max) stays in [min, max) and covers it evenly")
+        void randomIsUniformInRange() {
+            double sum = 0;
+            double lowest = Double.POSITIVE_INFINITY, highest = Double.NEGATIVE_INFINITY;
+            int n = 20_000;
+            for (int k = 0; k < n; ++k) {
+                double x = random(2, 5);
+                assertThat(x).isGreaterThanOrEqualTo(2).isLessThan(5);
+                sum += x;
+                lowest = Math.min(lowest, x);
+                highest = Math.max(highest, x);
+            }
+            assertThat(sum / n).as("mean of uniform [2,5)").isCloseTo(3.5, org.assertj.core.api.Assertions.within(0.05));
+            assertThat(lowest).isLessThan(2.01);
+            assertThat(highest).isGreaterThan(4.99);
+        }
+
+        @Test
+        @DisplayName("random(x, x) is x")
+        void emptyRange() {
+            assertThat(random(7, 7)).isEqualTo(7);
+        }
+
+        @ParameterizedTest(name = "random({0}, {1}) is rejected")
+        @CsvSource({ "5, 2, 2.0", "NaN, 1, NaN", "0, Infinity, Infinity" })
+        void badBounds(double min, double max, String named) {
+            assertThatIllegalArgumentException().isThrownBy(() -> random(min, max)).withMessageContaining(named);
+        }
+    }
+
+    @Nested
+    @DisplayName("GeoPoint and findGeoIntersections (5784)")
+    class IntersectableTest {
+        private final Sphere sphere = new Sphere(new Point(1, 0, 0), 1);
+
+        @Test
+        @DisplayName("the protected helper and the public query find the two points of a chord")
+        void sphereChord() {
+            Ray ray = new Ray(new Point(-1, 0.6, 0), new Vector(1, 0, 0));
+            List<GeoPoint> expected = List.of(new GeoPoint(sphere, new Point(0.2, 0.6, 0)),
+                    new GeoPoint(sphere, new Point(1.8, 0.6, 0)));
+            assertThat(sphere.findGeoIntersectionsHelper(ray, Double.POSITIVE_INFINITY)).containsExactlyInAnyOrderElementsOf(expected);
+            assertThat(sphere.findGeoIntersections(ray)).containsExactlyInAnyOrderElementsOf(expected);
+            assertThat(ray.findClosestGeoPoint(sphere.findGeoIntersections(ray))).isEqualTo(expected.get(0));
+        }
+
+        @Test
+        @DisplayName("no hit gives null, also for an empty Geometries")
+        void noHitIsNull() {
+            Ray away = new Ray(new Point(-1, 0, 0), new Vector(-1, 0, 0));
+            assertThat(sphere.findGeoIntersections(away)).isNull();
+            assertThat(new Geometries().findGeoIntersections(away)).isNull();
+            assertThat(new Geometries(sphere).findIntersections(away)).isNull();
+        }
+
+        @Test
+        @DisplayName("GeoPoints are equal by value, and never equal to a later year's Intersection")
+        void geoPointEquality() {
+            Point p = new Point(0.2, 0.6, 0);
+            assertThat(new GeoPoint(sphere, p)).isEqualTo(new GeoPoint(sphere, new Point(0.2, 0.6, 0)));
+            assertThat(new GeoPoint(sphere, p)).isNotEqualTo(new GeoPoint(new Sphere(new Point(1, 0, 0), 1), p));
+            assertThat(new GeoPoint(sphere, p)).isNotEqualTo(new Intersection(sphere, p));
+            assertThat(new Intersection(sphere, p)).isNotEqualTo(new GeoPoint(sphere, p));
+        }
+    }
+
+    /** A shape as a 5784 student writes it: only the 5784 hook, no bounding box. */
+    static final class Ball extends Geometry {
+        private final Sphere surface = new Sphere(UserGeometryScenes.CENTER, UserGeometryScenes.RADIUS);
+
+        @Override
+        public Vector getNormal(Point point) {
+            return surface.getNormal(point);
+        }
+
+        @Override
+        protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+            List<GeoPoint> found = surface.findGeoIntersections(ray, maxDistance);
+            if (found == null) return null;
+            List<GeoPoint> mine = new ArrayList<>();
+            for (GeoPoint gp : found) mine.add(new GeoPoint(this, gp.point));
+            return mine;
+        }
+    }
+
+    @Nested
+    @DisplayName("a user's own geometry (5784 hook)")
+    class UserGeometryTest {
+        private final Ray through = new Ray(new Point(0, 0, 50), new Vector(0, 0, -1));
+
+        @Test
+        @DisplayName("every year's query finds it")
+        void everyQueryFindsIt() {
+            Ball ball = new Ball();
+            assertThat(ball.findIntersections(through)).containsExactlyInAnyOrder(new Point(0, 0, 10), new Point(0, 0, -10));
+            assertThat(ball.calculateIntersections(through)).containsExactlyInAnyOrder(
+                    new Intersection(ball, new Point(0, 0, 10)), new Intersection(ball, new Point(0, 0, -10)));
+            assertThat(ball.calcIntersections(through, 45)).containsExactly(new Intersection(ball, new Point(0, 0, 10)));
+            assertThat(new Geometries(ball).findGeoIntersections(through, 30)).isNull();
+        }
+
+        @Test
+        @DisplayName("the tracer renders it like the library's sphere, beside the BVH, with its shadow")
+        void rendered() {
+            UserGeometryScenes.assertRendersLikeTheLibrarySphere(new Ball());
+        }
+    }
+
+    @Nested
+    @DisplayName("SimpleRayTracer (5784)")
+    class SimpleRayTracerTest {
+        @Test
+        @DisplayName("emission plus the ambient light (scaled by its kA) on a hit, the background on a miss")
+        void traceRay() {
+            Scene scene = new Scene("5784").setBackground(new Color(1, 2, 3))
+                    .setAmbientLight(new AmbientLight(new Color(255, 255, 255), 0.1));
+            scene.geometries.add(new Sphere(new Point(0, 0, -50), 10).setEmission(new Color(0, 0, 100)));
+            RayTracerBase tracer = new SimpleRayTracer(scene);
+            Color hit = tracer.traceRay(new Ray(Point.ZERO, new Vector(0, 0, -1)));
+            assertThat(new double[] { hit.getR(), hit.getG(), hit.getB() }).containsExactly(25.5, 25.5, 125.5);
+            Color miss = tracer.traceRay(new Ray(Point.ZERO, new Vector(0, 0, 1)));
+            assertThat(new double[] { miss.getR(), miss.getG(), miss.getB() }).containsExactly(1, 2, 3);
+        }
+    }
+
+    @Nested
+    @DisplayName("Camera with an image writer (5784)")
+    class CameraTest {
+        @Test
+        @DisplayName("setImageWriter, setRayTracer(tracer), renderImage, printGrid, writeToImage()")
+        void renderAndWrite() throws Exception {
+            Scene scene = new Scene("5784 camera").setBackground(new Color(0, 0, 255));
+            ImageWriter writer = new ImageWriter("course-years/5784", 4, 3);
+            Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), new Vector(0, 1, 0))
+                    .setVpSize(4, 3).setVpDistance(1).setImageWriter(writer).setRayTracer(new SimpleRayTracer(scene))
+                    .setSummary(false).build().renderImage().printGrid(2, new Color(255, 0, 0)).writeToImage();
+            assertThat(writer.getRgb(1, 1)).as("background").isEqualTo(0x0000FF);
+            assertThat(writer.getRgb(2, 1)).as("grid column").isEqualTo(0xFF0000);
+            assertThat(Files.exists(writer.getPath())).isTrue();
+        }
+
+        @Test
+        @DisplayName("constructRay(nX, nY, j, i): the corner pixel of a 3x3 view plane")
+        void constructRay() {
+            Camera camera = Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), new Vector(0, 1, 0))
+                    .setVpSize(3, 3).setVpDistance(1).setImageWriter(new ImageWriter("unused", 3, 3))
+                    .setRayTracer(new SimpleRayTracer(new Scene("unused"))).build();
+            assertThat(camera.constructRay(3, 3, 0, 0)).isEqualTo(new Ray(Point.ZERO, new Vector(-1, 1, -1)));
+        }
+    }
+
+    @Nested
+    @DisplayName("Material (5784 setters, and the kA that 5785 added)")
+    class MaterialTest {
+        @Test
+        @DisplayName("the ambient light's kA and the material's kA compose: I_A * kA(light) * kA(material)")
+        void ambientComposes() {
+            Scene scene = new Scene("kA").setAmbientLight(new AmbientLight(new Color(200, 100, 50), 0.5));
+            scene.geometries.add(new Sphere(new Point(0, 0, -50), 10).setMaterial(new Material().setKd(0.3).setKA(0.4)));
+            Color c = new SimpleRayTracer(scene).traceRay(new Ray(Point.ZERO, new Vector(0, 0, -1)));
+            assertThat(new double[] { c.getR(), c.getG(), c.getB() })
+                    .containsExactly(new double[] { 40, 20, 10 }, org.assertj.core.api.Assertions.within(1e-12));
+        }
+    }
+}
