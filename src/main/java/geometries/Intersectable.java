@@ -125,7 +125,10 @@ public abstract class Intersectable {
                     + "calculateIntersectionsHelper or calcIntersectionsHelper(Ray, double): override the one of your course year");
     }
 
-    /** @return the intersection points, or null when there are none */
+    /**
+     * @param ray the ray to intersect
+     * @return the intersection points, or null when there are none
+     */
     public final List<Point> findIntersections(Ray ray) {
         List<GeoPoint> geoPoints = findGeoIntersections(ray);
         if (geoPoints == null) return null;
@@ -134,7 +137,10 @@ public abstract class Intersectable {
         return points;
     }
 
-    /** @return the intersections with their geometries, or null when there are none */
+    /**
+     * @param ray the ray to intersect
+     * @return the intersections with their geometries, or null when there are none
+     */
     public final List<GeoPoint> findGeoIntersections(Ray ray) {
         return findGeoIntersections(ray, Double.POSITIVE_INFINITY);
     }
@@ -252,6 +258,8 @@ public abstract class Intersectable {
      * The lean closest-hit query. {@code hit.t} is the current upper bound: a hit nearer than it
      * (and with {@code alignZero(t) > 0}) replaces the record.
      *
+     * @param ray the ray to intersect
+     * @param hit the record to update; its {@code t} is the upper bound
      * @return true when {@code hit} was updated
      */
     public boolean closestHit(Ray ray, Hit hit) {
@@ -273,6 +281,9 @@ public abstract class Intersectable {
      * The any-hit walk: calls {@code visitor} for every intersection with {@code alignZero(t) > 0}
      * and {@code alignZero(t - maxDistance) <= 0}, in no particular order, until it returns false.
      *
+     * @param ray         the ray to intersect
+     * @param maxDistance the largest distance from the ray head that counts
+     * @param visitor     called with each hit's geometry and distance
      * @return false when the visitor stopped the walk
      */
     public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {

@@ -8,7 +8,10 @@ public class AmbientLight extends Light {
     /** No ambient light at all. */
     public static final AmbientLight NONE = new AmbientLight(Color.BLACK, 0);
 
-    /** @param kA per-channel factor, each ≥ 0 */
+    /**
+     * @param iA the ambient intensity
+     * @param kA per-channel factor, each ≥ 0
+     */
     public AmbientLight(Color iA, Double3 kA) {
         super(iA.scale(kA));
     }
@@ -24,7 +27,10 @@ public class AmbientLight extends Light {
         this(iA, Double3.ONE);
     }
 
-    /** @param kA factor ≥ 0 */
+    /**
+     * @param iA the ambient intensity
+     * @param kA factor ≥ 0
+     */
     public AmbientLight(Color iA, double kA) {
         super(iA.scale(kA));
     }

@@ -311,7 +311,10 @@ public final class Camera {
         private Builder() {
         }
 
-        /** The camera's position. */
+        /**
+         * @param location the camera's position
+         * @return this builder
+         */
         public Builder setLocation(Point location) {
             this.location = Objects.requireNonNull(location, "camera location");
             return this;
@@ -320,6 +323,9 @@ public final class Camera {
         /**
          * Looks along {@code to} with {@code up} as the image's up direction.
          *
+         * @param to the view direction, any length
+         * @param up the image's up direction, any length
+         * @return this builder
          * @throws IllegalArgumentException when the two are not orthogonal
          */
         public Builder setDirection(Vector to, Vector up) {
@@ -336,6 +342,10 @@ public final class Camera {
         /**
          * Looks at {@code target}; {@code up} need not be orthogonal to the view direction: the
          * image's up is its part orthogonal to it.
+         *
+         * @param target the point at the image's centre
+         * @param up     the up hint, not parallel to the view direction (checked by {@link #build()})
+         * @return this builder
          */
         public Builder setDirection(Point target, Vector up) {
             this.target = Objects.requireNonNull(target, "camera target");
@@ -441,7 +451,10 @@ public final class Camera {
             return setRayTracer(Objects.requireNonNull(type, "ray tracer type").create(scene));
         }
 
-        /** How pixels are sampled (default NONE). */
+        /**
+         * @param mode how pixels are sampled (default NONE)
+         * @return this builder
+         */
         public Builder setAntiAliasing(AntiAliasing mode) {
             this.antiAliasing = Objects.requireNonNull(mode, "anti-aliasing mode");
             return this;
