@@ -52,6 +52,36 @@ public class PointLight extends Light implements LightSource {
     }
 
     /**
+     * The spelling of {@link #setKc} some course cohorts use.
+     *
+     * @param kC constant attenuation, ≥ 0
+     * @return this light
+     */
+    public PointLight setKC(double kC) {
+        return setKc(kC);
+    }
+
+    /**
+     * The spelling of {@link #setKl} some course cohorts use.
+     *
+     * @param kL linear attenuation per unit distance, ≥ 0
+     * @return this light
+     */
+    public PointLight setKL(double kL) {
+        return setKl(kL);
+    }
+
+    /**
+     * The spelling of {@link #setKq} some course cohorts use.
+     *
+     * @param kQ quadratic attenuation per squared unit distance, ≥ 0
+     * @return this light
+     */
+    public PointLight setKQ(double kQ) {
+        return setKq(kQ);
+    }
+
+    /**
      * @param radius the radius of the light's disk in scene units, ≥ 0; 0 (the default) is a point
      *               light with hard shadows
      */

@@ -43,6 +43,33 @@ public class SpotLight extends PointLight {
         return this;
     }
 
+    /**
+     * @param kC constant attenuation, ≥ 0
+     * @return this light
+     */
+    @Override
+    public SpotLight setKC(double kC) {
+        return setKc(kC);
+    }
+
+    /**
+     * @param kL linear attenuation per unit distance, ≥ 0
+     * @return this light
+     */
+    @Override
+    public SpotLight setKL(double kL) {
+        return setKl(kL);
+    }
+
+    /**
+     * @param kQ quadratic attenuation per squared unit distance, ≥ 0
+     * @return this light
+     */
+    @Override
+    public SpotLight setKQ(double kQ) {
+        return setKq(kQ);
+    }
+
     @Override
     public SpotLight setRadius(double radius) {
         super.setRadius(radius);

@@ -2,6 +2,7 @@ package geometries;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException;
+import static org.assertj.core.api.Assertions.within;
 import static primitives.Util.random;
 
 import java.nio.file.Files;
@@ -17,6 +18,8 @@ import org.junit.jupiter.params.provider.CsvSource;
 import geometries.Intersectable.GeoPoint;
 import geometries.Intersectable.Intersection;
 import lighting.AmbientLight;
+import lighting.PointLight;
+import lighting.SpotLight;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point;
@@ -52,7 +55,7 @@ class Course5784Test {
                 lowest = Math.min(lowest, x);
                 highest = Math.max(highest, x);
             }
-            assertThat(sum / n).as("mean of uniform [2,5)").isCloseTo(3.5, org.assertj.core.api.Assertions.within(0.05));
+            assertThat(sum / n).as("mean of uniform [2,5)").isCloseTo(3.5, within(0.05));
             assertThat(lowest).isLessThan(2.01);
             assertThat(highest).isGreaterThan(4.99);
         }
@@ -192,6 +195,23 @@ class Course5784Test {
     }
 
     @Nested
+    @DisplayName("PointLight and SpotLight (the setKC/KL/KQ spelling of some 5784 cohorts)")
+    class LightTest {
+        @Test
+        @DisplayName("attenuation 1 / (kC + kL d + kQ d^2) set with the upper-case setters")
+        void upperCaseSetters() {
+            Color at2 = new PointLight(new Color(90, 90, 90), Point.ZERO).setKC(1).setKL(0.5).setKQ(0.25)
+                    .getIntensity(new Point(2, 0, 0));
+            assertThat(at2.getR()).isCloseTo(30, within(1e-12));
+            SpotLight spot = new SpotLight(new Color(90, 90, 90), Point.ZERO, new Vector(1, 0, 0)).setKC(1).setKL(0.5)
+                    .setKQ(0.25).setNarrowBeam(1);
+            assertThat(spot.getIntensity(new Point(2, 0, 0)).getR()).isCloseTo(30, within(1e-12));
+            assertThatIllegalArgumentException().isThrownBy(() -> new PointLight(Color.BLACK, Point.ZERO).setKL(-1))
+                    .withMessageContaining("kL").withMessageContaining("-1");
+        }
+    }
+
+    @Nested
     @DisplayName("Material (5784 setters, and the kA that 5785 added)")
     class MaterialTest {
         @Test
@@ -201,7 +221,7 @@ class Course5784Test {
             scene.geometries.add(new Sphere(new Point(0, 0, -50), 10).setMaterial(new Material().setKd(0.3).setKA(0.4)));
             Color c = new SimpleRayTracer(scene).traceRay(new Ray(Point.ZERO, new Vector(0, 0, -1)));
             assertThat(new double[] { c.getR(), c.getG(), c.getB() })
-                    .containsExactly(new double[] { 40, 20, 10 }, org.assertj.core.api.Assertions.within(1e-12));
+                    .containsExactly(new double[] { 40, 20, 10 }, within(1e-12));
         }
     }
 }
