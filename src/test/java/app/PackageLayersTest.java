@@ -35,10 +35,13 @@ class PackageLayersTest {
             "scene", 2, "renderer", 3, "scene.io", 4, "scene.samples", 4, "app", 5);
 
     /**
-     * Upward imports the course API itself prescribes: {@code Ray.findClosestGeoPoint} (and its
-     * later-year spelling) takes the hit records of {@code geometries}.
+     * Imports the course API itself prescribes: {@code Ray.findClosestGeoPoint} (and its
+     * later-year spelling) takes the hit records of {@code geometries}, and the 2024–25 hit record
+     * {@code Intersectable.Intersection} has a {@code LightSource light} field (lighting never
+     * imports geometries, so the peers still form no cycle).
      */
-    private static final Set<String> COURSE_EXCEPTIONS = Set.of("primitives/Ray.java -> geometries");
+    private static final Set<String> COURSE_EXCEPTIONS = Set.of("primitives/Ray.java -> geometries",
+            "geometries/Intersectable.java -> lighting");
 
     private static final Pattern IMPORT = Pattern.compile(
             "^import\\s+(?:static\\s+)?((?:primitives|geometries|lighting|renderer|scene|app)(?:\\.[a-z]\\w*)*)\\.[A-Z]",
@@ -83,9 +86,12 @@ class PackageLayersTest {
     void peersStayApart() throws IOException {
         for (String[] pair : new String[][] { { "geometries", "lighting" }, { "lighting", "geometries" } }) {
             try (Stream<Path> files = Files.walk(SOURCES.resolve(pair[0]))) {
-                for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList())
+                for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList()) {
+                    String edge = SOURCES.relativize(file).toString().replace(File.separatorChar, '/') + " -> " + pair[1];
+                    if (COURSE_EXCEPTIONS.contains(edge)) continue;
                     assertThat(Files.readString(file)).as("%s imports %s", file, pair[1])
                             .doesNotContainPattern("(?m)^import\\s+(static\\s+)?" + pair[1] + "\\.");
+                }
             }
         }
     }
