@@ -29,10 +29,11 @@ import primitives.Vector;
 public abstract class Intersectable {
 
     /**
-     * A hit point together with the geometry it lies on (the 2023–24 course's hit record). Two
-     * GeoPoints are equal when they hold the same geometry instance and equal points; a GeoPoint
-     * is never equal to an {@link Intersection} (each record keeps its own year's rule, and
-     * equality stays symmetric).
+     * A hit point together with the geometry it lies on (the 2023–24 course's hit record). Value
+     * equality: two GeoPoints are equal when their geometries are {@code equals} (the same
+     * instance, unless a user's geometry defines its own equality) and their points are equal. A
+     * GeoPoint is never equal to an {@link Intersection}, whose rule is stricter: each record keeps
+     * its own year's rule, and equality stays symmetric.
      */
     public static class GeoPoint {
         /** The geometry that was hit. */
@@ -52,13 +53,14 @@ public abstract class Intersectable {
         @Override
         public boolean equals(Object obj) {
             if (this == obj) return true;
-            return obj != null && obj.getClass() == getClass() && geometry == ((GeoPoint) obj).geometry
-                    && point.equals(((GeoPoint) obj).point);
+            return obj != null && obj.getClass() == getClass() && Objects.equals(geometry, ((GeoPoint) obj).geometry)
+                    && Objects.equals(point, ((GeoPoint) obj).point);
         }
 
+        /** The geometry's hash only: points are compared with a tolerance, which no hash can follow. */
         @Override
         public int hashCode() {
-            return System.identityHashCode(geometry);
+            return Objects.hashCode(geometry);
         }
 
         @Override
@@ -100,12 +102,14 @@ public abstract class Intersectable {
             this.material = geometry.getMaterial();
         }
 
+        /** Equal for the same geometry instance (never merely an equal one) and equal points. */
         @Override
         public boolean equals(Object obj) {
             if (this == obj) return true;
             return obj instanceof Intersection other && geometry == other.geometry && point.equals(other.point);
         }
 
+        /** The geometry's identity only, as {@link #equals} compares the geometry by identity. */
         @Override
         public int hashCode() {
             return System.identityHashCode(geometry);

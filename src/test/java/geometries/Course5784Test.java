@@ -107,6 +107,46 @@ class Course5784Test {
             assertThat(new GeoPoint(sphere, p)).isNotEqualTo(new Intersection(sphere, p));
             assertThat(new Intersection(sphere, p)).isNotEqualTo(new GeoPoint(sphere, p));
         }
+
+        /** A user's geometry with value equality of its own: every Label of one text is equal. */
+        static final class Label extends Geometry {
+            private final String text;
+
+            Label(String text) {
+                this.text = text;
+            }
+
+            @Override
+            public Vector getNormal(Point point) {
+                return new Vector(0, 0, 1);
+            }
+
+            @Override
+            protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+                return null;
+            }
+
+            @Override
+            public boolean equals(Object obj) {
+                return obj instanceof Label other && text.equals(other.text);
+            }
+
+            @Override
+            public int hashCode() {
+                return text.hashCode();
+            }
+        }
+
+        @Test
+        @DisplayName("GeoPoint compares geometries by value; Intersection (5785+) needs the same instance")
+        void valueVersusInstance() {
+            Point p = new Point(1, 2, 3);
+            Label a = new Label("x"), b = new Label("x");
+            assertThat(new GeoPoint(a, p)).isEqualTo(new GeoPoint(b, p)).hasSameHashCodeAs(new GeoPoint(b, p));
+            assertThat(new GeoPoint(a, p)).isNotEqualTo(new GeoPoint(new Label("y"), p));
+            assertThat(new Intersection(a, p)).isNotEqualTo(new Intersection(b, p));
+            assertThat(new Intersection(a, p)).isEqualTo(new Intersection(a, new Point(1, 2, 3)));
+        }
     }
 
     /** A shape as a 5784 student writes it: only the 5784 hook, no bounding box. */
