@@ -1,5 +1,7 @@
 package lighting;
 
+import java.util.Objects;
+
 import primitives.Color;
 import primitives.Double3;
 
@@ -24,7 +26,7 @@ public class AmbientLight extends Light {
      * @throws NullPointerException when iA is null
      */
     public AmbientLight(Color iA) {
-        this(iA, Double3.ONE);
+        this(Objects.requireNonNull(iA, "ambient intensity"), Double3.ONE);
     }
 
     /**

@@ -222,7 +222,7 @@ class Course5785Test {
             Color c = new SimpleRayTracer(scene).traceRay(new Ray(Point.ZERO, new Vector(0, 0, -1)));
             assertThat(new double[] { c.getR(), c.getG(), c.getB() }).containsExactly(new double[] { 100, 20, 0 }, within(1e-12));
             assertThat(new AmbientLight(new Color(200, 100, 50)).getIntensity().distance(new Color(200, 100, 50))).isZero();
-            assertThatNullPointerException().isThrownBy(() -> new AmbientLight(null));
+            assertThatNullPointerException().isThrownBy(() -> new AmbientLight(null)).withMessageContaining("ambient intensity");
         }
     }
 
