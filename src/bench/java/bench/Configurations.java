@@ -102,7 +102,7 @@ final class Configurations {
                 warmupScale, camera);
     }
 
-    private static Camera.Builder showcaseCamera(Scene scene) {
+    static Camera.Builder showcaseCamera(Scene scene) {
         return Camera.getBuilder()
                 .setLocation(Showcase.CAMERA_LOCATION).setDirection(Showcase.CAMERA_TARGET, Vector.AXIS_Y)
                 .setVpSize(Showcase.VP_SIZE, Showcase.VP_SIZE).setVpDistance(Showcase.VP_DISTANCE)
