@@ -13,6 +13,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.function.Function;
 import java.util.function.Supplier;
+import java.util.regex.Pattern;
 
 import javax.imageio.ImageIO;
 
@@ -35,7 +36,9 @@ import scene.samples.TeapotScene;
  *
  * <p>Options: {@code --side N} (image side, default 300), {@code --only a,b}, {@code --threads N}
  * (default 2), {@code --plot FILE} (default docs/quality-plot.png), {@code --out FILE},
- * {@code --fresh} (re-render the references), {@code --quick} (side 60, for a smoke run).
+ * {@code --match REGEX} (only the settings whose name matches), {@code --fresh} (re-render the
+ * references), {@code --images} (write every render to target/quality/), {@code --quick} (side 60,
+ * for a smoke run).
  */
 public final class QualityBenchmark {
     /** The reference: jittered 16×16 per pixel. */
@@ -49,7 +52,13 @@ public final class QualityBenchmark {
     private final boolean fresh;
     private final PrintStream log = System.err;
 
-    private QualityBenchmark(int side, int threads, boolean fresh) {
+    private final Pattern match;
+
+    private final boolean images;
+
+    private QualityBenchmark(int side, int threads, boolean fresh, Pattern match, boolean images) {
+        this.images = images;
+        this.match = match;
         this.side = side;
         this.threads = threads;
         this.fresh = fresh;
@@ -80,15 +89,16 @@ public final class QualityBenchmark {
         return list;
     }
 
-    static final int[] ADAPTIVE_DEPTHS = { 1, 2, 3 };
-    static final double[] ADAPTIVE_THRESHOLDS = { 2, 4, 8, 16, 32 };
+    static final int[] ADAPTIVE_DEPTHS = { 2, 3, 4 };
+    static final double[] ADAPTIVE_THRESHOLDS = { 2, 4, 6, 8, 12, 16 };
 
     public static void main(String[] args) throws IOException {
         int side = 300, threads = 2;
-        boolean fresh = false;
+        boolean fresh = false, images = false;
         Set<String> only = Set.of("showcase", "glossy", "teapot");
         Path plot = Path.of("docs", "quality-plot.png");
         Path out = null;
+        Pattern match = null;
         for (int i = 0; i < args.length; ++i) {
             switch (args[i]) {
                 case "--side" -> side = Integer.parseInt(args[++i]);
@@ -96,16 +106,18 @@ public final class QualityBenchmark {
                 case "--only" -> only = Set.of(args[++i].split(","));
                 case "--plot" -> plot = Path.of(args[++i]);
                 case "--out" -> out = Path.of(args[++i]);
+                case "--match" -> match = Pattern.compile(args[++i]);
                 case "--fresh" -> fresh = true;
+                case "--images" -> images = true;
                 case "--quick" -> side = 60;
                 default -> {
                     System.err.println("bench.QualityBenchmark: unknown option " + args[i]
-                            + " (options: --side N --threads N --only a,b --plot FILE --out FILE --fresh --quick)");
+                            + " (options: --side N --threads N --only a,b --match REGEX --plot FILE --out FILE --fresh --images --quick)");
                     System.exit(2);
                 }
             }
         }
-        QualityBenchmark bench = new QualityBenchmark(side, threads, fresh);
+        QualityBenchmark bench = new QualityBenchmark(side, threads, fresh, match, images);
         Map<String, List<QualityResult>> results = new LinkedHashMap<>();
         for (SceneSpec spec : SCENES)
             if (only.contains(spec.key())) results.put(spec.key(), bench.measure(spec));
@@ -126,9 +138,11 @@ public final class QualityBenchmark {
         int[] reference = reference(spec, scene);
         List<QualityResult> list = new ArrayList<>();
         for (QualityCase c : cases(spec.key())) {
+            if (match != null && !match.matcher(c.setting()).find()) continue;
             render(spec, scene, c.sampling(), Math.max(16, side / 4), null); // warm-up
             int[] pixels = new int[side * side];
             RenderStats s = render(spec, scene, c.sampling(), side, pixels);
+            if (images) writePng(pixels, CACHE.resolve(spec.key() + "-" + c.setting().replaceAll("[^A-Za-z0-9]+", "_") + ".png"));
             double pixelsCount = (double) side * side;
             QualityResult r = new QualityResult(c, psnr(pixels, reference), offShare(pixels, reference),
                     s.cameraRays() / pixelsCount, s.totalRays() / pixelsCount, s.seconds());
@@ -156,11 +170,15 @@ public final class QualityBenchmark {
         RenderStats s = render(spec, scene, b -> b.setAntiAliasing(AntiAliasing.RANDOM, REFERENCE_GRID, REFERENCE_GRID),
                 side, pixels);
         log.printf(Locale.ROOT, "  %.1f s%n", s.seconds());
+        writePng(pixels, file);
+        return pixels;
+    }
+
+    private void writePng(int[] pixels, Path file) throws IOException {
         BufferedImage img = new BufferedImage(side, side, BufferedImage.TYPE_INT_RGB);
         img.setRGB(0, 0, side, side, pixels, 0, side);
-        Files.createDirectories(CACHE);
+        Files.createDirectories(file.toAbsolutePath().getParent());
         ImageIO.write(img, "png", file.toFile());
-        return pixels;
     }
 
     private RenderStats render(SceneSpec spec, Scene scene, QualityCase.Sampling sampling, int n, int[] pixels) {

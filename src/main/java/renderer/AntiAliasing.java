@@ -11,9 +11,10 @@ public enum AntiAliasing {
     /** The centre and the four corners, averaged; corners are shared with the neighbouring pixels. */
     CORNERS,
     /**
-     * The centre and the four corners; when a corner differs from the centre by more than the
-     * threshold, the four quadrants are sampled the same way, down to the maximum depth. Samples
-     * are reused.
+     * The four corners, shared with the neighbouring pixels (one ray per pixel where the image is
+     * smooth); where they disagree by more than the threshold, the four quadrants are sampled the
+     * same way, down to the maximum depth. Samples are reused; each lattice point is jittered
+     * within its cell so that edges aligned with the pixel grid do not alias.
      */
     ADAPTIVE
 }

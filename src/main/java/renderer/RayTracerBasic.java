@@ -255,21 +255,68 @@ public class RayTracerBasic extends RayTracerBase {
 
     private Color globalEffects(Point p, Vector n, Vector v, double nv, Material material, int level, Double3 k,
                                 int budget, TraceContext ctx) {
+        if (material.ior != 1 && !material.kT.isZero()) return refraction(p, n, v, nv, material, level, k, budget, ctx);
         Color color = Color.BLACK;
         if (!material.kR.isZero()) { // most materials neither reflect nor transmit: no products then
             Double3 kkr = k.product(material.kR);
-            if (!kkr.lowerThan(MIN_CALC_COLOR_K)) {
-                // r = v − 2(v·n)n, in one allocation.
-                Vector r = nv == 0 ? v : new Vector(v.getX() - 2 * nv * n.getX(), v.getY() - 2 * nv * n.getY(),
-                        v.getZ() - 2 * nv * n.getZ());
-                color = color.add(beam(p, n, r, material.reflectionSpread, material.kR, kkr, level, budget, ctx));
-            }
+            if (!kkr.lowerThan(MIN_CALC_COLOR_K))
+                color = color.add(beam(p, n, mirror(v, n, nv), material.reflectionSpread, material.kR, kkr, level, budget, ctx));
         }
         if (!material.kT.isZero()) {
             Double3 kkt = k.product(material.kT);
             if (!kkt.lowerThan(MIN_CALC_COLOR_K))
                 color = color.add(beam(p, n, v, material.transmissionSpread, material.kT, kkt, level, budget, ctx));
         }
+        return color;
+    }
+
+    /** The mirror direction r = v − 2(v·n)n, in one allocation. */
+    private static Vector mirror(Vector v, Vector n, double nv) {
+        return nv == 0 ? v : new Vector(v.getX() - 2 * nv * n.getX(), v.getY() - 2 * nv * n.getY(), v.getZ() - 2 * nv * n.getZ());
+    }
+
+    /**
+     * Reflection and transmission of a material with an index of refraction ({@link Material#ior}
+     * ≠ 1). Inside and outside are told by the normal: a ray against the normal ({@code v·n < 0})
+     * enters the material (from index 1 to {@code ior}), a ray along it leaves (from {@code ior}
+     * to 1); there is no stack of media, so a refracting body sits in air and is closed, its
+     * normals pointing out. The transmitted ray follows Snell's law; beyond the critical angle it
+     * is reflected instead (total internal reflection, with weight kT); when the material reflects
+     * (kR &gt; 0) the Fresnel reflectance F (Schlick's approximation, with the cosine on the side of
+     * the lower index) moves F·kT from the transmission to the reflection. Reflected light spreads
+     * by the reflection spread, transmitted light by the transmission spread.
+     */
+    private Color refraction(Point p, Vector n, Vector v, double nv, Material material, int level, Double3 k,
+                             int budget, TraceContext ctx) {
+        double eta = nv < 0 ? 1 / material.ior : material.ior; // n₁ / n₂
+        double cosI = Math.abs(nv);
+        double cos2T = 1 - eta * eta * (1 - cosI * cosI);
+        Double3 kr = material.kR, kt = material.kT;
+        Vector t = null;
+        if (cos2T <= 0) { // total internal reflection: all the transmitted light is reflected
+            kr = kr.add(kt);
+            kt = Double3.ZERO;
+        } else {
+            double cosT = Math.sqrt(cos2T);
+            // t = η·v + (η·cosI − cosT)·n', with n' the normal on the incoming side (−sign(v·n)·n).
+            double a = (eta * cosI - cosT) * (nv < 0 ? 1 : -1);
+            t = new Vector(eta * v.getX() + a * n.getX(), eta * v.getY() + a * n.getY(), eta * v.getZ() + a * n.getZ());
+            if (!kr.isZero()) {
+                double r0 = (material.ior - 1) / (material.ior + 1);
+                r0 *= r0;
+                double c = 1 - (eta <= 1 ? cosI : cosT);
+                double f = r0 + (1 - r0) * c * c * c * c * c;
+                kr = kr.add(kt.scale(f));
+                kt = kt.scale(1 - f);
+            }
+        }
+        Color color = Color.BLACK;
+        Double3 kkr = k.product(kr);
+        if (!kr.isZero() && !kkr.lowerThan(MIN_CALC_COLOR_K))
+            color = color.add(beam(p, n, mirror(v, n, nv), material.reflectionSpread, kr, kkr, level, budget, ctx));
+        Double3 kkt = k.product(kt);
+        if (t != null && !kt.isZero() && !kkt.lowerThan(MIN_CALC_COLOR_K))
+            color = color.add(beam(p, n, t, material.transmissionSpread, kt, kkt, level, budget, ctx));
         return color;
     }
 

@@ -12,6 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 class MaterialTest {
 
@@ -22,7 +23,7 @@ class MaterialTest {
         void everySetterReturnsTheSameMaterialAndSetsItsField() {
             Material m = new Material();
             assertThat(m.setKd(0.5).setKs(new Double3(0.1, 0.2, 0.3)).setKt(0.25).setKr(new Double3(1, 0, 0.5))
-                    .setShininess(30).setReflectionSpread(0.1).setTransmissionSpread(0.2)).isSameAs(m);
+                    .setShininess(30).setReflectionSpread(0.1).setTransmissionSpread(0.2).setIor(1.5)).isSameAs(m);
             assertThat(m.kD).isEqualTo(new Double3(0.5));
             assertThat(m.kS).isEqualTo(new Double3(0.1, 0.2, 0.3));
             assertThat(m.kT).isEqualTo(new Double3(0.25));
@@ -30,6 +31,13 @@ class MaterialTest {
             assertThat(m.nShininess).isEqualTo(30);
             assertThat(m.reflectionSpread).isEqualTo(0.1);
             assertThat(m.transmissionSpread).isEqualTo(0.2);
+            assertThat(m.ior).isEqualTo(1.5);
+        }
+
+        @Test
+        void theIndexOfRefractionDefaultsToOneAndMayBeBelowOne() {
+            assertThat(new Material().ior).as("1: the course's straight transmission").isEqualTo(1);
+            assertThat(new Material().setIor(0.75).ior).as("a bubble of air in water").isEqualTo(0.75);
         }
 
         @Test
@@ -104,6 +112,13 @@ class MaterialTest {
             assertThatIllegalArgumentException().isThrownBy(() -> new Material().setKd(-1)).withMessageContaining("-1.0");
             assertThatIllegalArgumentException().isThrownBy(() -> new Material().setKt(1.5)).withMessageContaining("1.5");
             assertThatIllegalArgumentException().isThrownBy(() -> new Material().setKr(Double.NaN)).withMessageContaining("NaN");
+        }
+
+        @ParameterizedTest(name = "ior {0}")
+        @ValueSource(doubles = { 0, -0.0, -1.5, Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY })
+        void anIndexOfRefractionThatIsNotFiniteAndPositiveIsRejected(double ior) {
+            assertThatIllegalArgumentException().isThrownBy(() -> new Material().setIor(ior))
+                    .withMessage("index of refraction must be finite and positive, got " + ior);
         }
 
         @Test

@@ -340,7 +340,7 @@ public final class XmlSceneReader {
     }
 
     private static Material material(XmlElement e) throws SceneFormatException {
-        e.allowAttributes(List.of("kd", "ks", "kt", "kr", "shininess", "reflection-spread", "transmission-spread"));
+        e.allowAttributes(List.of("kd", "ks", "kt", "kr", "shininess", "reflection-spread", "transmission-spread", "ior"));
         noChildren(e);
         Material m = new Material();
         e.ifPresent("kd", COEFFICIENTS, m::setKd);
@@ -350,6 +350,7 @@ public final class XmlSceneReader {
         e.ifPresent("shininess", SHININESS, m::setShininess);
         e.ifPresent("reflection-spread", NON_NEGATIVE, m::setReflectionSpread);
         e.ifPresent("transmission-spread", NON_NEGATIVE, m::setTransmissionSpread);
+        e.ifPresent("ior", POSITIVE, m::setIor);
         return m;
     }
 

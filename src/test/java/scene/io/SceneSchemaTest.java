@@ -67,7 +67,7 @@ class SceneSchemaTest {
                 <geometries>
                     <sphere center="0 0 -100" radius="50" emission="10 0 0">
                         <material kd="0.5" ks="0.5 0.4 0.3" kt="0.1" kr="0.2" shininess="30"
-                                  reflection-spread="0.1" transmission-spread="0.05"/>
+                                  reflection-spread="0.1" transmission-spread="0.05" ior="1.5"/>
                     </sphere>
                     <plane p0="0 -60 0" p1="1 -60 0" p2="0 -60 -1"/>
                     <plane point="0 0 -500" normal="0 0 1"/>

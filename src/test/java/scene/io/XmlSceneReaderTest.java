@@ -279,11 +279,13 @@ class XmlSceneReaderTest {
         }
 
         @Test
-        @DisplayName("reflection and transmission spreads")
+        @DisplayName("reflection and transmission spreads, index of refraction")
         void spreads() throws Exception {
-            Material m = material("reflection-spread=\"0.1\" transmission-spread=\"0.05\"");
+            Material m = material("reflection-spread=\"0.1\" transmission-spread=\"0.05\" ior=\"1.5\"");
             assertThat(m.reflectionSpread).isEqualTo(0.1);
             assertThat(m.transmissionSpread).isEqualTo(0.05);
+            assertThat(m.ior).isEqualTo(1.5);
+            assertThat(material("kd=\"0.5\"").ior).as("default").isEqualTo(1);
         }
     }
 
