@@ -19,7 +19,9 @@ import scene.Scene;
  * ambient light scaled by the material's {@code kA}, Phong diffuse and specular per
  * light, shadows attenuated by the product of kT of the occluders up to the light, and mirror
  * reflection and (direction-keeping) refraction recursing to {@link #MAX_CALC_COLOR_LEVEL} while
- * the accumulated coefficient stays above {@link #MIN_CALC_COLOR_K}.
+ * the accumulated coefficient stays above {@link #MIN_CALC_COLOR_K}. A material with an index of
+ * refraction other than 1 ({@link Material#ior}) bends its transmitted rays instead (Snell's law,
+ * total internal reflection, Fresnel).
  *
  * <p>Extensions, each one fluent line and off by default in effect:
  * <ul>
