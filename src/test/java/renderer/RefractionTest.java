@@ -33,9 +33,13 @@ class RefractionTest {
 
     /** The interface, a wall on each side, and (optionally) a small target on the lower wall. */
     private static RayTracerBasic tracer(double ior, Polygon target) {
+        return tracer(new Material().setKr(KR).setKt(KT).setIor(ior), target);
+    }
+
+    private static RayTracerBasic tracer(Material glass, Polygon target) {
         Scene scene = new Scene("interface");
         scene.geometries.add(
-                new Plane(Point.ZERO, Vector.AXIS_Z).setMaterial(new Material().setKr(KR).setKt(KT).setIor(ior)),
+                new Plane(Point.ZERO, Vector.AXIS_Z).setMaterial(glass),
                 new Plane(new Point(0, 0, 100), Vector.AXIS_Z).setEmission(ABOVE),
                 new Plane(new Point(0, 0, -100), Vector.AXIS_Z).setEmission(target == null ? BELOW : Color.BLACK));
         if (target != null) scene.geometries.add(target);
@@ -67,6 +71,16 @@ class RefractionTest {
             assertThat(c.getR()).isCloseTo(expected, within(1e-9));
             // 0° sees 4 % more than kR: r0 = ((1.5 − 1) / (1.5 + 1))² = 0.04.
             if (degrees == 0) assertThat(c.getR()).isCloseTo((0.1 + 0.9 * 0.04) * 200, within(1e-9));
+        }
+
+        @Test
+        @DisplayName("diffuse glass with an index: the whole beam goes into the glass, with weight kT·(1 − F)")
+        void diffuseGlass() {
+            Material frosted = new Material().setKr(KR).setKt(KT).setIor(GLASS).setTransmissionSpread(0.5);
+            Color c = tracer(frosted, null).setBeamSize(64).traceRay(toward(60, true));
+            double f = schlick(0.5);
+            assertThat(c.getB()).as("the floor inside the glass").isCloseTo(KT * (1 - f) * 150, within(1e-9));
+            assertThat(c.getR()).as("the wall above: by reflection only").isCloseTo((KR + KT * f) * 200, within(1e-9));
         }
 
         @Test
