@@ -35,7 +35,7 @@ public record RenderStats(double seconds, long pixels, long cameraRays, long sha
     @Override
     public String toString() {
         return String.format(Locale.ROOT,
-                "%.3f s, %d px, rays: camera %d, shadow %d, secondary %d (%.2f per px), %.2f Mrays/s, %s, prepared in %.3f s",
+                "%.3f s, %d px, rays: camera %d, shadow %d, secondary %d, %.2f camera rays per px, %.2f Mrays/s (all rays), %s, prepared in %.3f s",
                 seconds, pixels, cameraRays, shadowRays, secondaryRays, samplesPerPixel(), mraysPerSecond(),
                 threads == 0 ? "calling thread" : threads + " threads", prepareSeconds);
     }

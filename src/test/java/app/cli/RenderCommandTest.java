@@ -310,8 +310,8 @@ class RenderCommandTest {
             Path none = dir.resolve("none.png"), random = dir.resolve("random.png");
             Run plain = run(small().toString(), "-o", none.toString());
             Run aa = run(small().toString(), "-o", random.toString(), "--aa", "random");
-            assertThat(plain.out()).contains("(1.00 per px)");
-            assertThat(aa.out()).contains("[RANDOM 4x4,").contains("(16.00 per px)");
+            assertThat(plain.out()).contains(", 1.00 camera rays per px,");
+            assertThat(aa.out()).contains("[RANDOM 4x4,").contains(", 16.00 camera rays per px,");
             assertThat(Files.mismatch(none, random)).as("the images differ").isNotEqualTo(-1);
         }
 
