@@ -21,7 +21,13 @@ public final class Color {
     }
 
     /**
-     * @throws IllegalArgumentException for a negative or non-finite component
+     * A colour from its three channels on the 0..255 scale; values above 255 are kept (light adds up
+     * before it is written) and only clamped by {@link #getColor()}.
+     *
+     * @param r red, finite and ≥ 0
+     * @param g green, finite and ≥ 0
+     * @param b blue, finite and ≥ 0
+     * @throws IllegalArgumentException for a negative or non-finite component, naming all three
      */
     public Color(double r, double g, double b) {
         this(r, g, b, true);
@@ -29,19 +35,22 @@ public final class Color {
             throw new IllegalArgumentException("colour components must be finite and non-negative, got (" + r + "," + g + "," + b + ")");
     }
 
-    /** From an AWT colour (0..255 per channel). */
+    /** @param other an AWT colour; its 0..255 channels become this colour's channels (alpha is dropped) */
     public Color(java.awt.Color other) {
         this(other.getRed(), other.getGreen(), other.getBlue(), true);
     }
 
+    /** @return the red channel, 0..255 scale, possibly above 255 */
     public double getR() {
         return r;
     }
 
+    /** @return the green channel, 0..255 scale, possibly above 255 */
     public double getG() {
         return g;
     }
 
+    /** @return the blue channel, 0..255 scale, possibly above 255 */
     public double getB() {
         return b;
     }
@@ -60,7 +69,10 @@ public final class Color {
         return c >= 255 ? 255 : (int) c;
     }
 
-    /** @return the sum of this colour and all of {@code colors} */
+    /**
+     * @param colors the colours to add; none gives this colour
+     * @return the channel-wise sum of this colour and all of {@code colors}
+     */
     public Color add(Color... colors) {
         double rr = r, gg = g, bb = b;
         for (Color c : colors) {
@@ -71,19 +83,35 @@ public final class Color {
         return new Color(rr, gg, bb, true);
     }
 
-    /** The sum of two colours without the varargs array (used by the tracer). */
+    /**
+     * The sum of two colours without the varargs array: the tracer adds light contributions per ray,
+     * so this form avoids an allocation on the hot path.
+     *
+     * @param c the colour to add
+     * @return the channel-wise sum
+     */
     public Color add(Color c) {
         return new Color(r + c.r, g + c.g, b + c.b, true);
     }
 
-    /** @throws IllegalArgumentException for a negative or non-finite factor */
+    /**
+     * @param k the factor applied to all three channels, finite and ≥ 0 (light attenuation, weights)
+     * @return this colour times {@code k}
+     * @throws IllegalArgumentException for a negative or non-finite factor, naming it
+     */
     public Color scale(double k) {
         if (!(k >= 0) || Double.isInfinite(k))
             throw new IllegalArgumentException("colour scale factor must be finite and non-negative, got " + k);
         return new Color(r * k, g * k, b * k, true);
     }
 
-    /** Per-channel scaling. @throws IllegalArgumentException for a negative or non-finite factor */
+    /**
+     * Per-channel scaling: how a coefficient such as kD or kT filters light colour by colour.
+     *
+     * @param k the factor of each channel, each finite and ≥ 0
+     * @return (r·k1, g·k2, b·k3)
+     * @throws IllegalArgumentException for a negative or non-finite factor, naming the triple
+     */
     public Color scale(Double3 k) {
         if (!(k.d1 >= 0) || !(k.d2 >= 0) || !(k.d3 >= 0)
                 || Double.isInfinite(k.d1) || Double.isInfinite(k.d2) || Double.isInfinite(k.d3))
@@ -91,13 +119,23 @@ public final class Color {
         return new Color(r * k.d1, g * k.d2, b * k.d3, true);
     }
 
-    /** @throws IllegalArgumentException when {@code k} is not positive */
+    /**
+     * @param k the divisor of all three channels, &gt; 0 (the number of samples averaged)
+     * @return this colour divided by {@code k}
+     * @throws IllegalArgumentException when {@code k} is not positive, naming it
+     */
     public Color reduce(int k) {
         if (k <= 0) throw new IllegalArgumentException("colour reduce factor must be positive, got " + k);
         return new Color(r / k, g / k, b / k, true);
     }
 
-    /** Divides every channel by a positive real (averaging a weighted sum). */
+    /**
+     * Divides every channel by a positive real: the average of a weighted sum.
+     *
+     * @param k the divisor, finite and &gt; 0
+     * @return this colour divided by {@code k}
+     * @throws IllegalArgumentException when {@code k} is not a positive finite number, naming it
+     */
     public Color reduce(double k) {
         if (!(k > 0) || Double.isInfinite(k))
             throw new IllegalArgumentException("colour reduce factor must be a positive finite number, got " + k);
@@ -107,6 +145,9 @@ public final class Color {
     /**
      * The largest per-channel absolute difference, on the 0..255 scale: the measure adaptive
      * anti-aliasing compares against its threshold.
+     *
+     * @param other the colour to compare with
+     * @return max(|Δr|, |Δg|, |Δb|), ≥ 0; 0 for equal colours
      */
     public double distance(Color other) {
         return Math.max(Math.abs(r - other.r), Math.max(Math.abs(g - other.g), Math.abs(b - other.b)));

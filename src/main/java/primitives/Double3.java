@@ -14,25 +14,33 @@ public final class Double3 {
     /** (1, 1, 1) */
     public static final Double3 ONE = new Double3(1, 1, 1);
 
+    /**
+     * @param d1 the first component (red, for a colour coefficient)
+     * @param d2 the second component (green)
+     * @param d3 the third component (blue)
+     */
     public Double3(double d1, double d2, double d3) {
         this.d1 = d1;
         this.d2 = d2;
         this.d3 = d3;
     }
 
-    /** The same value in all three components. */
+    /** @param value the value of all three components (a grey coefficient) */
     public Double3(double value) {
         this(value, value, value);
     }
 
+    /** @return the first component */
     public double getD1() {
         return d1;
     }
 
+    /** @return the second component */
     public double getD2() {
         return d2;
     }
 
+    /** @return the third component */
     public double getD3() {
         return d3;
     }
@@ -67,34 +75,60 @@ public final class Double3 {
         return d3;
     }
 
+    /**
+     * @param rhs the triple to add
+     * @return the component-wise sum
+     */
     public Double3 add(Double3 rhs) {
         return new Double3(d1 + rhs.d1, d2 + rhs.d2, d3 + rhs.d3);
     }
 
+    /**
+     * @param rhs the triple to subtract
+     * @return the component-wise difference
+     */
     public Double3 subtract(Double3 rhs) {
         return new Double3(d1 - rhs.d1, d2 - rhs.d2, d3 - rhs.d3);
     }
 
+    /**
+     * @param k the factor of all three components
+     * @return this triple times {@code k}
+     */
     public Double3 scale(double k) {
         return new Double3(d1 * k, d2 * k, d3 * k);
     }
 
-    /** Divides every component by {@code k}. */
+    /**
+     * @param k the divisor of all three components; 0 gives infinities or NaN, not an exception
+     * @return this triple divided by {@code k}
+     */
     public Double3 reduce(double k) {
         return new Double3(d1 / k, d2 / k, d3 / k);
     }
 
-    /** Component-wise product. */
+    /**
+     * The component-wise product: how coefficients along a path of bounces combine (kR·kT…).
+     *
+     * @param rhs the other factor
+     * @return (d1·rhs.d1, d2·rhs.d2, d3·rhs.d3)
+     */
     public Double3 product(Double3 rhs) {
         return new Double3(d1 * rhs.d1, d2 * rhs.d2, d3 * rhs.d3);
     }
 
-    /** @return true when all three components are below {@code k} */
+    /**
+     * @param k the bound; the tracer passes {@code MIN_CALC_COLOR_K} to stop paths that no longer matter
+     * @return true when all three components are below {@code k}
+     */
     public boolean lowerThan(double k) {
         return d1 < k && d2 < k && d3 < k;
     }
 
-    /** @return true when each component is below the matching component of {@code other} */
+    /**
+     * @param other the bounds, component by component
+     * @return true when each component is below the matching component of {@code other}
+     */
     public boolean lowerThan(Double3 other) {
         return d1 < other.d1 && d2 < other.d2 && d3 < other.d3;
     }

@@ -41,6 +41,7 @@ public class Material {
 
     /**
      * @param kd the diffuse coefficient of all three channels: finite and ≥ 0 (above 1 is allowed)
+     * @return this material, for chaining
      * @throws IllegalArgumentException when kd is negative, NaN or infinite, naming it
      */
     public Material setKd(double kd) {
@@ -49,6 +50,7 @@ public class Material {
 
     /**
      * @param kd the diffuse coefficient per channel, each finite and ≥ 0
+     * @return this material, for chaining
      * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
      */
     public Material setKd(Double3 kd) {
@@ -58,6 +60,7 @@ public class Material {
 
     /**
      * @param ks the specular coefficient of all three channels: finite and ≥ 0
+     * @return this material, for chaining
      * @throws IllegalArgumentException when ks is negative, NaN or infinite, naming it
      */
     public Material setKs(double ks) {
@@ -66,6 +69,7 @@ public class Material {
 
     /**
      * @param ks the specular coefficient per channel, each finite and ≥ 0
+     * @return this material, for chaining
      * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
      */
     public Material setKs(Double3 ks) {
@@ -76,6 +80,7 @@ public class Material {
     /**
      * @param kt the fraction of light transmitted through the surface, all three channels: in
      *           [0, 1], since a surface cannot pass on more light than reaches it
+     * @return this material, for chaining
      * @throws IllegalArgumentException when kt is outside [0, 1] or NaN, naming it
      */
     public Material setKt(double kt) {
@@ -84,6 +89,7 @@ public class Material {
 
     /**
      * @param kt the fraction of light transmitted per channel, each in [0, 1]
+     * @return this material, for chaining
      * @throws IllegalArgumentException when a component is outside [0, 1] or NaN, naming the triple
      */
     public Material setKt(Double3 kt) {
@@ -93,6 +99,7 @@ public class Material {
 
     /**
      * @param kr the fraction of light mirrored by the surface, all three channels: in [0, 1]
+     * @return this material, for chaining
      * @throws IllegalArgumentException when kr is outside [0, 1] or NaN, naming it
      */
     public Material setKr(double kr) {
@@ -101,6 +108,7 @@ public class Material {
 
     /**
      * @param kr the fraction of light mirrored per channel, each in [0, 1]
+     * @return this material, for chaining
      * @throws IllegalArgumentException when a component is outside [0, 1] or NaN, naming the triple
      */
     public Material setKr(Double3 kr) {
@@ -209,6 +217,7 @@ public class Material {
 
     /**
      * @param nShininess the Phong exponent, ≥ 0: the larger, the smaller and sharper the highlight
+     * @return this material, for chaining
      * @throws IllegalArgumentException when it is negative, naming it
      */
     public Material setShininess(int nShininess) {
@@ -220,6 +229,7 @@ public class Material {
 
     /**
      * @param spread the glossy spread, finite and ≥ 0; see {@link #reflectionSpread}
+     * @return this material, for chaining
      * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
      */
     public Material setReflectionSpread(double spread) {
@@ -229,6 +239,7 @@ public class Material {
 
     /**
      * @param spread the diffuse-glass spread, finite and ≥ 0; see {@link #transmissionSpread}
+     * @return this material, for chaining
      * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
      */
     public Material setTransmissionSpread(double spread) {

@@ -12,30 +12,39 @@ public class Point {
     /** The origin. */
     public static final Point ZERO = new Point(0, 0, 0);
 
+    /**
+     * @param x the x coordinate, in scene units
+     * @param y the y coordinate, in scene units
+     * @param z the z coordinate, in scene units
+     */
     public Point(double x, double y, double z) {
         this.x = x;
         this.y = y;
         this.z = z;
     }
 
-    /** A point from a {@link Double3} (course compatibility). */
+    /** @param xyz the three coordinates, in scene units (course compatibility) */
     public Point(Double3 xyz) {
         this(xyz.d1, xyz.d2, xyz.d3);
     }
 
+    /** @return the x coordinate, in scene units */
     public double getX() {
         return x;
     }
 
+    /** @return the y coordinate, in scene units */
     public double getY() {
         return y;
     }
 
+    /** @return the z coordinate, in scene units */
     public double getZ() {
         return z;
     }
 
     /**
+     * @param other the point the vector starts from
      * @return the vector from {@code other} to this point
      * @throws IllegalArgumentException when the two points coincide (the zero vector)
      */
@@ -43,11 +52,20 @@ public class Point {
         return new Vector(x - other.x, y - other.y, z - other.z);
     }
 
-    /** @return this point moved by {@code v} */
+    /**
+     * @param v the displacement
+     * @return this point moved by {@code v}
+     */
     public Point add(Vector v) {
         return new Point(x + v.x, y + v.y, z + v.z);
     }
 
+    /**
+     * The squared distance: what the closest-point searches compare, without a square root.
+     *
+     * @param other the other point
+     * @return the squared Euclidean distance, in scene units squared
+     */
     public double distanceSquared(Point other) {
         double dx = x - other.x;
         double dy = y - other.y;
@@ -55,6 +73,10 @@ public class Point {
         return dx * dx + dy * dy + dz * dz;
     }
 
+    /**
+     * @param other the other point
+     * @return the Euclidean distance, in scene units
+     */
     public double distance(Point other) {
         return Math.sqrt(distanceSquared(other));
     }

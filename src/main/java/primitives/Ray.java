@@ -19,7 +19,10 @@ public final class Ray {
     private final Point head;
     private final Vector direction;
 
-    /** @param direction any non-zero vector; it is normalized */
+    /**
+     * @param head where the ray starts ({@code t = 0})
+     * @param direction any non-zero vector; it is normalized, so {@code t} measures distance
+     */
     public Ray(Point head, Vector direction) {
         this.head = head;
         this.direction = direction.normalize();
@@ -29,6 +32,10 @@ public final class Ray {
      * A secondary ray leaving a surface: the head is moved by {@link #DELTA} along {@code normal},
      * to the side {@code direction} goes (against the normal when the direction enters the surface).
      * A direction tangent to the surface keeps the head in place.
+     *
+     * @param head the point on the surface
+     * @param direction where the ray goes; it is normalized
+     * @param normal the surface normal at {@code head}, unit length (either orientation)
      */
     public Ray(Point head, Vector direction, Vector normal) {
         this.direction = direction.normalize();
@@ -41,6 +48,7 @@ public final class Ray {
         }
     }
 
+    /** @return the point the ray starts from ({@code t = 0}) */
     public Point getHead() {
         return head;
     }
@@ -60,13 +68,19 @@ public final class Ray {
         return direction;
     }
 
-    /** @return {@code head + t·direction}; {@code t = 0} (within tolerance) gives the head itself */
+    /**
+     * @param t the distance along the ray, in scene units
+     * @return {@code head + t·direction}; {@code t = 0} (within tolerance) gives the head itself
+     */
     public Point getPoint(double t) {
         if (Util.isZero(t)) return head;
         return new Point(head.x + direction.x * t, head.y + direction.y * t, head.z + direction.z * t);
     }
 
-    /** @return the point of {@code points} closest to the head, or null for a null or empty list */
+    /**
+     * @param points candidate points, for example a ray's intersections; may be null
+     * @return the point of {@code points} closest to the head, or null for a null or empty list
+     */
     public Point findClosestPoint(List<Point> points) {
         if (points == null || points.isEmpty()) return null;
         Point closest = null;

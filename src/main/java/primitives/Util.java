@@ -49,17 +49,28 @@ public final class Util {
         return min + u * (max - min);
     }
 
-    /** @return true when {@code number} is within the library's zero tolerance */
+    /**
+     * @param number any double
+     * @return true when |{@code number}| &lt; 2^-40, the library's zero tolerance (NaN is not zero)
+     */
     public static boolean isZero(double number) {
         return Math.abs(number) < ACCURACY;
     }
 
-    /** @return {@code number}, or exactly 0.0 when it is within the zero tolerance */
+    /**
+     * @param number any double
+     * @return {@code number}, or exactly 0.0 when it is within the zero tolerance, so that sign tests
+     *         on the result ({@code > 0}, {@code < 0}) ignore rounding noise
+     */
     public static double alignZero(double number) {
         return Math.abs(number) < ACCURACY ? 0.0 : number;
     }
 
-    /** @return true when both values are non-zero and have the same sign */
+    /**
+     * @param n1 the first value
+     * @param n2 the second value
+     * @return true when both values are non-zero and have the same sign
+     */
     public static boolean compareSign(double n1, double n2) {
         return (n1 < 0 && n2 < 0) || (n1 > 0 && n2 > 0);
     }
@@ -67,8 +78,10 @@ public final class Util {
     /**
      * Rejects NaN and infinities with a message naming the value.
      *
+     * @param value the value to check
      * @param name what the value is, for the message (e.g. "sphere radius")
      * @return {@code value}
+     * @throws IllegalArgumentException when {@code value} is NaN or infinite
      */
     public static double requireFinite(double value, String name) {
         if (!Double.isFinite(value))
@@ -76,14 +89,28 @@ public final class Util {
         return value;
     }
 
-    /** Rejects values that are not finite and strictly positive. */
+    /**
+     * Rejects values that are not finite and strictly positive (sizes, distances, radii).
+     *
+     * @param value the value to check
+     * @param name what the value is, for the message (e.g. "view-plane width")
+     * @return {@code value}
+     * @throws IllegalArgumentException when {@code value} is ≤ 0, NaN or infinite
+     */
     public static double requirePositive(double value, String name) {
         if (!(value > 0) || Double.isInfinite(value))
             throw new IllegalArgumentException(name + " must be a positive finite number, got " + value);
         return value;
     }
 
-    /** Rejects values that are not finite and non-negative. */
+    /**
+     * Rejects values that are not finite and non-negative (spreads, radii where 0 means "off").
+     *
+     * @param value the value to check
+     * @param name what the value is, for the message (e.g. "reflection spread")
+     * @return {@code value}
+     * @throws IllegalArgumentException when {@code value} is negative, NaN or infinite
+     */
     public static double requireNonNegative(double value, String name) {
         if (!(value >= 0) || Double.isInfinite(value))
             throw new IllegalArgumentException(name + " must be a non-negative finite number, got " + value);

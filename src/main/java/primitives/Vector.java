@@ -21,7 +21,11 @@ public class Vector extends Point {
     private static final double PARALLEL_SIN2 = 0x1p-80;
 
     /**
-     * @throws IllegalArgumentException for the zero vector or a non-finite component
+     * @param x the x component
+     * @param y the y component
+     * @param z the z component
+     * @throws IllegalArgumentException for the zero vector (all components within the zero tolerance)
+     *         or a non-finite component
      */
     public Vector(double x, double y, double z) {
         super(x, y, z);
@@ -36,7 +40,10 @@ public class Vector extends Point {
         super(x, y, z);
     }
 
-    /** A vector from a {@link Double3} (course compatibility). */
+    /**
+     * @param xyz the three components (course compatibility)
+     * @throws IllegalArgumentException for the zero vector or a non-finite component
+     */
     public Vector(Double3 xyz) {
         this(xyz.d1, xyz.d2, xyz.d3);
     }
@@ -46,16 +53,28 @@ public class Vector extends Point {
         return new Vector(x + v.x, y + v.y, z + v.z);
     }
 
-    /** @return the difference, which must not be the zero vector */
+    /**
+     * @param v the vector to subtract
+     * @return the difference, which must not be the zero vector
+     * @throws IllegalArgumentException when the vectors are equal (the zero vector)
+     */
     public Vector subtract(Vector v) {
         return new Vector(x - v.x, y - v.y, z - v.z);
     }
 
-    /** @throws IllegalArgumentException when {@code k} is zero (the result would be the zero vector) */
+    /**
+     * @param k the factor; negative reverses the direction
+     * @return this vector times {@code k}
+     * @throws IllegalArgumentException when {@code k} is zero (the result would be the zero vector)
+     */
     public Vector scale(double k) {
         return new Vector(x * k, y * k, z * k);
     }
 
+    /**
+     * @param v the other vector
+     * @return the scalar product: |this|·|v|·cos of the angle between them
+     */
     public double dotProduct(Vector v) {
         return x * v.x + y * v.y + z * v.z;
     }
@@ -66,6 +85,8 @@ public class Vector extends Point {
      * depend on the operands' lengths: two orthogonal vectors of length 1e-7 are not parallel).
      * The result is not checked against the absolute zero tolerance: it may be shorter.
      *
+     * @param v the right-hand operand
+     * @return this × v, orthogonal to both, following the right-hand rule
      * @throws IllegalArgumentException when the vectors are parallel, or the product is beyond the
      *                                  range of a double
      */
@@ -102,10 +123,12 @@ public class Vector extends Point {
         return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
     }
 
+    /** @return the squared length: what comparisons need, without a square root */
     public double lengthSquared() {
         return x * x + y * y + z * z;
     }
 
+    /** @return the Euclidean length, &gt; 0 */
     public double length() {
         return Math.sqrt(lengthSquared());
     }
