@@ -7,6 +7,12 @@ public final class BoundingBox {
     final double minX, minY, minZ, maxX, maxY, maxZ;
 
     /**
+     * @param minX the smallest x, in scene units (−∞ allowed for an unbounded side)
+     * @param minY the smallest y
+     * @param minZ the smallest z
+     * @param maxX the largest x, ≥ {@code minX}
+     * @param maxY the largest y, ≥ {@code minY}
+     * @param maxZ the largest z, ≥ {@code minZ}
      * @throws IllegalArgumentException when min &gt; max on some axis or a bound is NaN, naming
      *                                  both corners
      */
@@ -22,17 +28,26 @@ public final class BoundingBox {
         this.maxZ = maxZ;
     }
 
-    /** @return the smallest box enclosing both; each axis taken separately */
+    /**
+     * @param o the other box
+     * @return the smallest box enclosing both; each axis taken separately
+     */
     public BoundingBox union(BoundingBox o) {
         return new BoundingBox(Math.min(minX, o.minX), Math.min(minY, o.minY), Math.min(minZ, o.minZ),
                 Math.max(maxX, o.maxX), Math.max(maxY, o.maxY), Math.max(maxZ, o.maxZ));
     }
 
+    /** @return the smallest x of the box, in scene units */
     public double getMinX() { return minX; }
+    /** @return the smallest y of the box, in scene units */
     public double getMinY() { return minY; }
+    /** @return the smallest z of the box, in scene units */
     public double getMinZ() { return minZ; }
+    /** @return the largest x of the box, in scene units */
     public double getMaxX() { return maxX; }
+    /** @return the largest y of the box, in scene units */
     public double getMaxY() { return maxY; }
+    /** @return the largest z of the box, in scene units */
     public double getMaxZ() { return maxZ; }
 
     /**
@@ -70,6 +85,16 @@ public final class BoundingBox {
      * 0·∞ = NaN lands on the side that the comparisons below ignore. With −∞ the NaN would land
      * in a while b = −∞ empties the interval: a ray grazing a face would miss.
      *
+     * The ray is passed as doubles, precomputed once per ray, because the BVH walk tests many
+     * boxes against the same ray.
+     *
+     * @param ox    the ray head's x
+     * @param oy    the ray head's y
+     * @param oz    the ray head's z
+     * @param invDx 1 / the direction's x component (+∞ for 0)
+     * @param invDy 1 / the direction's y component (+∞ for 0)
+     * @param invDz 1 / the direction's z component (+∞ for 0)
+     * @param tMax  the far end of the segment, in distance along the unit direction
      * @return true when the ray segment [0, tMax] touches the box
      */
     public boolean intersects(double ox, double oy, double oz, double invDx, double invDy, double invDz, double tMax) {

@@ -43,7 +43,13 @@ public final class Bvh extends Intersectable {
     private final int nodeCount;
     private final int depth;
 
-    /** Indexes the leaves of {@code geometries} as they are now. */
+    /**
+     * Indexes the leaves of {@code geometries} as they are now: geometries added later are not in
+     * the tree, so build it after the scene is complete (the renderer does, once per render).
+     *
+     * @param geometries the scene's geometries; bounded leaves go into the tree
+     * @return the hierarchy, immutable, safe to share between render threads
+     */
     public static Bvh build(Geometries geometries) {
         return new Bvh(geometries);
     }

@@ -14,12 +14,21 @@ import primitives.Vector;
 public class Cylinder extends Tube {
     private final double height;
 
-    /** @throws IllegalArgumentException when the radius or height is not a positive finite number */
+    /**
+     * A finite cylinder with both caps: the tube around {@code axis} from its head to
+     * {@code height} along its direction.
+     *
+     * @param radius the radius, in scene units, positive and finite
+     * @param axis   the axis: its head is the centre of the bottom cap, its direction points to the top
+     * @param height the distance between the caps, in scene units, positive and finite
+     * @throws IllegalArgumentException when the radius or height is not a positive finite number
+     */
     public Cylinder(double radius, Ray axis, double height) {
         super(radius, axis);
         this.height = Util.requirePositive(height, "cylinder height");
     }
 
+    /** @return the distance between the caps, in scene units */
     public double getHeight() {
         return height;
     }

@@ -14,14 +14,22 @@ import primitives.Ray;
 public class Geometries extends Intersectable {
     private final List<Intersectable> items = new ArrayList<>();
 
+    /** An empty composite; {@link #add} fills it. */
     public Geometries() {
     }
 
+    /**
+     * @param geometries the first members, in order
+     * @throws NullPointerException naming the index of a null element
+     */
     public Geometries(Intersectable... geometries) {
         add(geometries);
     }
 
-    /** @throws NullPointerException naming the index of a null element */
+    /**
+     * @param geometries members to append; another {@code Geometries} is allowed (a nested group)
+     * @throws NullPointerException naming the index of a null element
+     */
     public void add(Intersectable... geometries) {
         for (int i = 0; i < geometries.length; ++i)
             items.add(Objects.requireNonNull(geometries[i], "geometry #" + i + " to add is null"));
@@ -32,6 +40,7 @@ public class Geometries extends Intersectable {
         return Collections.unmodifiableList(items);
     }
 
+    /** @return true when nothing has been added: every ray misses */
     public boolean isEmpty() {
         return items.isEmpty();
     }

@@ -15,12 +15,14 @@ public abstract class Geometry extends Intersectable {
     private Color emission = Color.BLACK;
     private Material material = new Material();
 
+    /** @return the light the surface gives off by itself; black by default */
     public Color getEmission() {
         return emission;
     }
 
     /**
      * @param emission the light the surface gives off by itself, added to what it reflects; black by default
+     * @return this geometry, for chaining
      * @throws NullPointerException when emission is null
      */
     public Geometry setEmission(Color emission) {
@@ -28,6 +30,7 @@ public abstract class Geometry extends Intersectable {
         return this;
     }
 
+    /** @return the surface's coefficients (shared, see {@link #setMaterial}); all zero by default */
     public Material getMaterial() {
         return material;
     }
@@ -35,6 +38,7 @@ public abstract class Geometry extends Intersectable {
     /**
      * @param material the surface's coefficients; the object is shared, not copied, so changing
      *                 its fields changes every geometry using it
+     * @return this geometry, for chaining
      * @throws NullPointerException when material is null
      */
     public Geometry setMaterial(Material material) {
@@ -42,7 +46,10 @@ public abstract class Geometry extends Intersectable {
         return this;
     }
 
-    /** @return the outward unit normal at {@code point}, which must lie on the surface */
+    /**
+     * @param point a point on the surface (not checked: off the surface, the result is meaningless)
+     * @return the outward unit normal at {@code point}
+     */
     public abstract Vector getNormal(Point point);
 
     /**

@@ -22,7 +22,12 @@ public final class Hit {
     /** The entry distance of each node on {@link #stack}, to skip it when a nearer hit was found. */
     double[] stackT = new double[64];
 
-    /** Clears the record and sets the query's upper bound on the distance. */
+    /**
+     * Clears the record and sets the query's upper bound on the distance.
+     *
+     * @param tMax hits farther than this along the ray are ignored; +∞ for no bound
+     * @return this record, for a query call in the same expression
+     */
     public Hit reset(double tMax) {
         t = tMax;
         geometry = null;
@@ -51,12 +56,18 @@ public final class Hit {
         return geometry;
     }
 
-    /** @return the hit point on {@code ray} (the ray the query was made with) */
+    /**
+     * @param ray the ray the query was made with (the record keeps only its distance)
+     * @return the hit point on {@code ray}
+     */
     public Point point(Ray ray) {
         return ray.getPoint(t);
     }
 
-    /** @return the unit surface normal at {@code point}, the hit point of this record */
+    /**
+     * @param point the hit point of this record, from {@link #point(Ray)}
+     * @return the unit surface normal at {@code point}; a mesh's smooth normal when it has vertex normals
+     */
     public Vector normal(Point point) {
         return geometry.normalAt(point, this);
     }

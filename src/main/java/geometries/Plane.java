@@ -11,8 +11,11 @@ public class Plane extends SingleHitGeometry {
     private final Vector normal;
 
     /**
-     * The plane through three points.
+     * The plane through three points; its normal is (p2 − p1) × (p3 − p1), normalized.
      *
+     * @param p1 a point of the plane, also its reference point
+     * @param p2 a second point
+     * @param p3 a third point, not on the line through the first two
      * @throws IllegalArgumentException when two points coincide or all three are collinear
      */
     public Plane(Point p1, Point p2, Point p3) {
@@ -20,7 +23,10 @@ public class Plane extends SingleHitGeometry {
         this.normal = normalOf(p1, p2, p3, "plane");
     }
 
-    /** @param normal any non-zero vector; it is normalized */
+    /**
+     * @param q      a point of the plane
+     * @param normal any non-zero vector; it is normalized
+     */
     public Plane(Point q, Vector normal) {
         this.q = q;
         this.normal = normal.normalize();

@@ -24,6 +24,8 @@ public class Polygon extends SingleHitGeometry {
     private final double nx, ny, nz;
 
     /**
+     * @param vertices the corners in order around the polygon (either direction), at least 3, all in
+     *                 one plane, forming a convex polygon
      * @throws IllegalArgumentException for fewer than 3 vertices, repeated or collinear vertices,
      *                                  vertices off the plane of the first three, or a concave or
      *                                  out-of-order (self-crossing) vertex list

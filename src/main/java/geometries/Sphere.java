@@ -20,22 +20,34 @@ public class Sphere extends Geometry {
     private final double radius;
     private final double radiusSquared;
 
-    /** @throws IllegalArgumentException when the radius is not a positive finite number */
+    /**
+     * @param center the centre
+     * @param radius the radius, in scene units, positive and finite
+     * @throws IllegalArgumentException when the radius is not a positive finite number
+     */
     public Sphere(Point center, double radius) {
         this.center = center;
         this.radius = Util.requirePositive(radius, "sphere radius");
         this.radiusSquared = radius * radius;
     }
 
-    /** Argument order of older course versions. */
+    /**
+     * The argument order of older course versions.
+     *
+     * @param radius the radius, in scene units, positive and finite
+     * @param center the centre
+     * @throws IllegalArgumentException when the radius is not a positive finite number
+     */
     public Sphere(double radius, Point center) {
         this(center, radius);
     }
 
+    /** @return the centre */
     public Point getCenter() {
         return center;
     }
 
+    /** @return the radius, in scene units */
     public double getRadius() {
         return radius;
     }

@@ -12,7 +12,12 @@ import primitives.Vector;
 public class Triangle extends Polygon {
     private final double ax, ay, az, e1x, e1y, e1z, e2x, e2y, e2z;
 
-    /** @throws IllegalArgumentException when points repeat or are collinear */
+    /**
+     * @param p1 the first vertex
+     * @param p2 the second vertex
+     * @param p3 the third vertex; the order sets the normal (p2 − p1) × (p3 − p1)
+     * @throws IllegalArgumentException when points repeat or are collinear
+     */
     public Triangle(Point p1, Point p2, Point p3) {
         super(p1, p2, p3);
         ax = p1.getX();

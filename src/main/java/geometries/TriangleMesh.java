@@ -49,8 +49,11 @@ public class TriangleMesh extends Geometry {
     private final BoundingBox paddedBounds;
 
     /**
-     * A flat-shaded mesh.
+     * A flat-shaded mesh: every triangle has its face normal.
      *
+     * @param positions x, y, z of each vertex, interleaved; finite
+     * @param indices   three vertex indices (0-based) per triangle
+     * @throws IllegalArgumentException as {@link #TriangleMesh(double[], int[], double[])} does
      * @see #TriangleMesh(double[], int[], double[])
      */
     public TriangleMesh(double[] positions, int[] indices) {
@@ -131,6 +134,10 @@ public class TriangleMesh extends Geometry {
      * generator drop or report such triangles first.
      *
      * @param positions x, y, z per vertex, interleaved
+     * @param a         the first vertex's index (a vertex, not an array offset)
+     * @param b         the second vertex's index
+     * @param c         the third vertex's index
+     * @return true when the triangle would be rejected
      * @throws ArrayIndexOutOfBoundsException when an index is outside {@code positions}
      */
     public static boolean isDegenerate(double[] positions, int a, int b, int c) {
@@ -196,6 +203,7 @@ public class TriangleMesh extends Geometry {
     }
 
     /**
+     * @param index the vertex, 0-based
      * @return vertex {@code index}
      * @throws IndexOutOfBoundsException naming the index
      */
@@ -205,6 +213,7 @@ public class TriangleMesh extends Geometry {
     }
 
     /**
+     * @param index the vertex, 0-based
      * @return the unit normal of vertex {@code index}
      * @throws IllegalStateException     when the mesh has no vertex normals
      * @throws IndexOutOfBoundsException naming the index
@@ -216,6 +225,7 @@ public class TriangleMesh extends Geometry {
     }
 
     /**
+     * @param triangle the triangle, 0-based, in the order of the constructor's indices
      * @return a new array with the three vertex indices of triangle {@code triangle}, in winding order
      * @throws IndexOutOfBoundsException naming the index
      */

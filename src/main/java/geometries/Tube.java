@@ -19,11 +19,16 @@ public class Tube extends Geometry {
 
     /** The axis: its head is a point on the axis, its direction is unit length. */
     protected final Ray axis;
+    /** The radius, in scene units, positive and finite. */
     protected final double radius;
     // The axis as doubles, read by every intersection.
     final double px, py, pz, vx, vy, vz;
 
-    /** @throws IllegalArgumentException when the radius is not a positive finite number */
+    /**
+     * @param radius the radius, in scene units, positive and finite
+     * @param axis   the axis line (both directions: the tube is infinite)
+     * @throws IllegalArgumentException when the radius is not a positive finite number
+     */
     public Tube(double radius, Ray axis) {
         this.radius = Util.requirePositive(radius, "tube radius");
         this.axis = axis;
@@ -35,10 +40,12 @@ public class Tube extends Geometry {
         vz = axis.getDirection().getZ();
     }
 
+    /** @return the axis: a point on it and its unit direction */
     public Ray getAxis() {
         return axis;
     }
 
+    /** @return the radius, in scene units */
     public double getRadius() {
         return radius;
     }
