@@ -11,8 +11,9 @@ public class AmbientLight extends Light {
     public static final AmbientLight NONE = new AmbientLight(Color.BLACK, 0);
 
     /**
-     * @param iA the ambient intensity
-     * @param kA per-channel factor, each ≥ 0
+     * @param iA the ambient colour before attenuation
+     * @param kA per-channel factor, each finite and ≥ 0; the light is {@code iA·kA}
+     * @throws IllegalArgumentException when a factor is negative or not finite
      */
     public AmbientLight(Color iA, Double3 kA) {
         super(iA.scale(kA));
@@ -30,8 +31,9 @@ public class AmbientLight extends Light {
     }
 
     /**
-     * @param iA the ambient intensity
-     * @param kA factor ≥ 0
+     * @param iA the ambient colour before attenuation
+     * @param kA the factor of all three channels, finite and ≥ 0; the light is {@code iA·kA}
+     * @throws IllegalArgumentException when the factor is negative or not finite
      */
     public AmbientLight(Color iA, double kA) {
         super(iA.scale(kA));

@@ -8,7 +8,12 @@ import primitives.Vector;
 public class DirectionalLight extends Light implements LightSource {
     private final Vector direction;
 
-    /** @param direction the direction the light travels (normalized here) */
+    /**
+     * A light at infinity (the sun): the same intensity and direction at every point, no attenuation.
+     *
+     * @param intensity the intensity at every point, non-negative
+     * @param direction the direction the light travels (normalized here)
+     */
     public DirectionalLight(Color intensity, Vector direction) {
         super(intensity);
         this.direction = direction.normalize();

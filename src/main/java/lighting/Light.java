@@ -13,6 +13,7 @@ abstract class Light {
         this.intensity = Objects.requireNonNull(intensity, "light intensity");
     }
 
+    /** @return the emitted intensity, before any attenuation by distance or beam shape */
     public Color getIntensity() {
         return intensity;
     }

@@ -15,6 +15,7 @@ import primitives.Vector;
  * soft shadows.
  */
 public class PointLight extends Light implements LightSource {
+    /** Where the light is, in scene coordinates; the centre of its disk when it has a radius. */
     protected final Point position;
     private double kC = 1;
     private double kL = 0;
@@ -33,19 +34,31 @@ public class PointLight extends Light implements LightSource {
         this.position = Objects.requireNonNull(position, "light position");
     }
 
-    /** @param kC constant attenuation, ≥ 0 */
+    /**
+     * @param kC constant attenuation, finite and ≥ 0 (1 by default)
+     * @return this light, for chaining
+     * @throws IllegalArgumentException when kC is negative or not finite, naming it
+     */
     public PointLight setKc(double kC) {
         this.kC = Util.requireNonNegative(kC, "kC");
         return this;
     }
 
-    /** @param kL linear attenuation per unit distance, ≥ 0 */
+    /**
+     * @param kL linear attenuation per unit distance, finite and ≥ 0 (0 by default)
+     * @return this light, for chaining
+     * @throws IllegalArgumentException when kL is negative or not finite, naming it
+     */
     public PointLight setKl(double kL) {
         this.kL = Util.requireNonNegative(kL, "kL");
         return this;
     }
 
-    /** @param kQ quadratic attenuation per squared unit distance, ≥ 0 */
+    /**
+     * @param kQ quadratic attenuation per squared unit distance, finite and ≥ 0 (0 by default)
+     * @return this light, for chaining
+     * @throws IllegalArgumentException when kQ is negative or not finite, naming it
+     */
     public PointLight setKq(double kQ) {
         this.kQ = Util.requireNonNegative(kQ, "kQ");
         return this;
@@ -84,6 +97,8 @@ public class PointLight extends Light implements LightSource {
     /**
      * @param radius the radius of the light's disk in scene units, ≥ 0; 0 (the default) is a point
      *               light with hard shadows
+     * @return this light, for chaining
+     * @throws IllegalArgumentException when the radius is negative or not finite, naming it
      */
     public PointLight setRadius(double radius) {
         this.radius = Util.requireNonNegative(radius, "light radius");
@@ -108,7 +123,13 @@ public class PointLight extends Light implements LightSource {
                     + " (the intensity would be infinite), got kC=" + kC + ", kL=" + kL + ", kQ=" + kQ);
     }
 
-    /** The distance attenuation factor 1 / (kC + kL·d + kQ·d²). */
+    /**
+     * The distance attenuation factor 1 / (kC + kL·d + kQ·d²).
+     *
+     * @param p the shaded point; d is its distance from {@link #position}
+     * @return the factor the intensity is multiplied by, &gt; 0 (+∞ when all coefficients are 0,
+     *         which {@link #validate()} rejects before a render)
+     */
     protected double attenuation(Point p) {
         double d2 = p.distanceSquared(position);
         double denominator = kC + kL * Math.sqrt(d2) + kQ * d2;

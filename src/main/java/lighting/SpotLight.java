@@ -76,7 +76,12 @@ public class SpotLight extends PointLight {
         return this;
     }
 
-    /** @param narrowBeam the beam exponent, a positive number; 1 (the default) is the plain cosine */
+    /**
+     * @param narrowBeam the beam exponent, a positive number: the intensity falls off as
+     *                   max(0, cos θ)^narrowBeam away from the axis; 1 (the default) is the plain cosine
+     * @return this light, for chaining
+     * @throws IllegalArgumentException when it is not a positive finite number, naming it
+     */
     public SpotLight setNarrowBeam(double narrowBeam) {
         this.narrowBeam = Util.requirePositive(narrowBeam, "spot light narrow beam");
         return this;
