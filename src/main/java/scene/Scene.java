@@ -26,25 +26,51 @@ public class Scene {
     /** The light sources (the ambient light excluded). */
     public List<LightSource> lights = new LinkedList<>();
 
+    /**
+     * An empty scene: black background, no ambient light, no geometries, no lights.
+     *
+     * @param name the scene's name, for progress lines and reports
+     * @throws NullPointerException when the name is null
+     */
     public Scene(String name) {
         this.name = Objects.requireNonNull(name, "scene name");
     }
 
+    /**
+     * @param background the colour of rays that hit nothing
+     * @return this scene, for chaining
+     * @throws NullPointerException when it is null
+     */
     public Scene setBackground(Color background) {
         this.background = Objects.requireNonNull(background, "background");
         return this;
     }
 
+    /**
+     * @param ambientLight the uniform light added at every hit, before the light sources
+     * @return this scene, for chaining
+     * @throws NullPointerException when it is null ({@link AmbientLight#NONE} is "none")
+     */
     public Scene setAmbientLight(AmbientLight ambientLight) {
         this.ambientLight = Objects.requireNonNull(ambientLight, "ambient light");
         return this;
     }
 
+    /**
+     * @param geometries everything that can be hit, replacing the current composite
+     * @return this scene, for chaining
+     * @throws NullPointerException when it is null
+     */
     public Scene setGeometries(Geometries geometries) {
         this.geometries = Objects.requireNonNull(geometries, "geometries");
         return this;
     }
 
+    /**
+     * @param lights the light sources, replacing the current list; the list is kept, not copied
+     * @return this scene, for chaining
+     * @throws NullPointerException when it is null
+     */
     public Scene setLights(List<LightSource> lights) {
         this.lights = Objects.requireNonNull(lights, "lights");
         return this;

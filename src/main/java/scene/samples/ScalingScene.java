@@ -50,7 +50,11 @@ public final class ScalingScene {
     private ScalingScene() {
     }
 
-    /** @return {@code n} spheres and {@code n} triangles from {@link #DEFAULT_SEED} */
+    /**
+     * @param n spheres, and again triangles, to scatter (1..{@link #MAX_N})
+     * @return {@code n} spheres and {@code n} triangles from {@link #DEFAULT_SEED}
+     * @throws IllegalArgumentException when {@code n} is out of range
+     */
     public static Scene create(int n) {
         return create(n, DEFAULT_SEED);
     }
