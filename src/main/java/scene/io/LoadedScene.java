@@ -30,6 +30,7 @@ public final class LoadedScene {
         this.noCamera = noCamera;
     }
 
+    /** @return the scene the file describes, complete (its geometries and lights added) */
     public Scene scene() {
         return scene;
     }
@@ -70,6 +71,7 @@ public final class LoadedScene {
         return camera;
     }
 
+    /** @return the render settings the file asks for, its defaults where it says nothing */
     public RenderSettings settings() {
         return settings;
     }

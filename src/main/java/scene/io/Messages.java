@@ -17,6 +17,9 @@ public final class Messages {
      * The reason a file could not be read, in a few words for a one-line message: "no such file",
      * "access denied", the file system's own reason, else the exception's message (its class name
      * when the message is missing or blank). The file itself is not named: the caller does that.
+     *
+     * @param e the failure of reading the file
+     * @return the reason, one line, without the file's name
      */
     public static String reason(IOException e) {
         if (e instanceof NoSuchFileException) return "no such file";

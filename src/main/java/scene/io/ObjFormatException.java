@@ -8,8 +8,11 @@ import java.io.IOException;
  * An {@link IOException}, so that one {@code catch} covers a missing file and a bad one.
  */
 public class ObjFormatException extends IOException {
+    /** The file name or resource the text came from, as the caller named it. */
     private final String source;
+    /** The 1-based number of the line at fault. */
     private final int line;
+    /** What is wrong, naming the bad value, without the source and line. */
     private final String problem;
 
     /**

@@ -95,6 +95,8 @@ public final class ObjReader {
      * Reads an OBJ file (UTF-8; bytes that are not UTF-8 can only occur in comments and names,
      * which are ignored). Error messages name the file as given.
      *
+     * @param file the OBJ file
+     * @return the mesh, smooth-shaded when every face corner has a normal, else flat
      * @throws ObjFormatException when the content is malformed
      * @throws IOException        when the file cannot be read
      */
@@ -108,7 +110,9 @@ public final class ObjReader {
     /**
      * Reads OBJ text to its end; does not close {@code reader}.
      *
+     * @param reader     the OBJ text
      * @param sourceName what error messages call the text (a file name)
+     * @return the mesh, smooth-shaded when every face corner has a normal, else flat
      * @throws ObjFormatException when the content is malformed
      * @throws IOException        when {@code reader} fails
      */
@@ -125,9 +129,11 @@ public final class ObjReader {
      * Reads an OBJ file from the class path, such as the bundled {@code "/models/teapot.obj"}.
      *
      * @param classpathResource an absolute resource name (starting with '/')
+     * @return the mesh, smooth-shaded when every face corner has a normal, else flat
      * @throws IllegalArgumentException when the name is not absolute
      * @throws FileNotFoundException    naming the resource when it does not exist
      * @throws ObjFormatException       when the content is malformed
+     * @throws IOException              when the resource cannot be read
      */
     public static TriangleMesh readResource(String classpathResource) throws IOException {
         Objects.requireNonNull(classpathResource, "classpath resource");

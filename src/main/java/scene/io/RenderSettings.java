@@ -56,6 +56,32 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
 
     /**
+     * Checks what can be checked without a camera: the names and colours are present and the image
+     * size can be allocated. The sampling values are checked by the camera when the settings are
+     * {@linkplain #applyTo(Camera.Builder, Scene) applied}.
+     *
+     * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise
+     * @param width            image width in pixels, at least 1
+     * @param height           image height in pixels, at least 1; width × height at most
+     *                         {@link #MAX_PIXELS}
+     * @param gridInterval     a grid line every this many pixels over the image (the course's
+     *                         {@code printGrid}); 0: no grid
+     * @param gridColor        the grid lines' colour
+     * @param antiAliasing     how pixels are sampled
+     * @param aaColumns        RANDOM: jittered grid columns per pixel
+     * @param aaRows           RANDOM: jittered grid rows per pixel
+     * @param adaptiveDepth    ADAPTIVE: maximum subdivision depth (sub-pixels of 1/2^depth)
+     * @param adaptiveThreshold ADAPTIVE: the colour difference (0..255 scale) that subdivides
+     * @param focalDistance    depth of field: distance of the sharp plane along the view
+     *                         direction; 0: pinhole camera (no depth of field)
+     * @param aperture         depth of field: lens radius in scene units
+     * @param dofSamples       depth of field: lens samples per pixel without anti-aliasing
+     * @param threads          0: calling thread; n &gt; 0: n workers; -2: all cores
+     * @param seed             the seed of every random number of the render
+     * @param bvh              whether the tracer uses the bounding volume hierarchy
+     * @param beamSize         rays per glossy or diffuse-glass beam
+     * @param shadowSamples    shadow rays toward a light with a radius
+     * @throws NullPointerException     when the image name, grid colour or anti-aliasing mode is null
      * @throws IllegalArgumentException for a side below 1 pixel or more than {@link #MAX_PIXELS}
      *                                  pixels, naming the size
      */
@@ -76,6 +102,9 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * grid, no anti-aliasing (RANDOM would use 4×4, ADAPTIVE depth 3 and threshold 8), no depth
      * of field (16 lens samples when it is on), all cores, seed 0, BVH on, beams of 16 rays and
      * 16 shadow samples: the camera's and the tracer's own defaults, except the thread count.
+     *
+     * @param imageName the image's name: images/&lt;name&gt;.png
+     * @return the default settings
      */
     public static RenderSettings defaults(String imageName) {
         Editor defaults = new Editor();
@@ -83,7 +112,13 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         return defaults.settings();
     }
 
-    /** @return these settings with another image name and size */
+    /**
+     * @param name   the image's name: images/&lt;name&gt;.png
+     * @param width  image width in pixels, at least 1
+     * @param height image height in pixels, at least 1
+     * @return these settings with another image name and size
+     * @throws IllegalArgumentException when the size is out of range (see the constructor)
+     */
     public RenderSettings withImage(String name, int width, int height) {
         return edit(e -> {
             e.imageName = name;
@@ -92,7 +127,11 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         });
     }
 
-    /** @return these settings with another grid overlay (interval 0: none) */
+    /**
+     * @param interval a grid line every this many pixels; 0: no grid
+     * @param color    the grid lines' colour
+     * @return these settings with another grid overlay
+     */
     public RenderSettings withGrid(int interval, Color color) {
         return edit(e -> {
             e.gridInterval = interval;
@@ -100,12 +139,25 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         });
     }
 
-    /** @return these settings with another anti-aliasing mode (its parameters kept) */
+    /**
+     * @param mode how pixels are sampled
+     * @return these settings with another anti-aliasing mode (its parameters kept, so a later mode
+     *         change finds them)
+     */
     public RenderSettings withAntiAliasing(AntiAliasing mode) {
         return edit(e -> e.antiAliasing = mode);
     }
 
-    /** @return these settings with other anti-aliasing parameters */
+    /**
+     * The parameters of every mode at once; each is checked by the camera when applied, and only
+     * the current mode's parameters are.
+     *
+     * @param columns   RANDOM: jittered grid columns per pixel
+     * @param rows      RANDOM: jittered grid rows per pixel
+     * @param depth     ADAPTIVE: maximum subdivision depth
+     * @param threshold ADAPTIVE: the colour difference (0..255 scale) that subdivides
+     * @return these settings with other anti-aliasing parameters
+     */
     public RenderSettings withAntiAliasingParameters(int columns, int rows, int depth, double threshold) {
         return edit(e -> {
             e.aaColumns = columns;
@@ -115,7 +167,12 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         });
     }
 
-    /** @return these settings with another depth of field (focal distance 0: none) */
+    /**
+     * @param focalDistance distance of the sharp plane along the view direction; 0: none
+     * @param aperture      lens radius in scene units
+     * @param samples       lens samples per pixel when anti-aliasing is off
+     * @return these settings with another depth of field
+     */
     public RenderSettings withDepthOfField(double focalDistance, double aperture, int samples) {
         return edit(e -> {
             e.focalDistance = focalDistance;
@@ -124,17 +181,28 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         });
     }
 
-    /** @return these settings with another thread count */
+    /**
+     * @param threads 0: calling thread; n &gt; 0: n workers; -2: all cores
+     * @return these settings with another thread count
+     */
     public RenderSettings withThreads(int threads) {
         return edit(e -> e.threads = threads);
     }
 
-    /** @return these settings with another seed */
+    /**
+     * @param seed the seed of every random number of the render
+     * @return these settings with another seed
+     */
     public RenderSettings withSeed(long seed) {
         return edit(e -> e.seed = seed);
     }
 
-    /** @return these settings with other tracer extensions */
+    /**
+     * @param bvh           whether the tracer uses the bounding volume hierarchy
+     * @param beamSize      rays per glossy or diffuse-glass beam
+     * @param shadowSamples shadow rays toward a light with a radius
+     * @return these settings with other tracer extensions
+     */
     public RenderSettings withTracer(boolean bvh, int beamSize, int shadowSamples) {
         return edit(e -> {
             e.bvh = bvh;
@@ -154,6 +222,8 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * with these extensions, the sampling, seed and thread count. The view (location, direction,
      * view plane) is left as it is.
      *
+     * @param camera the builder to configure; its view must be set by the caller
+     * @param scene  what the new tracer renders
      * @return {@code camera}, for chaining
      * @throws IllegalArgumentException for a value the camera or tracer refuses
      */
@@ -170,6 +240,12 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * As {@link #applyTo(Camera.Builder, Scene)}, with an image writer of the caller's (which
      * keeps a reference to it, e.g. to write it elsewhere than images/, or to allocate it where
      * it can report a lack of memory); its size is the caller's business.
+     *
+     * @param camera the builder to configure; its view must be set by the caller
+     * @param scene  what the new tracer renders
+     * @param image  the image the camera renders into
+     * @return {@code camera}, for chaining
+     * @throws IllegalArgumentException for a value the camera or tracer refuses
      */
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
         camera.setImageWriter(image)
@@ -189,7 +265,11 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         return camera;
     }
 
-    /** Draws the grid over a rendered image when these settings ask for one. */
+    /**
+     * Draws the grid over a rendered image when these settings ask for one.
+     *
+     * @param camera the camera that rendered the image (its image writer receives the grid)
+     */
     public void drawGrid(Camera camera) {
         if (gridInterval > 0) camera.printGrid(gridInterval, gridColor);
     }

@@ -11,9 +11,13 @@ import java.util.Objects;
 public class SceneFormatException extends Exception {
     private static final long serialVersionUID = 1L;
 
+    /** The file as the user named it. */
     private final String file;
+    /** 1-based line, 0 when the problem concerns the whole file. */
     private final int line;
+    /** 1-based column (in characters), 0 when unknown. */
     private final int column;
+    /** What was wrong and what was expected, one line, without the position. */
     private final String reason;
 
     /**
@@ -26,6 +30,13 @@ public class SceneFormatException extends Exception {
         this(file, line, column, reason, null);
     }
 
+    /**
+     * @param file   the file as the user named it
+     * @param line   1-based line, 0 when the problem concerns the whole file
+     * @param column 1-based column (in characters), 0 when unknown
+     * @param reason what was wrong and what was expected; line breaks are folded into one line
+     * @param cause  the library's exception behind it (a rejected geometry, an unreadable mesh), or null
+     */
     public SceneFormatException(String file, int line, int column, String reason, Throwable cause) {
         super(format(file, line, column, reason), cause);
         this.file = Objects.requireNonNull(file, "file");
@@ -40,14 +51,17 @@ public class SceneFormatException extends Exception {
         return where + ": " + reason.replaceAll("\\s*\\R\\s*", " ");
     }
 
+    /** @return the file as the user named it */
     public String getFile() {
         return file;
     }
 
+    /** @return the 1-based line, 0 when the problem concerns the whole file */
     public int getLine() {
         return line;
     }
 
+    /** @return the 1-based column in characters, 0 when unknown */
     public int getColumn() {
         return column;
     }

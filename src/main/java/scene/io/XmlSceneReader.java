@@ -93,6 +93,8 @@ public final class XmlSceneReader {
     /**
      * Reads a scene file (UTF-8). Mesh files are found relative to the scene file's folder.
      *
+     * @param file the scene file; messages name it as given
+     * @return the scene, its view when the file has a camera, and its render settings
      * @throws IOException          when the file cannot be read
      * @throws SceneFormatException when its content is not a valid scene (the message names the
      *                              place and what was expected)
