@@ -11,11 +11,15 @@ public abstract class RayTracerBase {
     /** The scene traced; read-only while rendering. */
     protected final Scene scene;
 
+    /** @param scene the scene rays are traced in; read, never changed */
     protected RayTracerBase(Scene scene) {
         this.scene = Objects.requireNonNull(scene, "scene");
     }
 
-    /** @return the colour seen along {@code ray} */
+    /**
+     * @param ray a camera ray (or any ray: a tracer may be called directly)
+     * @return the colour seen along {@code ray}, on the 0..255 scale, unclamped
+     */
     public abstract Color traceRay(Ray ray);
 
     /**

@@ -59,11 +59,23 @@ public class RayTracerBasic extends RayTracerBase {
     private final ThreadLocal<TraceContext> directContexts =
             ThreadLocal.withInitial(() -> new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K));
 
+    /**
+     * A tracer with the defaults: the BVH on, beams of 16 rays, 16 shadow samples for lights with
+     * a radius.
+     *
+     * @param scene the scene to trace; its BVH is built when a render starts
+     */
     public RayTracerBasic(Scene scene) {
         super(scene);
     }
 
-    /** Switches the bounding volume hierarchy on (the default) or off, to compare. */
+    /**
+     * Switches the bounding volume hierarchy on (the default) or off, to compare: both give the
+     * same image.
+     *
+     * @param on whether closest-hit and shadow queries go through the BVH
+     * @return this tracer, for chaining
+     */
     public RayTracerBasic setBvh(boolean on) {
         this.useBvh = on;
         this.world = null;
@@ -78,6 +90,8 @@ public class RayTracerBasic extends RayTracerBase {
      * {@code beamSize^depth}, and as the beam grows the deeper bounces are averaged over more
      * parents, so the image converges to the same result.
      *
+     * @param rays rays per beam, ≥ 1
+     * @return this tracer, for chaining
      * @throws IllegalArgumentException when {@code rays < 1}
      */
     public RayTracerBasic setBeamSize(int rays) {
@@ -90,6 +104,8 @@ public class RayTracerBasic extends RayTracerBase {
      * The number of shadow rays toward a light with a radius (default 16); lights of radius 0 always
      * use one.
      *
+     * @param samples shadow rays per light with a radius and per shaded point, ≥ 1
+     * @return this tracer, for chaining
      * @throws IllegalArgumentException when {@code samples < 1}
      */
     public RayTracerBasic setShadowSamples(int samples) {
@@ -98,14 +114,17 @@ public class RayTracerBasic extends RayTracerBase {
         return this;
     }
 
+    /** @return whether queries go through the bounding volume hierarchy */
     public boolean isBvh() {
         return useBvh;
     }
 
+    /** @return rays per glossy or diffuse-glass beam */
     public int getBeamSize() {
         return beamSize;
     }
 
+    /** @return shadow rays toward a light with a radius */
     public int getShadowSamples() {
         return shadowSamples;
     }

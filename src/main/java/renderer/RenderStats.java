@@ -18,6 +18,7 @@ import java.util.Locale;
 public record RenderStats(double seconds, long pixels, long cameraRays, long shadowRays, long secondaryRays,
                           int threads, double prepareSeconds) {
 
+    /** @return camera, shadow and secondary rays together: what the Mrays/s rate counts */
     public long totalRays() {
         return cameraRays + shadowRays + secondaryRays;
     }
