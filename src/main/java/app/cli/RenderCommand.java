@@ -103,7 +103,12 @@ public final class RenderCommand implements Callable<Integer> {
         this.terminal = terminal;
     }
 
-    /** Runs the command on the process's streams; the result is the exit code. */
+    /**
+     * Runs the command on the process's streams.
+     *
+     * @param args the command line, as {@code main} receives it
+     * @return the exit code: 0 done, 1 failure while rendering, 2 bad input or usage error
+     */
     public static int run(String... args) {
         return commandLine(System.out, System.err, System.console() != null).execute(args);
     }
