@@ -1,0 +1,83 @@
+package app;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import javax.xml.parsers.DocumentBuilderFactory;
+
+import org.junit.jupiter.api.BeforeAll;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+import org.w3c.dom.Document;
+import org.w3c.dom.Element;
+import org.w3c.dom.Node;
+
+/**
+ * The pom a library user receives: nothing of the command line's (picocli) or of other optional
+ * integrations (Spark) reaches their dependency tree, and the metadata Maven Central requires is
+ * there. Checked on the project's pom.xml (the tests run from the project root).
+ */
+class PublishedPomTest {
+    private static Element project;
+
+    @BeforeAll
+    static void parse() throws Exception {
+        DocumentBuilderFactory factory = DocumentBuilderFactory.newInstance();
+        factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
+        Document pom = factory.newDocumentBuilder().parse(Path.of("pom.xml").toFile());
+        project = pom.getDocumentElement();
+    }
+
+    /** The direct children of {@code parent} named {@code name}. */
+    private static List<Element> children(Element parent, String name) {
+        List<Element> found = new ArrayList<>();
+        for (Node n = parent.getFirstChild(); n != null; n = n.getNextSibling())
+            if (n instanceof Element e && e.getTagName().equals(name)) found.add(e);
+        return found;
+    }
+
+    private static String text(Element parent, String name) {
+        List<Element> found = children(parent, name);
+        return found.isEmpty() ? "" : found.get(0).getTextContent().trim();
+    }
+
+    @Test
+    @DisplayName("every main dependency is test-scoped, provided or optional: a user inherits none")
+    void noTransitiveDependencies() {
+        List<Element> dependencies = children(children(project, "dependencies").get(0), "dependency");
+        assertThat(dependencies).isNotEmpty();
+        assertThat(dependencies).allSatisfy(d -> assertThat(
+                List.of("test", "provided").contains(text(d, "scope")) || "true".equals(text(d, "optional")))
+                .as("%s:%s reaches library users", text(d, "groupId"), text(d, "artifactId"))
+                .isTrue());
+    }
+
+    @Test
+    @DisplayName("picocli is among the dependencies, as an optional one (the runnable jar shades it in)")
+    void picocliIsOptional() {
+        List<Element> dependencies = children(children(project, "dependencies").get(0), "dependency");
+        assertThat(dependencies).filteredOn(d -> text(d, "artifactId").equals("picocli"))
+                .singleElement().satisfies(d -> assertThat(text(d, "optional")).isEqualTo("true"));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @ValueSource(strings = { "name", "description", "url", "licenses", "developers", "scm" })
+    @DisplayName("the metadata Maven Central requires is present")
+    void centralMetadata(String element) {
+        assertThat(text(project, element)).as("<%s>", element).isNotBlank();
+    }
+
+    @Test
+    @DisplayName("the licence in the pom is the one in LICENSE")
+    void licence() throws Exception {
+        Element licence = children(children(project, "licenses").get(0), "license").get(0);
+        assertThat(text(licence, "name")).isEqualTo("Apache-2.0");
+        assertThat(Files.readString(Path.of("LICENSE"))).contains("Apache License", "Version 2.0, January 2004");
+    }
+}
