@@ -74,18 +74,22 @@ public final class Camera {
         return new Builder();
     }
 
+    /** @return where the camera stands: the rays' common head (the lens centre with depth of field) */
     public Point getLocation() {
         return location;
     }
 
+    /** @return the unit view direction, through the view plane's centre */
     public Vector getVTo() {
         return vTo;
     }
 
+    /** @return the image's unit up direction, orthogonal to {@link #getVTo()} */
     public Vector getVUp() {
         return vUp;
     }
 
+    /** @return the image's unit right direction: vTo × vUp */
     public Vector getVRight() {
         return vRight;
     }
@@ -94,6 +98,11 @@ public final class Camera {
      * The ray from the camera through the centre of pixel (column j, row i) of a view plane cut
      * into nX × nY pixels.
      *
+     * @param nX the number of columns the view plane is cut into, &gt; 0
+     * @param nY the number of rows, &gt; 0
+     * @param j  the column, 0 at the left, &lt; nX
+     * @param i  the row, 0 at the top, &lt; nY
+     * @return the ray from the camera location through the pixel's centre (unit direction)
      * @throws IllegalArgumentException for a non-positive resolution or a pixel outside it
      */
     public Ray constructRay(int nX, int nY, int j, int i) {
@@ -215,6 +224,7 @@ public final class Camera {
      * Renders the image into the image writer and returns what it did; prints the one-line
      * summary unless silenced.
      *
+     * @return the render's time and ray counts, as printed in the summary
      * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
      */
     public RenderStats render() {
@@ -224,7 +234,13 @@ public final class Camera {
         return stats;
     }
 
-    /** Renders the image (see {@link #render()}). @return this camera, for chaining */
+    /**
+     * Renders the image (see {@link #render()}); the course's spelling, for chaining
+     * {@code renderImage().writeToImage()}.
+     *
+     * @return this camera, for chaining
+     * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
+     */
     public Camera renderImage() {
         render();
         return this;
@@ -247,7 +263,11 @@ public final class Camera {
      * Paints a grid over the image: every pixel whose column or row is a multiple of
      * {@code interval}.
      *
+     * @param interval the grid's spacing in pixels, &gt; 0
+     * @param color    the grid lines' colour
+     * @return this camera, for chaining
      * @throws IllegalArgumentException when {@code interval} is not positive
+     * @throws NullPointerException     when {@code color} is null
      */
     public Camera printGrid(int interval, Color color) {
         if (interval <= 0) throw new IllegalArgumentException("grid interval must be positive, got " + interval);
@@ -464,6 +484,10 @@ public final class Camera {
          * RANDOM anti-aliasing with a grid of columns × rows jittered samples per pixel (one line
          * for both settings).
          *
+         * @param mode    must be RANDOM
+         * @param columns jittered samples across a pixel, ≥ 1
+         * @param rows    jittered samples down a pixel, ≥ 1
+         * @return this builder
          * @throws IllegalArgumentException for a mode other than RANDOM (the grid is RANDOM's; use
          *                                  {@link #setAdaptive} for ADAPTIVE) or a grid below 1×1
          */
@@ -475,7 +499,14 @@ public final class Camera {
             return setAntiAliasing(mode);
         }
 
-        /** The RANDOM grid: columns × rows samples per pixel (default 4×4), each at least 1. */
+        /**
+         * The RANDOM grid: columns × rows samples per pixel (default 4×4); other modes ignore it.
+         *
+         * @param columns jittered samples across a pixel, ≥ 1
+         * @param rows    jittered samples down a pixel, ≥ 1
+         * @return this builder
+         * @throws IllegalArgumentException for a grid below 1×1, naming it
+         */
         public Builder setAntiAliasingGrid(int columns, int rows) {
             if (columns < 1 || rows < 1)
                 throw new IllegalArgumentException("anti-aliasing grid must be at least 1x1, got " + columns + "x" + rows);
@@ -493,6 +524,12 @@ public final class Camera {
          * 128 for a sixteenth. The test bounds what a square can add to its pixel's error, so
          * deeper levels split only at strong edges. The defaults trace about 2 camera rays per
          * pixel on the showcase at 600×600 (see BENCHMARKS.md, image quality per ray).
+         *
+         * @param maxDepth  the deepest subdivision, 1..6
+         * @param threshold the pixel-level corner spread that subdivides, finite and ≥ 0 (0 always
+         *                  subdivides)
+         * @return this builder
+         * @throws IllegalArgumentException when either is out of range, naming it
          */
         public Builder setAdaptive(int maxDepth, double threshold) {
             if (maxDepth < 1 || maxDepth > 6)
@@ -506,6 +543,11 @@ public final class Camera {
          * Depth of field with a thin lens: objects at {@code focalDistance} (along the view
          * direction, scene units) stay sharp, the blur grows with {@code apertureRadius}
          * (scene units). Aperture 0 is the pinhole camera.
+         *
+         * @param focalDistance  the distance of the sharp plane, positive and finite
+         * @param apertureRadius the lens radius, finite and ≥ 0
+         * @return this builder
+         * @throws IllegalArgumentException when either is out of range, naming it
          */
         public Builder setDepthOfField(double focalDistance, double apertureRadius) {
             this.focalDistance = Util.requirePositive(focalDistance, "focal distance");
@@ -513,14 +555,27 @@ public final class Camera {
             return this;
         }
 
-        /** Lens samples per pixel with depth of field and no anti-aliasing (default 16). */
+        /**
+         * Lens samples per pixel with depth of field and no anti-aliasing (default 16); with
+         * anti-aliasing, each anti-aliasing sample takes its own lens point instead.
+         *
+         * @param samples rays per pixel, ≥ 1
+         * @return this builder
+         * @throws IllegalArgumentException when it is below 1
+         */
         public Builder setDepthOfFieldSamples(int samples) {
             if (samples < 1) throw new IllegalArgumentException("depth-of-field samples must be at least 1, got " + samples);
             this.lensSamples = samples;
             return this;
         }
 
-        /** The seed every random number of the render derives from (default 0). */
+        /**
+         * The seed every random number of the render derives from (default 0): the same seed gives
+         * the same image on any number of threads.
+         *
+         * @param seed any value
+         * @return this builder
+         */
         public Builder setSeed(long seed) {
             this.seed = seed;
             return this;
@@ -539,7 +594,11 @@ public final class Camera {
             return this;
         }
 
-        /** @param percentStep print a progress line each time this much more is done (0..100]; 0: none */
+        /**
+         * @param percentStep print a progress line each time this much more is done (0..100]; 0: none
+         * @return this builder
+         * @throws IllegalArgumentException when it is outside [0, 100]
+         */
         public Builder setDebugPrint(double percentStep) {
             if (!(percentStep >= 0 && percentStep <= 100))
                 throw new IllegalArgumentException("progress step must be in [0, 100] percent, got " + percentStep);
@@ -547,13 +606,20 @@ public final class Camera {
             return this;
         }
 
-        /** Whether to print the one-line summary after each render (default true). */
+        /**
+         * @param on whether to print the one-line summary after each render (default true)
+         * @return this builder
+         */
         public Builder setSummary(boolean on) {
             this.summary = on;
             return this;
         }
 
-        /** Where progress lines and the summary go (default System.out). */
+        /**
+         * @param output where progress lines and the summary go (default System.out)
+         * @return this builder
+         * @throws NullPointerException when it is null
+         */
         public Builder setOutput(PrintStream output) {
             this.output = Objects.requireNonNull(output, "output stream");
             return this;

@@ -99,12 +99,24 @@ public class ImageWriter {
         return imageName == null ? "(unnamed)" : imageName;
     }
 
-    /** Sets pixel (column x, row y), clamping each channel to 0..255. */
+    /**
+     * Sets pixel (column x, row y), clamping each channel to 0..255.
+     *
+     * @param x     the column, 0 at the left
+     * @param y     the row, 0 at the top
+     * @param color the pixel's colour
+     * @throws IndexOutOfBoundsException naming the pixel when it is outside the image
+     */
     public void writePixel(int x, int y, Color color) {
         pixels[index(x, y)] = color.toRgb();
     }
 
-    /** @return pixel (column x, row y) as 0xRRGGBB */
+    /**
+     * @param x the column, 0 at the left
+     * @param y the row, 0 at the top
+     * @return pixel (column x, row y) as 0xRRGGBB
+     * @throws IndexOutOfBoundsException naming the pixel when it is outside the image
+     */
     public int getRgb(int x, int y) {
         return pixels[index(x, y)];
     }
@@ -149,6 +161,7 @@ public class ImageWriter {
      * Writes the PNG to {@code file} atomically: into a temporary file beside it, then moved into
      * place, so a reader never sees a half-written image and a failure leaves no file behind.
      *
+     * @param file where the PNG goes; missing folders are created
      * @throws UncheckedIOException naming the file when it cannot be written
      */
     public void writeToImage(Path file) {
