@@ -250,6 +250,7 @@ public class Material {
     /**
      * @param ior the index of refraction, see {@link #ior}: finite and &gt; 0 (below 1 is allowed:
      *            a bubble of air in water is 0.75)
+     * @return this material, for chaining
      * @throws IllegalArgumentException when it is not above 0, NaN or infinite, naming it
      */
     public Material setIor(double ior) {
