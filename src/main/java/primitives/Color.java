@@ -4,8 +4,10 @@ package primitives;
  * An immutable RGB colour with non-negative components on the 0..255 scale of the course.
  * Components may exceed 255 while light accumulates; {@link #getColor()} clamps when writing.
  * There is deliberately no tolerant {@code equals}: compare colours with {@link #distance(Color)}.
+ * Serializable so that render settings can travel to the machines of a cluster.
  */
-public final class Color {
+public final class Color implements java.io.Serializable {
+    private static final long serialVersionUID = 1L;
     private final double r;
     private final double g;
     private final double b;

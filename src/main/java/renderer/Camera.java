@@ -246,6 +246,16 @@ public final class Camera {
         return this;
     }
 
+    /**
+     * A renderer of rectangles of this camera's image, for renders split into parts (a cluster's
+     * tiles) that must assemble to the bytes of {@link #render()}; it prepares the scene now, once.
+     *
+     * @return a new region renderer over this camera
+     */
+    public RegionRenderer regionRenderer() {
+        return new RegionRenderer(this);
+    }
+
     /** @return the sampling settings in words, for summaries and benchmark tables */
     public String describe() {
         String aa = switch (antiAliasing) {

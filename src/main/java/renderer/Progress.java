@@ -2,17 +2,22 @@ package renderer;
 
 import java.io.PrintStream;
 import java.util.Locale;
+import java.util.Objects;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 
 /**
  * Progress lines of one render: a full line (no carriage-return tricks, so IDE consoles show it)
- * each time another {@code step} percent of the pixels is done, with elapsed time and an ETA.
- * Shared by the workers of that render only; lock-free except when a line is due.
+ * each time another {@code step} percent of the work is done, with elapsed time and an ETA:
+ * {@code LABEL:  45.0%  450/1000 px  elapsed 3.1 s  ETA 3.8 s}. The render loop counts pixels;
+ * a distributed render counts its tiles ({@code tiles}) in the same format. Shared by the
+ * workers of that render only; lock-free except when a line is due.
  */
-final class Progress {
+public final class Progress {
     private final String label;
     private final long total;
+    /** What is counted, in the lines: "px" for pixels. */
+    private final String unit;
     private final double step;
     private final PrintStream out;
     private final long start = System.nanoTime();
@@ -22,14 +27,38 @@ final class Progress {
 
     /** @param step percent between lines; 0 reports nothing */
     Progress(String label, long total, double step, PrintStream out) {
-        this.label = label;
-        this.total = total;
-        this.step = step;
-        this.out = out;
+        this(label, total, "px", step, out);
     }
 
-    void advance(long pixels) {
-        long now = done.addAndGet(pixels);
+    /**
+     * Starts the clock.
+     *
+     * @param label what is done, at the start of each line ("render showcase")
+     * @param total how many units make 100 %, at least 1
+     * @param unit  the unit's short name in the lines ("px", "tiles")
+     * @param step  percent between lines, in [0, 100]; 0 reports nothing
+     * @param out   where the lines go
+     * @throws IllegalArgumentException for a total below 1 or a step outside [0, 100]
+     */
+    public Progress(String label, long total, String unit, double step, PrintStream out) {
+        if (total < 1) throw new IllegalArgumentException("progress total must be at least 1, got " + total);
+        if (!(step >= 0 && step <= 100))
+            throw new IllegalArgumentException("progress step must be in [0, 100] percent, got " + step);
+        this.label = Objects.requireNonNull(label, "label");
+        this.total = total;
+        this.unit = Objects.requireNonNull(unit, "unit");
+        this.step = step;
+        this.out = Objects.requireNonNull(out, "out");
+    }
+
+    /**
+     * Counts {@code units} more as done (from any thread) and prints a line when another step is
+     * complete.
+     *
+     * @param units how many more units are done
+     */
+    public void advance(long units) {
+        long now = done.addAndGet(units);
         if (step <= 0) return;
         double percent = 100.0 * now / total;
         if (percent < Math.min(100, nextStep.get() * step)) return; // most calls: no line is due
@@ -42,12 +71,13 @@ final class Progress {
             nextStep.set(percent >= 100 ? Integer.MAX_VALUE : (int) Math.floor(percent / step) + 1);
             double elapsed = (System.nanoTime() - start) / 1e9;
             double eta = now == 0 ? 0 : elapsed * (total - now) / now;
-            out.println(String.format(Locale.ROOT, "%s: %5.1f%%  %d/%d px  elapsed %.1f s  ETA %.1f s",
-                    label, percent, now, total, elapsed, eta));
+            out.println(String.format(Locale.ROOT, "%s: %5.1f%%  %d/%d %s  elapsed %.1f s  ETA %.1f s",
+                    label, percent, now, total, unit, elapsed, eta));
         }
     }
 
-    double elapsedSeconds() {
+    /** @return seconds since this progress was made */
+    public double elapsedSeconds() {
         return (System.nanoTime() - start) / 1e9;
     }
 }

@@ -24,8 +24,8 @@ import primitives.Color;
 final class RenderLoop {
     private final Camera camera;
     private final ImageWriter image;
-    private final int nX;
-    private final int nY;
+    /** The rectangle rendered: columns [x0, x1), rows [y0, y1); the whole image unless a region was asked for. */
+    private final int x0, y0, x1, y1;
     private final int tile;
     private final int tilesX;
     private final int tileCount;
@@ -36,13 +36,25 @@ final class RenderLoop {
     private final RenderStats.Counter counter = new RenderStats.Counter();
 
     RenderLoop(Camera camera) {
+        this(camera, 0, 0, camera.imageWriter().getNx(), camera.imageWriter().getNy());
+    }
+
+    /**
+     * A loop over the rectangle of columns [x0, x1) and rows [y0, y1) only (the caller checked
+     * that it lies in the image). Its tiles start at (x0, y0); a pixel's value does not depend on
+     * the tiling (see {@link LatticeSampler}), so a rectangle renders exactly as it does within
+     * the whole image.
+     */
+    RenderLoop(Camera camera, int x0, int y0, int x1, int y1) {
         this.camera = camera;
         this.image = camera.imageWriter();
-        this.nX = image.getNx();
-        this.nY = image.getNy();
+        this.x0 = x0;
+        this.y0 = y0;
+        this.x1 = x1;
+        this.y1 = y1;
         this.tile = camera.tileSize();
-        this.tilesX = (nX + tile - 1) / tile;
-        this.tileCount = tilesX * ((nY + tile - 1) / tile);
+        this.tilesX = (x1 - x0 + tile - 1) / tile;
+        this.tileCount = tilesX * ((y1 - y0 + tile - 1) / tile);
     }
 
     /**
@@ -54,11 +66,20 @@ final class RenderLoop {
      *                               other workers stop within a tile
      */
     RenderStats run() {
+        return run(true);
+    }
+
+    /**
+     * As {@link #run()}; {@code prepare} false skips the tracer's preparation, for a caller that
+     * prepared it once for several loops (see {@link RegionRenderer}).
+     */
+    RenderStats run(boolean prepare) {
         long t0 = System.nanoTime();
-        camera.rayTracer().prepare();
+        if (prepare) camera.rayTracer().prepare();
         double prepareSeconds = (System.nanoTime() - t0) / 1e9;
+        long pixels = (long) (x1 - x0) * (y1 - y0);
         // The clock of the render starts here, after the preparation (timed on its own).
-        Progress progress = new Progress("render " + image.getImageName(), (long) nX * nY, camera.debugPrint(),
+        Progress progress = new Progress("render " + image.getImageName(), pixels, camera.debugPrint(),
                 camera.output());
         int threads = camera.threads();
         if (threads == 0) {
@@ -90,7 +111,7 @@ final class RenderLoop {
                 awaitQuietly(pool);
             }
         }
-        return counter.stats(progress.elapsedSeconds(), (long) nX * nY, threads, prepareSeconds);
+        return counter.stats(progress.elapsedSeconds(), pixels, threads, prepareSeconds);
     }
 
     /** Waits for the workers to stop so that none writes pixels after the call returns. */
@@ -116,15 +137,15 @@ final class RenderLoop {
                         cancelled.set(true);
                         throw new CancellationException("render of " + image.getImageName() + " was interrupted");
                     }
-                    int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
-                    int x1 = Math.min(nX, x0 + tile), y1 = Math.min(nY, y0 + tile);
-                    sampler.beginTile(x0, y0, x1, y1);
-                    for (int y = y0; y < y1; ++y)
-                        for (int x = x0; x < x1; ++x) {
+                    int tx0 = x0 + (t % tilesX) * tile, ty0 = y0 + (t / tilesX) * tile;
+                    int tx1 = Math.min(x1, tx0 + tile), ty1 = Math.min(y1, ty0 + tile);
+                    sampler.beginTile(tx0, ty0, tx1, ty1);
+                    for (int y = ty0; y < ty1; ++y)
+                        for (int x = tx0; x < tx1; ++x) {
                             Color c = sampler.sample(x, y, ctx);
                             image.writePixel(x, y, c);
                         }
-                    progress.advance((long) (x1 - x0) * (y1 - y0));
+                    progress.advance((long) (tx1 - tx0) * (ty1 - ty0));
                 }
             } catch (CancellationException e) {
                 throw e;

@@ -15,11 +15,11 @@ import java.util.regex.Pattern;
  * instead; every other line (the render summary) ends the bar's line first and passes unchanged.
  *
  * <p>The line format it recognises is the camera's: {@code LABEL:  45.0%  450/1000 px  elapsed
- * 3.1 s  ETA 3.8 s}. A test renders through this stream, so a change of that format shows.
+ * 3.1 s  ETA 3.8 s} (a Spark render counts {@code tiles} instead of {@code px}). A test renders through this stream, so a change of that format shows.
  */
 final class ProgressBar extends OutputStream {
     static final Pattern PROGRESS_LINE = Pattern.compile(
-            "(.*): +(\\d+(?:\\.\\d+)?)%\\s+\\d+/\\d+ px\\s+elapsed (\\d+(?:\\.\\d+)?) s\\s+ETA (\\d+(?:\\.\\d+)?) s");
+            "(.*): +(\\d+(?:\\.\\d+)?)%\\s+\\d+/\\d+ (?:px|tiles)\\s+elapsed (\\d+(?:\\.\\d+)?) s\\s+ETA (\\d+(?:\\.\\d+)?) s");
     private static final int BAR_WIDTH = 30;
 
     private final PrintStream terminal;

@@ -6,9 +6,13 @@ import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 
+import app.spark.SparkEntry;
+import app.spark.SparkRequest;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -85,6 +89,18 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = { "-q", "--quiet" }, description = "Print nothing but errors.")
     private boolean quiet;
 
+    // ===== Spark (issue 13): more scene files as frames, one option, and a branch into app.spark =====
+    @Parameters(index = "1..*", arity = "0..*", paramLabel = "MORE",
+            description = "With --spark: more scene files, rendered as the frames of one Spark job (one PNG each).")
+    private List<Path> frames = new ArrayList<>();
+
+    @Option(names = "--spark", paramLabel = "MASTER",
+            description = { "Render on Apache Spark, byte-identical to the local render: MASTER is a Spark master URL"
+                    + " (local[2], spark://HOST:7077, yarn, k8s://...) or 'submit' for the --master of spark-submit.",
+                    "Needs Spark on the class path (the 'spark' Maven profile or spark-submit; see README.md)." })
+    private String spark;
+    // ===== end Spark =====
+
     @Spec
     private CommandSpec spec;
 
@@ -150,6 +166,7 @@ public final class RenderCommand implements Callable<Integer> {
     public Integer call() {
         long start = System.nanoTime();
         checkOptions();
+        if (spark != null || !frames.isEmpty()) return spark();
         Job job;
         try {
             job = scene == null ? showcase() : load(scene);
@@ -157,7 +174,7 @@ public final class RenderCommand implements Callable<Integer> {
             err.println(e.getMessage());
             return BAD_INPUT;
         } catch (IOException e) {
-            err.println(scene + ": cannot read the scene file: " + Messages.reason(e) + " (expected a readable XML scene file)");
+            err.println(Messages.cannotReadScene(scene, e));
             return BAD_INPUT;
         }
         RenderSettings settings = override(job.settings());
@@ -209,6 +226,33 @@ public final class RenderCommand implements Callable<Integer> {
             out.println(String.format(Locale.ROOT, "wrote %s (%dx%d) in %.2f s", target, settings.width(),
                     settings.height(), (System.nanoTime() - start) / 1e9));
         return 0;
+    }
+
+    /**
+     * The Spark render (see {@link SparkEntry}): the scene files with this command's overrides
+     * and progress, on the cluster {@code --spark} names.
+     */
+    private int spark() {
+        if (spark == null) throw usage("several scene files are rendered only with --spark, as the frames of one job");
+        if (scene == null) throw usage("--spark needs a scene file (the built-in showcase is scenes/showcase.xml)");
+        List<Path> scenes = new ArrayList<>();
+        scenes.add(scene);
+        scenes.addAll(frames);
+        if (output != null && scenes.size() > 1)
+            throw usage("--output names one file, for one scene; frames go to images/<image name>.png each");
+        PrintStream progress = out;
+        ProgressBar bar = null;
+        double step = quiet ? 0 : LOG_STEP;
+        if (!quiet && terminal) {
+            bar = new ProgressBar(out);
+            progress = new PrintStream(bar, true, StandardCharsets.UTF_8);
+            step = BAR_STEP;
+        }
+        try {
+            return SparkEntry.run(new SparkRequest(spark, scenes, this::override, output, step, !quiet), progress, out, err);
+        } finally {
+            if (bar != null) bar.finish();
+        }
     }
 
     /** Option values that picocli's types do not already rule out. */

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.AccessDeniedException;
 import java.nio.file.FileSystemException;
 import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
 
 /**
  * Wording shared by the scene-file reader and the {@code render} command, so that a file that
@@ -11,6 +12,18 @@ import java.nio.file.NoSuchFileException;
  */
 public final class Messages {
     private Messages() {
+    }
+
+    /**
+     * The one line for a scene file that cannot be read at all (the command line's and the Spark
+     * driver's wording).
+     *
+     * @param scene the scene file as the user named it
+     * @param e     why it cannot be read
+     * @return {@code SCENE: cannot read the scene file: REASON (expected a readable XML scene file)}
+     */
+    public static String cannotReadScene(Path scene, IOException e) {
+        return scene + ": cannot read the scene file: " + reason(e) + " (expected a readable XML scene file)";
     }
 
     /**

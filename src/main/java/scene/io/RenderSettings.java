@@ -18,6 +18,9 @@ import scene.Scene;
  * builder. The image size is checked here, so that settings that exist can be rendered as far as
  * the pixel count goes: the image itself is allocated only when asked for.
  *
+ * <p>Serializable (through the canonical constructor, so a deserialized copy is validated
+ * again): a cluster's driver sends the settings it resolved to its executors.
+ *
  * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise
  * @param width            image width in pixels, at least 1
  * @param height           image height in pixels, at least 1; width × height at most
@@ -43,7 +46,8 @@ import scene.Scene;
 public record RenderSettings(String imageName, int width, int height, int gridInterval, Color gridColor,
                              AntiAliasing antiAliasing, int aaColumns, int aaRows, int adaptiveDepth,
                              double adaptiveThreshold, double focalDistance, double aperture, int dofSamples,
-                             int threads, long seed, boolean bvh, int beamSize, int shadowSamples) {
+                             int threads, long seed, boolean bvh, int beamSize, int shadowSamples)
+        implements java.io.Serializable {
     /** The default image side in pixels, when a file names no resolution. */
     public static final int DEFAULT_SIZE = 500;
     /** The course's grid colour (java.awt.Color.YELLOW). */

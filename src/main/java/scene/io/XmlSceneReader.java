@@ -14,18 +14,20 @@ import static scene.io.ValueType.SIZE;
 import static scene.io.ValueType.TEXT;
 import static scene.io.ValueType.VECTOR;
 
+import java.io.ByteArrayInputStream;
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.nio.ByteBuffer;
 import java.nio.CharBuffer;
 import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.function.Consumer;
 
 import geometries.Cylinder;
@@ -84,10 +86,12 @@ public final class XmlSceneReader {
 
     private final Path file;
     private final String fileName;
+    private final FileSource files;
 
-    private XmlSceneReader(Path file) {
+    private XmlSceneReader(Path file, FileSource files) {
         this.file = file;
         this.fileName = file.toString();
+        this.files = files;
     }
 
     /**
@@ -100,9 +104,25 @@ public final class XmlSceneReader {
      *                              place and what was expected)
      */
     public static LoadedScene read(Path file) throws IOException, SceneFormatException {
-        String text = decodeUtf8(Files.readAllBytes(file), file.toString());
+        return read(file, FileSource.DISK);
+    }
+
+    /**
+     * As {@link #read(Path)}, with the bytes of the scene file and of its meshes taken from
+     * {@code files} (paths and messages are the same as when read from the disk).
+     *
+     * @param file  the scene file as the user named it
+     * @param files where the bytes of {@code file} and of the meshes it references come from
+     * @return the scene, its view and its settings
+     * @throws IOException          when {@code files} cannot give the scene file
+     * @throws SceneFormatException when its content is not a valid scene
+     */
+    public static LoadedScene read(Path file, FileSource files) throws IOException, SceneFormatException {
+        Objects.requireNonNull(file, "file");
+        Objects.requireNonNull(files, "files");
+        String text = decodeUtf8(files.readAllBytes(file), file.toString());
         if (text.startsWith("\uFEFF")) text = text.substring(1); // a byte-order mark is not content
-        XmlSceneReader reader = new XmlSceneReader(file);
+        XmlSceneReader reader = new XmlSceneReader(file, files);
         return reader.scene(XmlTreeBuilder.parse(text, reader.fileName));
     }
 
@@ -311,7 +331,11 @@ public final class XmlSceneReader {
         String expected = "an OBJ file; a relative path starts at the scene file's folder";
         Path obj = file.resolveSibling(e.required("file", TEXT));
         try {
-            return ObjReader.read(obj);
+            // Decoded as ObjReader.read(Path) does: UTF-8, malformed bytes replaced (only comments
+            // and names may hold them, and those are ignored).
+            byte[] bytes = files.readAllBytes(obj);
+            return ObjReader.read(new InputStreamReader(new ByteArrayInputStream(bytes), StandardCharsets.UTF_8),
+                    obj.toString());
         } catch (ObjFormatException ex) {
             throw e.errorAt("file", e.quote("file") + ": " + ex.getMessage() + " (expected " + expected + ")", ex);
         } catch (IOException ex) {

@@ -1,0 +1,85 @@
+package app.spark;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.io.UncheckedIOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+import org.apache.spark.SparkConf;
+import org.apache.spark.api.java.JavaSparkContext;
+
+import scene.io.Messages;
+import scene.io.SceneFormatException;
+
+/**
+ * The command line's Spark render (see {@link SparkEntry}): the driver validates, then starts
+ * Spark, renders and writes. Spark's own log is off unless {@code spark.log.level} is set (with
+ * {@code --conf} of spark-submit or {@code -Dspark.log.level=WARN}), so that a failure is the
+ * one line the command line promises; the cause is in the executors' logs.
+ */
+final class SparkCommand {
+    private SparkCommand() {
+    }
+
+    static int run(SparkRequest request, PrintStream progress, PrintStream out, PrintStream err) {
+        long start = System.nanoTime();
+        List<SparkFrame> frames = new ArrayList<>();
+        Map<Path, String> outputs = new HashMap<>();
+        for (Path scene : request.scenes()) {
+            SparkFrame frame;
+            try {
+                frame = SparkFrame.read(scene);
+            } catch (SceneFormatException e) {
+                err.println(e.getMessage());
+                return SparkEntry.BAD_INPUT;
+            } catch (IOException e) {
+                err.println(Messages.cannotReadScene(scene, e));
+                return SparkEntry.BAD_INPUT;
+            }
+            try {
+                frame = frame.withSettings(request.settings().apply(frame.settings()));
+            } catch (IllegalArgumentException e) {
+                err.println(scene + ": " + e.getMessage());
+                return SparkEntry.BAD_INPUT;
+            }
+            if (request.output() != null) frame = frame.withOutput(request.output());
+            String other = outputs.putIfAbsent(frame.output().toAbsolutePath().normalize(), scene.toString());
+            if (other != null) {
+                err.println("render: " + other + " and " + scene + " would both write " + frame.output()
+                        + " (give the scenes different image names)");
+                return SparkEntry.BAD_INPUT;
+            }
+            frames.add(frame);
+        }
+
+        SparkConf conf = new SparkConf().setAppName("raytracer " + frames.get(0).scene()
+                + (frames.size() > 1 ? " and " + (frames.size() - 1) + " more" : ""));
+        if (!request.master().equals(SparkRequest.SUBMIT)) conf.setMaster(request.master());
+        else if (!conf.contains("spark.master")) {
+            err.println("render: --spark " + SparkRequest.SUBMIT + " takes the master of spark-submit, and there is none: "
+                    + "give a master URL such as --spark local[2], or " + SparkEntry.HOW);
+            return SparkEntry.BAD_INPUT;
+        }
+        if (!conf.contains("spark.log.level")) conf.set("spark.log.level", "OFF");
+        try (JavaSparkContext spark = new JavaSparkContext(conf)) {
+            new SparkRenderer(spark).setProgress(request.progressStep()).setOutput(progress)
+                    .setSummary(request.summary()).render(frames);
+        } catch (SparkRenderException e) {
+            err.println("render: failed on Spark: " + e.getMessage());
+            return 1;
+        } catch (UncheckedIOException e) {
+            err.println("render: " + e.getMessage());
+            return 1;
+        }
+        if (request.summary())
+            for (SparkFrame f : frames)
+                out.println(String.format(Locale.ROOT, "wrote %s (%dx%d) in %.2f s", f.output(), f.settings().width(),
+                        f.settings().height(), (System.nanoTime() - start) / 1e9));
+        return 0;
+    }
+}

@@ -1,0 +1,50 @@
+package app.spark;
+
+import java.io.PrintStream;
+
+/**
+ * The command line's door to Spark. Spark is a {@code provided} dependency: a cluster's
+ * {@code spark-submit} puts it on the class path, the Maven profile {@code spark} does for a run
+ * on one machine, and the plain runnable jar leaves it out. This class names no Spark type, so
+ * the command line can load it and ask before any class that needs Spark is loaded.
+ */
+public final class SparkEntry {
+    /** Exit code of bad input (as the command line's). */
+    static final int BAD_INPUT = 2;
+    /** How to run with Spark, for the one-line error. */
+    static final String HOW = "run it with 'mvn -q -Pspark compile exec:exec -Dspark.args=\"--spark local[2] SCENE\"'"
+            + " or 'spark-submit --class app.cli.Main target/raytracer.jar --spark submit SCENE' (see README.md, Spark)";
+
+    private SparkEntry() {
+    }
+
+    /** @return whether Spark's classes are on the class path */
+    public static boolean available() {
+        try {
+            Class.forName("org.apache.spark.api.java.JavaSparkContext", false, SparkEntry.class.getClassLoader());
+            return true;
+        } catch (ClassNotFoundException e) {
+            return false;
+        }
+    }
+
+    /**
+     * Renders on Spark as {@code request} says: validates every scene on the driver (bad input:
+     * the local renderer's one-line message, exit 2, no task), runs one job and writes one PNG
+     * per scene.
+     *
+     * @param request  what to render
+     * @param progress where progress lines go
+     * @param out      where the summary and the "wrote" lines go
+     * @param err      where errors go, one line each
+     * @return the exit code: 0 written, 1 the job or a write failed (no PNG of an unfinished
+     *         job), 2 bad input or no Spark on the class path
+     */
+    public static int run(SparkRequest request, PrintStream progress, PrintStream out, PrintStream err) {
+        if (!available()) {
+            err.println("render: --spark needs Apache Spark on the class path, which the runnable jar leaves out: " + HOW);
+            return BAD_INPUT;
+        }
+        return SparkCommand.run(request, progress, out, err);
+    }
+}

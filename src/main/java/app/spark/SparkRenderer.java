@@ -1,0 +1,237 @@
+package app.spark;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Objects;
+import java.util.UUID;
+
+import org.apache.spark.api.java.JavaSparkContext;
+import org.apache.spark.broadcast.Broadcast;
+
+import primitives.Color;
+import renderer.Camera;
+import renderer.ImageWriter;
+import renderer.Progress;
+import scene.io.RenderSettings;
+import scene.io.SceneFormatException;
+
+/**
+ * Renders scene files on a Spark cluster, byte for byte as the local renderer does. The driver
+ * has read and validated every scene ({@link SparkFrame#read(Path)}) before anything starts; it
+ * broadcasts the scenes' files and settings, cuts each image into square tiles and runs one Spark
+ * job whose tasks render groups of tiles with the library's own render loop ({@link
+ * renderer.RegionRenderer}); each executor parses a scene once. The driver assembles every image
+ * and writes its PNG atomically. Every random number of a render derives from (seed, pixel,
+ * sample), so neither the tiling, nor the number of executors, nor a retried or speculative task
+ * changes a pixel.
+ *
+ * <p>Many images (an animation's frames) are one job: their tiles are the tasks, so small frames
+ * are one tile each and large frames are split. The results come back to the driver at the end
+ * of the job, so the driver needs memory for all the images of one call (4 bytes a pixel).
+ */
+public final class SparkRenderer {
+    /** The default tile side, in pixels: a multiple of the render loop's tile sides (16 and below). */
+    public static final int DEFAULT_TILE = 64;
+
+    private final JavaSparkContext spark;
+    private int tile = DEFAULT_TILE;
+    private int partitions;
+    private double progressStep;
+    private PrintStream out = System.out;
+    private boolean summary = true;
+    private TileProbe probe = TileProbe.NONE;
+
+    /** @param spark the context whose cluster renders */
+    public SparkRenderer(JavaSparkContext spark) {
+        this.spark = Objects.requireNonNull(spark, "spark context");
+    }
+
+    /**
+     * @param pixels the tile side, a positive multiple of 16 (so that tiles align with the render
+     *               loop's; pixels do not depend on it, only the balance of the work does)
+     * @return this renderer
+     * @throws IllegalArgumentException for another value
+     */
+    public SparkRenderer setTileSize(int pixels) {
+        if (pixels < 16 || pixels % 16 != 0)
+            throw new IllegalArgumentException("tile size must be a positive multiple of 16 pixels, got " + pixels);
+        this.tile = pixels;
+        return this;
+    }
+
+    /**
+     * @param count the number of tasks of a job, each rendering a run of consecutive tiles; 0 (the
+     *              default): one task per tile. More partitions than tiles make one per tile.
+     * @return this renderer
+     * @throws IllegalArgumentException for a negative count
+     */
+    public SparkRenderer setPartitions(int count) {
+        if (count < 0) throw new IllegalArgumentException("partition count must be 0 (one per tile) or positive, got " + count);
+        this.partitions = count;
+        return this;
+    }
+
+    /**
+     * @param percentStep print a progress line (tiles done of all, elapsed time, ETA) each time
+     *                    this much more is done, in (0, 100]; 0 (the default): none
+     * @return this renderer
+     * @throws IllegalArgumentException for a step outside [0, 100]
+     */
+    public SparkRenderer setProgress(double percentStep) {
+        if (!(percentStep >= 0 && percentStep <= 100))
+            throw new IllegalArgumentException("progress step must be in [0, 100] percent, got " + percentStep);
+        this.progressStep = percentStep;
+        return this;
+    }
+
+    /**
+     * @param output where progress lines and the summary go (default System.out)
+     * @return this renderer
+     */
+    public SparkRenderer setOutput(PrintStream output) {
+        this.out = Objects.requireNonNull(output, "output stream");
+        return this;
+    }
+
+    /**
+     * @param on whether to print the summary line of each job (default true)
+     * @return this renderer
+     */
+    public SparkRenderer setSummary(boolean on) {
+        this.summary = on;
+        return this;
+    }
+
+    /** The test seam of the fault-injection tests. */
+    SparkRenderer setProbe(TileProbe probe) {
+        this.probe = Objects.requireNonNull(probe, "probe");
+        return this;
+    }
+
+    /**
+     * Renders a scene file with its own settings into {@code png}.
+     *
+     * @param scene the scene file
+     * @param png   the image to write
+     * @return what the job did
+     * @throws IOException           when the scene file cannot be read (nothing started)
+     * @throws SceneFormatException  when it is not a valid scene (nothing started)
+     * @throws SparkRenderException  when a task failed more often than Spark retries it (no image)
+     */
+    public SparkRenderStats render(Path scene, Path png) throws IOException, SceneFormatException {
+        return render(List.of(SparkFrame.read(scene).withOutput(png)));
+    }
+
+    /**
+     * Renders frames read and validated before (see {@link SparkFrame#read(Path)}) in one job
+     * and writes each one's PNG.
+     *
+     * @param frames the images to render, at least one
+     * @return what the job did
+     * @throws SparkRenderException  when a task failed more often than Spark retries it; no PNG
+     *                               was written
+     * @throws java.io.UncheckedIOException when a PNG cannot be written
+     * @throws IllegalArgumentException for an empty list
+     */
+    public SparkRenderStats render(List<SparkFrame> frames) {
+        if (frames.isEmpty()) throw new IllegalArgumentException("no frame to render");
+        long start = System.nanoTime();
+        List<Frame> sent = new ArrayList<>(frames.size());
+        List<Tile> tiles = new ArrayList<>();
+        long broadcastBytes = 0;
+        for (SparkFrame f : frames) {
+            RenderSettings s = f.settings();
+            tiles.addAll(Tile.cut(sent.size(), s.width(), s.height(), tile));
+            sent.add(f.frame());
+            broadcastBytes += f.frame().files().size();
+        }
+        List<List<Tile>> groups = groups(tiles, partitions == 0 ? tiles.size() : Math.min(partitions, tiles.size()));
+        int[] tilesPerPartition = groups.stream().mapToInt(List::size).toArray();
+
+        String label = "spark render " + (frames.size() == 1 ? frames.get(0).settings().imageName() : frames.size() + " frames");
+        Progress progress = new Progress(label, tiles.size(), "tiles", progressStep, out);
+        String group = "raytracer-" + UUID.randomUUID();
+        JobMonitor monitor = new JobMonitor(group, tilesPerPartition, progress);
+        List<TilePixels> results;
+        Broadcast<FrameSet> scenes = spark.broadcast(new FrameSet(sent));
+        spark.sc().addSparkListener(monitor);
+        spark.setJobGroup(group, label, false);
+        try {
+            TileProbe p = probe;
+            results = spark.parallelize(groups, groups.size()).flatMap(g -> {
+                List<TilePixels> done = new ArrayList<>(g.size());
+                for (Tile t : g) {
+                    p.beforeTile(t);
+                    done.add(scenes.value().render(t));
+                }
+                return done.iterator();
+            }).collect();
+            monitor.awaitAll(10_000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new SparkRenderException(label + ": interrupted", e);
+        } catch (Exception e) { // SparkException is checked in Java's eyes but undeclared
+            throw new SparkRenderException(label + ": " + firstLine(e), e);
+        } finally {
+            spark.clearJobGroup();
+            spark.sc().removeSparkListener(monitor);
+            scenes.destroy();
+        }
+        double renderSeconds = (System.nanoTime() - start) / 1e9;
+
+        List<ImageWriter> images = new ArrayList<>(frames.size());
+        for (SparkFrame f : frames) images.add(f.settings().newImageWriter());
+        double[] tileSeconds = new double[results.size()];
+        long rays = 0;
+        for (int i = 0; i < results.size(); ++i) {
+            TilePixels r = results.get(i);
+            Tile t = r.tile();
+            ImageWriter image = images.get(t.frame());
+            int k = 0;
+            for (int y = t.y0(); y < t.y1(); ++y)
+                for (int x = t.x0(); x < t.x1(); ++x) {
+                    int rgb = r.rgb()[k++];
+                    image.writePixel(x, y, new Color(rgb >> 16 & 0xFF, rgb >> 8 & 0xFF, rgb & 0xFF));
+                }
+            tileSeconds[i] = r.seconds();
+            rays += r.rays();
+        }
+        long pixels = 0;
+        for (int i = 0; i < frames.size(); ++i) {
+            SparkFrame f = frames.get(i);
+            Camera camera = f.camera(images.get(i));
+            f.settings().drawGrid(camera);
+            images.get(i).writeToImage(f.output());
+            pixels += (long) f.settings().width() * f.settings().height();
+        }
+        Arrays.sort(tileSeconds);
+        SparkRenderStats stats = new SparkRenderStats(renderSeconds, frames.size(), pixels, tiles.size(), rays,
+                broadcastBytes, monitor.executors(), monitor.attempts(), monitor.retries(), tileSeconds);
+        if (summary) {
+            String what = frames.size() == 1 ? frames.get(0).settings().width() + "x" + frames.get(0).settings().height()
+                    + " [" + frames.get(0).describe() + "]" : "";
+            out.println(label + (what.isEmpty() ? "" : " " + what) + ": " + stats);
+        }
+        return stats;
+    }
+
+    /** Consecutive runs of tiles, {@code count} of them, as even as can be. */
+    private static List<List<Tile>> groups(List<Tile> tiles, int count) {
+        List<List<Tile>> groups = new ArrayList<>(count);
+        for (int i = 0; i < count; ++i)
+            groups.add(new ArrayList<>(tiles.subList((int) ((long) i * tiles.size() / count),
+                    (int) ((long) (i + 1) * tiles.size() / count))));
+        return groups;
+    }
+
+    /** The first line of an exception's message (Spark's carry a stack trace), or its class. */
+    private static String firstLine(Throwable e) {
+        String m = e.getMessage();
+        if (m == null || m.isBlank()) return e.getClass().getSimpleName();
+        return m.lines().findFirst().orElse(m).trim();
+    }
+}
