@@ -27,6 +27,11 @@ final class SparkCommand {
     }
 
     static int run(SparkRequest request, PrintStream progress, PrintStream out, PrintStream err) {
+        return run(request, TileProbe.NONE, progress, out, err);
+    }
+
+    /** As {@link #run(SparkRequest, PrintStream, PrintStream, PrintStream)}, with the tests' fault injection. */
+    static int run(SparkRequest request, TileProbe probe, PrintStream progress, PrintStream out, PrintStream err) {
         long start = System.nanoTime();
         List<SparkFrame> frames = new ArrayList<>();
         Map<Path, String> outputs = new HashMap<>();
@@ -67,7 +72,7 @@ final class SparkCommand {
         }
         if (!conf.contains("spark.log.level")) conf.set("spark.log.level", "OFF");
         try (JavaSparkContext spark = new JavaSparkContext(conf)) {
-            new SparkRenderer(spark).setProgress(request.progressStep()).setOutput(progress)
+            new SparkRenderer(spark).setProbe(probe).setProgress(request.progressStep()).setOutput(progress)
                     .setSummary(request.summary()).render(frames);
         } catch (SparkRenderException e) {
             err.println("render: failed on Spark: " + e.getMessage());

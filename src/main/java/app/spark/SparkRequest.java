@@ -26,6 +26,14 @@ public record SparkRequest(String master, List<Path> scenes, UnaryOperator<Rende
     public static final String SUBMIT = "submit";
 
     /**
+     * Checks the request; the scene list is copied.
+     *
+     * @param master       the Spark master URL, or {@value #SUBMIT}
+     * @param scenes       the scene files, at least one
+     * @param settings     the changes to each file's settings
+     * @param output       the PNG of a single scene; null for the default
+     * @param progressStep percent between progress lines; 0: none
+     * @param summary      whether to print the summary and the "wrote" lines
      * @throws IllegalArgumentException for no scene, or an output with several scenes
      */
     public SparkRequest {

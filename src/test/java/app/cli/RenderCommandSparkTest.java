@@ -1,0 +1,161 @@
+package app.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.net.URISyntaxException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import picocli.CommandLine;
+import renderer.ImageWriter;
+
+/**
+ * {@code render --spark MASTER}: the command line's Spark render in local mode, against the same
+ * command without {@code --spark}. Each Spark run starts and stops its own context.
+ */
+class RenderCommandSparkTest {
+    /** Where the frames test's images go (frames are written to images/&lt;image name&gt;.png). */
+    private static final Path FRAMES = ImageWriter.IMAGES.resolve("spark-test");
+
+    @TempDir
+    Path dir;
+
+    record Run(int exitCode, String out, String err) {
+    }
+
+    private static Run run(String... args) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
+        int code = RenderCommand.commandLine(new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8), false).execute(args);
+        return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
+    }
+
+    /** A small scene: a sphere's edge, a glossy floor and a soft shadow, so that sampling shows. */
+    private Path scene(String name, int seed) throws IOException {
+        Path file = dir.resolve(name + ".xml");
+        Files.writeString(file, """
+                <scene name="%s" background-color="20 30 40">
+                    <ambient-light color="255 255 255" ka="0.1"/>
+                    <geometries>
+                        <sphere center="0 0 -50" radius="12" emission="200 60 30">
+                            <material kd="0.5" ks="0.5" shininess="30"/>
+                        </sphere>
+                        <plane point="0 -12 0" normal="0 1 0" emission="30 30 30">
+                            <material kd="0.3" kr="0.5" reflection-spread="0.2"/>
+                        </plane>
+                    </geometries>
+                    <lights>
+                        <point-light color="300 300 300" position="20 30 0" radius="3"/>
+                    </lights>
+                    <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="40 20" vp-distance="25"/>
+                    <image name="spark-test/%s" width="70" height="35"/>
+                    <render threads="1" beam-size="3" shadow-samples="3" seed="%d">
+                        <anti-aliasing mode="random" grid="2 3"/>
+                    </render>
+                </scene>
+                """.formatted(name, name, seed));
+        return file;
+    }
+
+    @AfterEach
+    void removeFrames() throws IOException {
+        if (Files.isDirectory(FRAMES))
+            try (var files = Files.list(FRAMES)) {
+                for (Path f : files.toList()) Files.delete(f);
+            }
+        Files.deleteIfExists(FRAMES);
+    }
+
+    @Test
+    @DisplayName("--spark local[2] writes the bytes of the local render, with progress in tiles and a summary")
+    void sameBytesAsLocal() throws IOException {
+        Path scene = scene("one", 3);
+        Run local = run(scene.toString(), "-o", dir.resolve("local.png").toString());
+        Run spark = run(scene.toString(), "--spark", "local[2]", "-o", dir.resolve("spark.png").toString());
+        assertThat(local.exitCode()).isZero();
+        assertThat(spark.exitCode()).as(spark.err()).isZero();
+        assertThat(Files.readAllBytes(dir.resolve("spark.png"))).isEqualTo(Files.readAllBytes(dir.resolve("local.png")));
+        assertThat(spark.out()).contains("spark render spark-test/one: 100.0%  2/2 tiles")
+                .contains("spark render spark-test/one 70x35 [RANDOM 2x3, ").contains("1 executor, 2 tasks, 0 retries")
+                .contains("wrote " + dir.resolve("spark.png"));
+        assertThat(spark.err()).isEmpty();
+    }
+
+    @Test
+    @DisplayName("several scene files with --spark are the frames of one job, one PNG each, each as rendered locally")
+    void frames() throws IOException {
+        Path a = scene("a", 1), b = scene("b", 2);
+        Run spark = run("--spark", "local[2]", a.toString(), b.toString(), "--width", "20");
+        assertThat(spark.exitCode()).as(spark.err()).isZero();
+        assertThat(spark.out()).contains("spark render 2 frames: 100.0%  2/2 tiles");
+        for (Path scene : List.of(a, b)) {
+            String name = scene.getFileName().toString().replace(".xml", "");
+            Path png = FRAMES.resolve(name + ".png");
+            Path local = dir.resolve(name + "-local.png");
+            assertThat(run(scene.toString(), "--width", "20", "-o", local.toString()).exitCode()).isZero();
+            assertThat(Files.readAllBytes(png)).as(name).isEqualTo(Files.readAllBytes(local));
+        }
+    }
+
+    @Test
+    @DisplayName("a bad scene among the frames: exit 2 with the local command's one line, no Spark started, no image")
+    void badScene() throws IOException {
+        Path good = scene("good", 0);
+        Path bad = dir.resolve("bad.xml");
+        Files.writeString(bad, "<scene>\n  <geometries>\n    <sphere center=\"0 0\" radius=\"1\"/>\n  </geometries>\n</scene>\n");
+        Run local = run(bad.toString());
+        Run spark = run("--spark", "local[2]", good.toString(), bad.toString());
+        assertThat(local.exitCode()).isEqualTo(2);
+        assertThat(spark.exitCode()).isEqualTo(2);
+        assertThat(spark.err()).isEqualTo(local.err()).startsWith(bad + ":3:").hasLineCount(1);
+        assertThat(spark.out()).as("no progress, no summary: no task ran").isEmpty();
+        assertThat(FRAMES.resolve("good.png")).doesNotExist();
+    }
+
+    @Test
+    @DisplayName("usage: several scenes need --spark, and --output names one file")
+    void usage() throws IOException {
+        Path a = scene("a", 1), b = scene("b", 2);
+        Run without = run(a.toString(), b.toString());
+        assertThat(without.exitCode()).isEqualTo(2);
+        assertThat(without.err()).startsWith("render: several scene files are rendered only with --spark");
+        Run output = run("--spark", "local[2]", a.toString(), b.toString(), "-o", dir.resolve("x.png").toString());
+        assertThat(output.exitCode()).isEqualTo(2);
+        assertThat(output.err()).startsWith("render: --output names one file, for one scene");
+    }
+
+    @Test
+    @DisplayName("--spark without Spark on the class path (the runnable jar): one line saying how to run it, exit 2")
+    void noSparkOnClassPath() throws IOException, InterruptedException {
+        Path scene = scene("one", 0);
+        String classPath = location(RenderCommand.class) + File.pathSeparator + location(CommandLine.class);
+        Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+                classPath, "app.cli.Main", "--spark", "local[2]", scene.toString()).directory(dir.toFile())
+                .redirectOutput(dir.resolve("stdout.txt").toFile()).redirectError(dir.resolve("stderr.txt").toFile()).start();
+        assertThat(process.waitFor(60, TimeUnit.SECONDS)).isTrue();
+        assertThat(process.exitValue()).isEqualTo(2);
+        assertThat(Files.readString(dir.resolve("stderr.txt"))).hasLineCount(1)
+                .startsWith("render: --spark needs Apache Spark on the class path").contains("-Pspark", "spark-submit");
+        assertThat(dir.resolve("images")).doesNotExist();
+    }
+
+    private static String location(Class<?> type) {
+        try {
+            return Path.of(type.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
+        } catch (URISyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+}
