@@ -15,7 +15,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 /**
  * Rectangles rendered apart assemble to the whole image's bytes, whatever their cut: the
  * property a distributed render (app.spark) rests on. The cuts are deliberately not aligned
- * with the render loop's tiles (16 pixels, 8 for ADAPTIVE depth 4), so the lattice samplers'
+ * with the render loop's tiles (16 pixels), so the lattice samplers'
  * per-tile caches start at other points than in the whole render.
  */
 class RegionRendererTest {
@@ -26,8 +26,8 @@ class RegionRendererTest {
                 Arguments.of("NONE", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.NONE)),
                 Arguments.of("RANDOM 2x3", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.RANDOM, 2, 3)),
                 Arguments.of("CORNERS", (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.CORNERS)),
-                Arguments.of("ADAPTIVE depth 4", (UnaryOperator<Camera.Builder>) b -> b
-                        .setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(4, 4)),
+                Arguments.of("ADAPTIVE depth 2", (UnaryOperator<Camera.Builder>) b -> b
+                        .setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(2, 8)),
                 Arguments.of("depth of field", (UnaryOperator<Camera.Builder>) b -> b.setDepthOfField(10, 0.2)
                         .setDepthOfFieldSamples(3)));
     }

@@ -82,6 +82,11 @@ final class JobMonitor extends SparkListener {
             wait(left);
     }
 
+    /** @return the job group whose jobs this monitor counts */
+    String jobGroup() {
+        return jobGroup;
+    }
+
     /** @return task attempts ended, failed ones and retries included */
     synchronized int attempts() {
         return attempts;

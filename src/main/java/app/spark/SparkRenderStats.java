@@ -20,6 +20,30 @@ import java.util.Locale;
 public record SparkRenderStats(double seconds, int frames, long pixels, int tiles, long rays, long broadcastBytes,
                                int executors, int tasks, int retries, double[] tileSeconds) {
     /**
+     * Keeps its own copy of the tile times.
+     *
+     * @param seconds        the job's wall time on the driver
+     * @param frames         images rendered
+     * @param pixels         pixels of all images
+     * @param tiles          tiles rendered
+     * @param rays           rays traced
+     * @param broadcastBytes bytes of files broadcast
+     * @param executors      executors that ran an attempt
+     * @param tasks          task attempts
+     * @param retries        repeated attempts
+     * @param tileSeconds    each tile's render time, ascending
+     */
+    public SparkRenderStats {
+        tileSeconds = tileSeconds.clone();
+    }
+
+    /** @return a copy of the tile times, in ascending order */
+    @Override
+    public double[] tileSeconds() {
+        return tileSeconds.clone();
+    }
+
+    /**
      * @param q a quantile in [0, 1]
      * @return the tile time at quantile {@code q} (nearest rank), 0 without tiles
      */

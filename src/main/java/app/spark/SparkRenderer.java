@@ -13,7 +13,6 @@ import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.broadcast.Broadcast;
 
 import primitives.Color;
-import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.Progress;
 import scene.io.RenderSettings;
@@ -149,20 +148,46 @@ public final class SparkRenderer {
             sent.add(f.frame());
             broadcastBytes += f.frame().files().size();
         }
-        List<List<Tile>> groups = groups(tiles, partitions == 0 ? tiles.size() : Math.min(partitions, tiles.size()));
-        int[] tilesPerPartition = groups.stream().mapToInt(List::size).toArray();
-
         String label = "spark render " + (frames.size() == 1 ? frames.get(0).settings().imageName() : frames.size() + " frames");
         Progress progress = new Progress(label, tiles.size(), "tiles", progressStep, out);
-        String group = "raytracer-" + UUID.randomUUID();
-        JobMonitor monitor = new JobMonitor(group, tilesPerPartition, progress);
-        List<TilePixels> results;
-        Broadcast<FrameSet> scenes = spark.broadcast(new FrameSet(sent));
+        List<List<Tile>> groups = groups(tiles, partitions == 0 ? tiles.size() : Math.min(partitions, tiles.size()));
+        JobMonitor monitor = new JobMonitor("raytracer-" + UUID.randomUUID(),
+                groups.stream().mapToInt(List::size).toArray(), progress);
+
+        List<TilePixels> results = run(new FrameSet(sent), groups, monitor, label);
+        double renderSeconds = (System.nanoTime() - start) / 1e9;
+        long pixels = write(frames, results);
+
+        double[] tileSeconds = new double[results.size()];
+        long rays = 0;
+        for (int i = 0; i < results.size(); ++i) {
+            tileSeconds[i] = results.get(i).seconds();
+            rays += results.get(i).rays();
+        }
+        Arrays.sort(tileSeconds);
+        SparkRenderStats stats = new SparkRenderStats(renderSeconds, frames.size(), pixels, tiles.size(), rays,
+                broadcastBytes, monitor.executors(), monitor.attempts(), monitor.retries(), tileSeconds);
+        if (summary) {
+            RenderSettings s = frames.get(0).settings();
+            out.println(label + (frames.size() == 1 ? " " + s.width() + "x" + s.height() + " [" + frames.get(0).describe() + "]" : "")
+                    + ": " + stats);
+        }
+        return stats;
+    }
+
+    /**
+     * The Spark job: broadcasts the frames, renders every group of tiles in a task of its own and
+     * brings the pixels back.
+     *
+     * @throws SparkRenderException when the job fails (a task failed every attempt)
+     */
+    private List<TilePixels> run(FrameSet frames, List<List<Tile>> groups, JobMonitor monitor, String label) {
+        Broadcast<FrameSet> scenes = spark.broadcast(frames);
         spark.sc().addSparkListener(monitor);
-        spark.setJobGroup(group, label, false);
+        spark.setJobGroup(monitor.jobGroup(), label, false);
+        TileProbe p = probe; // the task's closure captures locals only, not this renderer
         try {
-            TileProbe p = probe;
-            results = spark.parallelize(groups, groups.size()).flatMap(g -> {
+            List<TilePixels> results = spark.parallelize(groups, groups.size()).flatMap(g -> {
                 List<TilePixels> done = new ArrayList<>(g.size());
                 for (Tile t : g) {
                     p.beforeTile(t);
@@ -171,6 +196,7 @@ public final class SparkRenderer {
                 return done.iterator();
             }).collect();
             monitor.awaitAll(10_000);
+            return results;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new SparkRenderException(label + ": interrupted", e);
@@ -181,42 +207,37 @@ public final class SparkRenderer {
             spark.sc().removeSparkListener(monitor);
             scenes.destroy();
         }
-        double renderSeconds = (System.nanoTime() - start) / 1e9;
+    }
 
+    /**
+     * Assembles each frame from its tiles, draws the grid its settings may ask for and writes its
+     * PNG atomically.
+     *
+     * @return the pixels of all frames
+     */
+    private static long write(List<SparkFrame> frames, List<TilePixels> results) {
         List<ImageWriter> images = new ArrayList<>(frames.size());
         for (SparkFrame f : frames) images.add(f.settings().newImageWriter());
-        double[] tileSeconds = new double[results.size()];
-        long rays = 0;
-        for (int i = 0; i < results.size(); ++i) {
-            TilePixels r = results.get(i);
+        for (TilePixels r : results) {
             Tile t = r.tile();
             ImageWriter image = images.get(t.frame());
             int k = 0;
             for (int y = t.y0(); y < t.y1(); ++y)
                 for (int x = t.x0(); x < t.x1(); ++x) {
+                    // Channels of 0..255 are whole numbers: the colour packs back to the same int.
                     int rgb = r.rgb()[k++];
                     image.writePixel(x, y, new Color(rgb >> 16 & 0xFF, rgb >> 8 & 0xFF, rgb & 0xFF));
                 }
-            tileSeconds[i] = r.seconds();
-            rays += r.rays();
         }
         long pixels = 0;
         for (int i = 0; i < frames.size(); ++i) {
             SparkFrame f = frames.get(i);
-            Camera camera = f.camera(images.get(i));
-            f.settings().drawGrid(camera);
+            f.settings().drawGrid(f.camera(images.get(i)));
             images.get(i).writeToImage(f.output());
+            images.set(i, null); // written: its memory can go
             pixels += (long) f.settings().width() * f.settings().height();
         }
-        Arrays.sort(tileSeconds);
-        SparkRenderStats stats = new SparkRenderStats(renderSeconds, frames.size(), pixels, tiles.size(), rays,
-                broadcastBytes, monitor.executors(), monitor.attempts(), monitor.retries(), tileSeconds);
-        if (summary) {
-            String what = frames.size() == 1 ? frames.get(0).settings().width() + "x" + frames.get(0).settings().height()
-                    + " [" + frames.get(0).describe() + "]" : "";
-            out.println(label + (what.isEmpty() ? "" : " " + what) + ": " + stats);
-        }
-        return stats;
+        return pixels;
     }
 
     /** Consecutive runs of tiles, {@code count} of them, as even as can be. */

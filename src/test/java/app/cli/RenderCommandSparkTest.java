@@ -137,6 +137,17 @@ class RenderCommandSparkTest {
     }
 
     @Test
+    @DisplayName("--spark submit outside spark-submit (no spark.master): exit 2, one line, nothing started")
+    void submitWithoutSparkSubmit() throws IOException {
+        assertThat(System.getProperty("spark.master")).as("this JVM was not started by spark-submit").isNull();
+        Run run = run("--spark", "submit", scene("one", 0).toString(), "-o", dir.resolve("x.png").toString());
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).hasLineCount(1).startsWith("render: --spark submit takes the master of spark-submit, and there is none");
+        assertThat(run.out()).isEmpty();
+        assertThat(dir.resolve("x.png")).doesNotExist();
+    }
+
+    @Test
     @DisplayName("--spark without Spark on the class path (the runnable jar): one line saying how to run it, exit 2")
     void noSparkOnClassPath() throws IOException, InterruptedException {
         Path scene = scene("one", 0);
