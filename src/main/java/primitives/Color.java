@@ -5,6 +5,8 @@ package primitives;
  * Components may exceed 255 while light accumulates; {@link #getColor()} clamps when writing.
  * There is deliberately no tolerant {@code equals}: compare colours with {@link #distance(Color)}.
  * Serializable so that render settings can travel to the machines of a cluster.
+ *
+ * @serial exclude
  */
 public final class Color implements java.io.Serializable {
     private static final long serialVersionUID = 1L;

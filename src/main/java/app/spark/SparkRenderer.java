@@ -33,7 +33,10 @@ import scene.io.SceneFormatException;
  * of the job, so the driver needs memory for all the images of one call (4 bytes a pixel).
  */
 public final class SparkRenderer {
-    /** The default tile side, in pixels: a multiple of the render loop's tile sides (16 and below). */
+    /**
+     * The default tile side, in pixels: the render loop's own largest tile, so that an executor
+     * re-traces no more lattice points on tile borders (CORNERS, ADAPTIVE) than the local render.
+     */
     public static final int DEFAULT_TILE = 64;
 
     private final JavaSparkContext spark;
@@ -50,8 +53,9 @@ public final class SparkRenderer {
     }
 
     /**
-     * @param pixels the tile side, a positive multiple of 16 (so that tiles align with the render
-     *               loop's; pixels do not depend on it, only the balance of the work does)
+     * @param pixels the tile side, a positive multiple of 16; no pixel depends on it, only the
+     *               balance of the work (smaller tiles: more, shorter tasks) and the lattice points
+     *               re-traced on tile borders
      * @return this renderer
      * @throws IllegalArgumentException for another value
      */

@@ -21,6 +21,7 @@ import scene.Scene;
  * <p>Serializable (through the canonical constructor, so a deserialized copy is validated
  * again): a cluster's driver sends the settings it resolved to its executors.
  *
+ * @serial exclude
  * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise
  * @param width            image width in pixels, at least 1
  * @param height           image height in pixels, at least 1; width × height at most
