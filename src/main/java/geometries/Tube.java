@@ -2,6 +2,7 @@ package geometries;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 
 import primitives.Point;
 import primitives.Ray;
@@ -31,7 +32,7 @@ public class Tube extends Geometry {
      */
     public Tube(double radius, Ray axis) {
         this.radius = Util.requirePositive(radius, "tube radius");
-        this.axis = axis;
+        this.axis = Objects.requireNonNull(axis, "tube axis");
         px = axis.getHead().getX();
         py = axis.getHead().getY();
         pz = axis.getHead().getZ();

@@ -173,9 +173,14 @@ public class ImageWriter {
         BufferedImage image = new BufferedImage(rgb, raster, false, null);
         Path target = file.toAbsolutePath();
         Path tmp = null;
+        Thread cleanupOnExit = null;
         try {
             Files.createDirectories(target.getParent());
             tmp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".tmp");
+            // SIGINT or SIGTERM while the file is written: the JVM runs its shutdown hooks, and
+            // this one removes the half-written file (the move below then fails, or has happened).
+            cleanupOnExit = new Thread(deleter(tmp), "delete " + tmp.getFileName());
+            Runtime.getRuntime().addShutdownHook(cleanupOnExit);
             if (!ImageIO.write(image, "png", tmp.toFile()))
                 throw new IOException("no PNG writer available");
             try {
@@ -183,7 +188,7 @@ public class ImageWriter {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
             }
-        } catch (IOException e) {
+        } catch (IOException | IllegalStateException e) { // IllegalStateException: the JVM is shutting down
             if (tmp != null) {
                 try {
                     Files.deleteIfExists(tmp);
@@ -191,7 +196,33 @@ public class ImageWriter {
                     e.addSuppressed(cleanup);
                 }
             }
-            throw new UncheckedIOException("cannot write image " + target + ": " + e.getMessage(), e);
+            throw new UncheckedIOException("cannot write image " + target + ": " + e.getMessage(),
+                    e instanceof IOException io ? io : new IOException(e));
+        } finally {
+            if (cleanupOnExit != null) removeHook(cleanupOnExit);
+        }
+    }
+
+    /** Deletes {@code tmp} if it is still there (after a successful move it is not). */
+    private static Runnable deleter(Path tmp) {
+        return () -> {
+            try {
+                Files.deleteIfExists(tmp);
+            } catch (IOException e) {
+                System.err.println("cannot delete the unfinished image " + tmp + ": " + e.getMessage());
+            }
+        };
+    }
+
+    /**
+     * Unregisters a hook; while the JVM shuts down that is refused, and then the hook runs (or has
+     * run) anyway: running it here as well is harmless, since deleting is idempotent.
+     */
+    private static void removeHook(Thread hook) {
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException shuttingDown) {
+            hook.run();
         }
     }
 }

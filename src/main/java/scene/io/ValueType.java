@@ -15,7 +15,8 @@ import primitives.Vector;
  * A kind of attribute value: what the reader expects (for messages) and how the text becomes a
  * value. Numbers are plain decimals ("50", "-0.25", "1e-6") parsed the same on every machine
  * whatever its locale; "NaN", "Infinity", hexadecimal or Java suffixes ("1d") are rejected, and so
- * is any number too large to be finite. Triples are separated by white space, as in the course's
+ * is any number beyond {@link Limits#MAX_MAGNITUDE} or, other than 0, nearer to 0 than
+ * {@link Limits#MIN_MAGNITUDE}. Triples are separated by white space, as in the course's
  * scene files ("75 127 90").
  *
  * @param expected what a valid value looks like, completing "expected …" in messages
@@ -136,7 +137,10 @@ record ValueType<T>(String expected, Parser<T> parser) {
         });
     }
 
-    /** A strict decimal number, finite. */
+    /**
+     * A strict decimal number: 0, or between {@link Limits#MIN_MAGNITUDE} and
+     * {@link Limits#MAX_MAGNITUDE} in magnitude.
+     */
     static double number(String text) {
         String t = text.strip();
         if (t.isEmpty()) throw new IllegalArgumentException("the value is empty");
@@ -144,6 +148,12 @@ record ValueType<T>(String expected, Parser<T> parser) {
         if (!DECIMAL.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not a number");
         double d = Double.parseDouble(t); // locale-independent by specification
         if (!Double.isFinite(d)) throw new IllegalArgumentException("'" + t + "' is not a finite number (too large)");
+        if (Math.abs(d) > Limits.MAX_MAGNITUDE)
+            throw new IllegalArgumentException(t + " is larger than " + format(Limits.MAX_MAGNITUDE)
+                    + " in magnitude (the limit)");
+        if (d != 0 && Math.abs(d) < Limits.MIN_MAGNITUDE)
+            throw new IllegalArgumentException(t + " is closer to 0 than " + Limits.MIN_MAGNITUDE
+                    + " (the limit; write 0 for zero)");
         return d;
     }
 
