@@ -23,15 +23,15 @@ public final class Limits {
     /** The longest line of an OBJ file, in characters (a face of over 3,000 corners fits). */
     public static final int MAX_OBJ_LINE_LENGTH = 65_536;
     /**
-     * The largest magnitude of a number in a scene or OBJ file. Together with
+     * The largest magnitude of a number in a scene file. Together with
      * {@link #MIN_MAGNITUDE} it keeps every product the renderer forms (colour × coefficient ×
      * attenuation × samples, coordinates squared) far from the range of a double.
      */
     public static final double MAX_MAGNITUDE = 1e9;
     /**
-     * The smallest magnitude of a non-zero number in a scene file: smaller numbers are below the
-     * library's precision (it takes |x| &lt; 1e-10 for zero), and their inverses (an attenuation
-     * of 1 / kc) would overflow.
+     * The smallest positive size, distance or factor in a scene file (a radius, vp-distance, kc,
+     * a spread...; coordinates may be smaller): smaller ones are below the library's precision (it
+     * takes |x| &lt; 1e-10 for zero), and their inverses (an attenuation of 1 / kc) would overflow.
      */
     public static final double MIN_MAGNITUDE = 1e-9;
 

@@ -4,8 +4,7 @@ import java.io.IOException;
 
 /**
  * A Wavefront OBJ file that {@link ObjReader} cannot turn into a mesh. The message reads
- * {@code source:line: what is wrong}, like a compiler's ({@code source: what is wrong} for the file
- * as a whole, such as a device or a file over the size limit); the parts are also available apart.
+ * {@code source:line: what is wrong}, like a compiler's; the parts are also available apart.
  * An {@link IOException}, so that one {@code catch} covers a missing file and a bad one.
  */
 public class ObjFormatException extends IOException {
@@ -18,11 +17,11 @@ public class ObjFormatException extends IOException {
 
     /**
      * @param source  the file name or resource the text came from
-     * @param line    the 1-based line number of the offending line; 0 for the file as a whole
+     * @param line    the 1-based line number of the offending line
      * @param problem what is wrong, naming the bad value
      */
     ObjFormatException(String source, int line, String problem) {
-        super(line > 0 ? source + ":" + line + ": " + problem : source + ": " + problem);
+        super(source + ":" + line + ": " + problem);
         this.source = source;
         this.line = line;
         this.problem = problem;
@@ -33,7 +32,7 @@ public class ObjFormatException extends IOException {
         return source;
     }
 
-    /** @return the 1-based number of the line at fault; 0 when the file as a whole is */
+    /** @return the 1-based number of the line at fault */
     public int getLine() {
         return line;
     }

@@ -43,9 +43,9 @@ import primitives.Util;
  * place). A flat mesh keeps the file's vertices in file order, used or not.
  *
  * <p>Errors: a malformed number or index, an index of 0 or out of range, a face of fewer than 3
- * corners, a non-finite number or one beyond {@link Limits#MAX_MAGNITUDE}, a zero normal, a
- * degenerate face or a file without faces throws an {@link ObjFormatException} whose message is
- * {@code source:line: what is wrong}.
+ * corners, a non-finite number, a zero normal, a degenerate face or a file without faces throws
+ * an {@link ObjFormatException} whose message is {@code source:line: what is wrong} (line 0 for the
+ * file as a whole).
  *
  * <p>Limits: the text is streamed line by line (never read whole); a line longer than
  * {@link Limits#MAX_OBJ_LINE_LENGTH} characters or a text longer than {@link Limits#MAX_OBJ_BYTES}
@@ -357,9 +357,6 @@ public final class ObjReader {
             throw error("malformed " + what + " '" + token() + "'");
         }
         if (Double.isInfinite(d)) throw error(what + " '" + token() + "' is not a finite number (too large)");
-        if (Math.abs(d) > Limits.MAX_MAGNITUDE)
-            throw error(what + " '" + token() + "' is larger than " + ValueType.format(Limits.MAX_MAGNITUDE)
-                    + " in magnitude (the limit)");
         return d;
     }
 

@@ -15,8 +15,8 @@ import primitives.Vector;
  * A kind of attribute value: what the reader expects (for messages) and how the text becomes a
  * value. Numbers are plain decimals ("50", "-0.25", "1e-6") parsed the same on every machine
  * whatever its locale; "NaN", "Infinity", hexadecimal or Java suffixes ("1d") are rejected, and so
- * is any number beyond {@link Limits#MAX_MAGNITUDE} or, other than 0, nearer to 0 than
- * {@link Limits#MIN_MAGNITUDE}. Triples are separated by white space, as in the course's
+ * is any number beyond {@link Limits#MAX_MAGNITUDE}; a positive size or distance, or a
+ * non-negative factor other than 0, is at least {@link Limits#MIN_MAGNITUDE}. Triples are separated by white space, as in the course's
  * scene files ("75 127 90").
  *
  * @param expected what a valid value looks like, completing "expected …" in messages
@@ -35,15 +35,17 @@ record ValueType<T>(String expected, Parser<T> parser) {
     private static final Pattern NON_FINITE = Pattern.compile("[+-]?(?:nan|inf|infinity)", Pattern.CASE_INSENSITIVE);
 
     static final ValueType<Double> NUMBER = new ValueType<>("a number", ValueType::number);
+    /** Sizes, distances and exponents: at least {@link Limits#MIN_MAGNITUDE}. */
     static final ValueType<Double> POSITIVE = new ValueType<>("a positive number", text -> {
         double d = number(text);
         if (!(d > 0)) throw new IllegalArgumentException(text.strip() + " is not positive");
-        return d;
+        return notTiny(text, d);
     });
+    /** Attenuation factors, spreads, a light's radius, the aperture: 0 or at least {@link Limits#MIN_MAGNITUDE}. */
     static final ValueType<Double> NON_NEGATIVE = new ValueType<>("a number ≥ 0", text -> {
         double d = number(text);
         if (d < 0) throw new IllegalArgumentException(text.strip() + " is negative");
-        return d;
+        return notTiny(text, d);
     });
     static final ValueType<Integer> INTEGER = new ValueType<>("an integer", ValueType::integer);
     static final ValueType<Integer> POSITIVE_INTEGER = new ValueType<>("an integer ≥ 1", text -> {
@@ -137,10 +139,7 @@ record ValueType<T>(String expected, Parser<T> parser) {
         });
     }
 
-    /**
-     * A strict decimal number: 0, or between {@link Limits#MIN_MAGNITUDE} and
-     * {@link Limits#MAX_MAGNITUDE} in magnitude.
-     */
+    /** A strict decimal number, at most {@link Limits#MAX_MAGNITUDE} in magnitude. */
     static double number(String text) {
         String t = text.strip();
         if (t.isEmpty()) throw new IllegalArgumentException("the value is empty");
@@ -151,9 +150,18 @@ record ValueType<T>(String expected, Parser<T> parser) {
         if (Math.abs(d) > Limits.MAX_MAGNITUDE)
             throw new IllegalArgumentException(t + " is larger than " + format(Limits.MAX_MAGNITUDE)
                     + " in magnitude (the limit)");
-        if (d != 0 && Math.abs(d) < Limits.MIN_MAGNITUDE)
-            throw new IllegalArgumentException(t + " is closer to 0 than " + Limits.MIN_MAGNITUDE
-                    + " (the limit; write 0 for zero)");
+        return d;
+    }
+
+    /**
+     * A positive quantity below {@link Limits#MIN_MAGNITUDE} is lost in the precision of the
+     * coordinates it is added to (a view plane 1e-300 away gives rays no direction), or overflows
+     * when inverted (an attenuation 1 / kc).
+     */
+    private static double notTiny(String text, double d) {
+        if (d != 0 && d < Limits.MIN_MAGNITUDE)
+            throw new IllegalArgumentException(text.strip() + " is closer to 0 than 1e-9 (the limit; write 0 for none"
+                    + " where 0 is allowed)");
         return d;
     }
 

@@ -341,7 +341,7 @@ class RenderCommandTest {
         @Test
         @DisplayName("without -o the image goes to images/<image name>.png")
         void defaultOutput() throws IOException {
-            String name = "cli-test/default-output";
+            String name = "cli-test-default-output";
             Path expected = ImageWriter.IMAGES.resolve(name + ".png");
             Files.deleteIfExists(expected);
             Run r = run(write("named.xml", SMALL.replace("<image name=\"small\"", "<image name=\"" + name + "\"")).toString(),
