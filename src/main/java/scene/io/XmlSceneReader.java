@@ -82,6 +82,10 @@ public final class XmlSceneReader {
             n -> Camera.getBuilder().setMultithreading(n));
     private static final ValueType<Integer> ADAPTIVE_DEPTH = INTEGER.narrowedBy("an integer from 1 to 6",
             d -> Camera.getBuilder().setAdaptive(d, 0));
+    private static final ValueType<int[]> AA_GRID = GRID.narrowedBy(GRID.expected() + ", at most "
+            + Camera.MAX_SAMPLES_PER_PIXEL + " samples", g -> Camera.getBuilder().setAntiAliasingGrid(g[0], g[1]));
+    private static final ValueType<Integer> LENS_SAMPLES = POSITIVE_INTEGER.narrowedBy("an integer from 1 to "
+            + Camera.MAX_SAMPLES_PER_PIXEL, n -> Camera.getBuilder().setDepthOfFieldSamples(n));
     private static final ValueType<Integer> SHININESS = INTEGER.narrowedBy("an integer ≥ 0",
             n -> new Material().setShininess(n));
     private static final ValueType<String> IMAGE_NAME = TEXT.narrowedBy("a file name without /, \\, :, .. or"
@@ -444,7 +448,7 @@ public final class XmlSceneReader {
         if (aa != null) {
             aa.allowAttributes(List.of("mode", "grid", "depth", "threshold"));
             noChildren(aa);
-            int[] grid = aa.optional("grid", GRID, new int[] { s.aaColumns(), s.aaRows() });
+            int[] grid = aa.optional("grid", AA_GRID, new int[] { s.aaColumns(), s.aaRows() });
             AntiAliasing mode = aa.required("mode", ValueType.enumeration(AntiAliasing.class));
             int depth = aa.optional("depth", ADAPTIVE_DEPTH, s.adaptiveDepth());
             double threshold = aa.optional("threshold", NON_NEGATIVE, s.adaptiveThreshold());
@@ -458,7 +462,7 @@ public final class XmlSceneReader {
             noChildren(dof);
             double focalDistance = dof.required("focal-distance", POSITIVE);
             double aperture = dof.required("aperture", NON_NEGATIVE);
-            int samples = dof.optional("samples", POSITIVE_INTEGER, s.dofSamples());
+            int samples = dof.optional("samples", LENS_SAMPLES, s.dofSamples());
             s = withinBudget(dof, "samples", s, r -> r.withDepthOfField(focalDistance, aperture, samples));
         }
         return s;
