@@ -1,5 +1,7 @@
 package lighting;
 
+import java.util.Objects;
+
 import primitives.Color;
 import primitives.Point;
 import primitives.Vector;
@@ -16,7 +18,7 @@ public class DirectionalLight extends Light implements LightSource {
      */
     public DirectionalLight(Color intensity, Vector direction) {
         super(intensity);
-        this.direction = direction.normalize();
+        this.direction = Objects.requireNonNull(direction, "light direction").normalize();
     }
 
     @Override
