@@ -9,6 +9,7 @@ import java.nio.file.Path;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 
+import com.code_intelligence.jazzer.junit.DictionaryFile;
 import com.code_intelligence.jazzer.junit.FuzzTest;
 
 import renderer.AntiAliasing;
@@ -23,7 +24,8 @@ import renderer.ImageWriter;
  * <p>Without {@code JAZZER_FUZZ=1} this replays {@code XmlSceneReaderFuzzTestInputs/read/}: the
  * seed corpus and every input a fuzzing run found (see docs/fuzzing.md). The inputs are scene
  * files in a folder that also holds {@code cube.obj}, so that {@code <mesh file="cube.obj"/>}
- * reaches the OBJ reader.
+ * reaches the OBJ reader. The dictionary {@code scene.dict} gives the fuzzer the format's element
+ * and attribute names and edge values (1e308, 65536, /dev/zero...).
  */
 class XmlSceneReaderFuzzTest {
     private static Path dir;
@@ -43,6 +45,7 @@ class XmlSceneReaderFuzzTest {
     }
 
     @FuzzTest
+    @DictionaryFile(resourcePath = "/scene/io/scene.dict")
     void read(byte[] content) {
         LoadedScene loaded;
         try {
