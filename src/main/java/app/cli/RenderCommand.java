@@ -66,8 +66,8 @@ public final class RenderCommand implements Callable<Integer> {
                     + " characters, no / \\ : or ..",
             "  scene file         at most " + Limits.MAX_SCENE_BYTES + " bytes, elements nested at most "
                     + Limits.MAX_NESTING_DEPTH + " deep,",
-            "                     numbers 0 or " + magnitude(Limits.MIN_MAGNITUDE) + " to "
-                    + magnitude(Limits.MAX_MAGNITUDE) + " in magnitude",
+            "                     numbers at most " + magnitude(Limits.MAX_MAGNITUDE) + " in magnitude,",
+            "                     sizes and factors 0 or at least " + magnitude(Limits.MIN_MAGNITUDE),
             "  OBJ file           a regular file of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
             "                     lines of at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters",
             "  memory             what does not fit in Java's heap (-Xmx) fails at once" };

@@ -250,7 +250,8 @@ class UntrustedInputTest {
                     "at most " + Camera.MAX_SAMPLES_PER_PIXEL, "at most " + RenderSettings.MAX_RAYS_PER_PIXEL,
                     "at most " + RenderSettings.MAX_PIXELS + " pixels", "at most " + Limits.MAX_SCENE_BYTES + " bytes",
                     "nested at most " + Limits.MAX_NESTING_DEPTH, "at most " + Limits.MAX_OBJ_BYTES + " bytes",
-                    "at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters", "1e-9 to 1e9");
+                    "at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters", "numbers at most 1e9 in magnitude",
+                    "at least 1e-9");
         }
     }
 
