@@ -86,9 +86,14 @@ record ValueType<T>(String expected, Parser<T> parser) {
             if (c < 0) throw new IllegalArgumentException("colour component " + format(c) + " is negative");
         return new Color(d[0], d[1], d[2]);
     });
-    /** A coefficient for all three channels ("0.5") or one per channel ("0.5 0.7 0.6"). */
-    static final ValueType<Double3> COEFFICIENTS = new ValueType<>("a number or a triple \"r g b\"", text -> {
+    /**
+     * A coefficient for all three channels ("0.5") or one per channel ("0.5 0.7 0.6"), never
+     * negative: every coefficient of the format (ka, kd, ks, kt, kr) scales light.
+     */
+    static final ValueType<Double3> COEFFICIENTS = new ValueType<>("a number or a triple \"r g b\", each ≥ 0", text -> {
         double[] d = numbers(text, 1, 3);
+        for (double c : d)
+            if (c < 0) throw new IllegalArgumentException("coefficient " + format(c) + " is negative");
         return d.length == 1 ? new Double3(d[0]) : new Double3(d[0], d[1], d[2]);
     });
     /** Two positive numbers "width height", or one for a square. */

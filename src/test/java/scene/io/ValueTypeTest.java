@@ -60,6 +60,14 @@ class ValueTypeTest {
             assertThat(ValueType.POSITIVE.parse("1e-9")).isEqualTo(1e-9);
         }
 
+        @ParameterizedTest(name = "\"{0}\"")
+        @ValueSource(strings = { "-0.1", "0.1 -22 0.3" })
+        @DisplayName("a negative coefficient is refused (a fuzzing finding: ka=\"0.1 -22 0.3\" failed in AmbientLight)")
+        void negativeCoefficient(String text) {
+            assertThatThrownBy(() -> ValueType.COEFFICIENTS.parse(text)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessageEndingWith(" is negative");
+        }
+
         @Test
         @DisplayName("empty text")
         void empty() {
