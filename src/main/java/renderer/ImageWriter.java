@@ -159,10 +159,12 @@ public class ImageWriter {
 
     /**
      * Writes the PNG to {@code file} atomically: into a temporary file beside it, then moved into
-     * place, so a reader never sees a half-written image and a failure leaves no file behind.
+     * place, so a reader never sees a half-written image and a failure leaves no file behind; nor
+     * does the JVM's exit during the write (a signal): the temporary file is then deleted.
      *
      * @param file where the PNG goes; missing folders are created
-     * @throws UncheckedIOException naming the file when it cannot be written
+     * @throws UncheckedIOException naming the file when it cannot be written, or when the JVM
+     *                              exits during the write
      */
     public void writeToImage(Path file) {
         // A view of the pixel buffer, not a copy: TYPE_INT_RGB's own layout (0xRRGGBB ints, row
@@ -172,23 +174,30 @@ public class ImageWriter {
                 rgb.getMasks(), null);
         BufferedImage image = new BufferedImage(rgb, raster, false, null);
         Path target = file.toAbsolutePath();
+        // SIGINT or SIGTERM while the file is written: the JVM runs its shutdown hooks, and this
+        // one abandons the write and deletes the temporary file (see InFlightFile).
+        InFlightFile inFlight = new InFlightFile();
+        Thread cleanupOnExit = new Thread(inFlight::abandon, "delete the unfinished " + target.getFileName());
+        try {
+            Runtime.getRuntime().addShutdownHook(cleanupOnExit);
+        } catch (IllegalStateException shuttingDown) {
+            throw new UncheckedIOException("cannot write image " + target + ": the JVM is shutting down",
+                    new IOException(shuttingDown));
+        }
         Path tmp = null;
-        Thread cleanupOnExit = null;
         try {
             Files.createDirectories(target.getParent());
             tmp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".tmp");
-            // SIGINT or SIGTERM while the file is written: the JVM runs its shutdown hooks, and
-            // this one removes the half-written file (the move below then fails, or has happened).
-            cleanupOnExit = new Thread(deleter(tmp), "delete " + tmp.getFileName());
-            Runtime.getRuntime().addShutdownHook(cleanupOnExit);
+            inFlight.created(tmp);
             if (!ImageIO.write(image, "png", tmp.toFile()))
                 throw new IOException("no PNG writer available");
+            if (!inFlight.mayComplete()) throw new IOException("the JVM is shutting down");
             try {
                 Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
             }
-        } catch (IOException | IllegalStateException e) { // IllegalStateException: the JVM is shutting down
+        } catch (IOException e) {
             if (tmp != null) {
                 try {
                     Files.deleteIfExists(tmp);
@@ -196,33 +205,23 @@ public class ImageWriter {
                     e.addSuppressed(cleanup);
                 }
             }
-            throw new UncheckedIOException("cannot write image " + target + ": " + e.getMessage(),
-                    e instanceof IOException io ? io : new IOException(e));
+            throw new UncheckedIOException("cannot write image " + target + ": " + e.getMessage(), e);
         } finally {
-            if (cleanupOnExit != null) removeHook(cleanupOnExit);
+            inFlight.release();
+            removeHook(cleanupOnExit, inFlight);
         }
     }
 
-    /** Deletes {@code tmp} if it is still there (after a successful move it is not). */
-    private static Runnable deleter(Path tmp) {
-        return () -> {
-            try {
-                Files.deleteIfExists(tmp);
-            } catch (IOException e) {
-                System.err.println("cannot delete the unfinished image " + tmp + ": " + e.getMessage());
-            }
-        };
-    }
-
     /**
-     * Unregisters a hook; while the JVM shuts down that is refused, and then the hook runs (or has
-     * run) anyway: running it here as well is harmless, since deleting is idempotent.
+     * Unregisters a hook; while the JVM shuts down that is refused, and the hook runs (or has run)
+     * anyway: running its work here as well is harmless (the writer has released the file, and
+     * deleting is idempotent).
      */
-    private static void removeHook(Thread hook) {
+    private static void removeHook(Thread hook, InFlightFile inFlight) {
         try {
             Runtime.getRuntime().removeShutdownHook(hook);
         } catch (IllegalStateException shuttingDown) {
-            hook.run();
+            inFlight.abandon();
         }
     }
 }

@@ -22,11 +22,11 @@ class NullArgumentsTest {
     static Stream<Arguments> constructors() {
         return Stream.of(
                 Arguments.of("new AmbientLight(null, kA)", (ThrowingCallable) () -> new AmbientLight(null, Double3.ONE),
-                        "ambient light intensity iA"),
+                        "ambient intensity"),
                 Arguments.of("new AmbientLight(iA, null)", (ThrowingCallable) () -> new AmbientLight(WHITE, (Double3) null),
                         "ambient factor kA"),
                 Arguments.of("new AmbientLight(null, 1)", (ThrowingCallable) () -> new AmbientLight(null, 1),
-                        "ambient light intensity iA"),
+                        "ambient intensity"),
                 Arguments.of("new DirectionalLight(c, null)", (ThrowingCallable) () -> new DirectionalLight(WHITE, null),
                         "light direction"),
                 Arguments.of("new PointLight(null, null)", (ThrowingCallable) () -> new PointLight(null, null),
