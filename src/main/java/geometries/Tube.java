@@ -28,6 +28,7 @@ public class Tube extends Geometry {
     /**
      * @param radius the radius, in scene units, positive and finite
      * @param axis   the axis line (both directions: the tube is infinite)
+     * @throws NullPointerException     naming the axis when it is null
      * @throws IllegalArgumentException when the radius is not a positive finite number
      */
     public Tube(double radius, Ray axis) {

@@ -15,6 +15,7 @@ public class DirectionalLight extends Light implements LightSource {
      *
      * @param intensity the intensity at every point, non-negative
      * @param direction the direction the light travels (normalized here)
+     * @throws NullPointerException naming a null argument
      */
     public DirectionalLight(Color intensity, Vector direction) {
         super(intensity);
