@@ -1,5 +1,7 @@
 package geometries;
 
+import java.util.Objects;
+
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -28,8 +30,8 @@ public class Plane extends SingleHitGeometry {
      * @param normal any non-zero vector; it is normalized
      */
     public Plane(Point q, Vector normal) {
-        this.q = q;
-        this.normal = normal.normalize();
+        this.q = Objects.requireNonNull(q, "plane point q");
+        this.normal = Objects.requireNonNull(normal, "plane normal").normalize();
     }
 
     /**
@@ -37,6 +39,9 @@ public class Plane extends SingleHitGeometry {
      * do not span a plane.
      */
     static Vector normalOf(Point p1, Point p2, Point p3, String what) {
+        Objects.requireNonNull(p1, what + " point p1");
+        Objects.requireNonNull(p2, what + " point p2");
+        Objects.requireNonNull(p3, what + " point p3");
         if (p1.equals(p2) || p1.equals(p3) || p2.equals(p3))
             throw new IllegalArgumentException(what + " points must be distinct, got " + p1 + ", " + p2 + ", " + p3);
         Vector v1 = p2.subtract(p1);

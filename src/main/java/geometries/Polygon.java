@@ -1,6 +1,7 @@
 package geometries;
 
 import java.util.List;
+import java.util.Objects;
 
 import primitives.Point;
 import primitives.Ray;
@@ -34,6 +35,7 @@ public class Polygon extends SingleHitGeometry {
         if (vertices == null || vertices.length < 3)
             throw new IllegalArgumentException("a polygon needs at least 3 vertices, got "
                     + (vertices == null ? 0 : vertices.length));
+        for (int i = 0; i < vertices.length; ++i) Objects.requireNonNull(vertices[i], "polygon vertex " + i);
         this.vertices = List.of(vertices);
         this.size = vertices.length;
         for (int i = 0; i < size; ++i)

@@ -2,6 +2,7 @@ package geometries;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 
 import primitives.Point;
 import primitives.Ray;
@@ -23,10 +24,11 @@ public class Sphere extends Geometry {
     /**
      * @param center the centre
      * @param radius the radius, in scene units, positive and finite
+     * @throws NullPointerException     naming the centre when it is null
      * @throws IllegalArgumentException when the radius is not a positive finite number
      */
     public Sphere(Point center, double radius) {
-        this.center = center;
+        this.center = Objects.requireNonNull(center, "sphere center");
         this.radius = Util.requirePositive(radius, "sphere radius");
         this.radiusSquared = radius * radius;
     }

@@ -2,6 +2,7 @@ package geometries;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Objects;
 
 import primitives.Point;
 import primitives.Ray;
@@ -27,11 +28,12 @@ public class Tube extends Geometry {
     /**
      * @param radius the radius, in scene units, positive and finite
      * @param axis   the axis line (both directions: the tube is infinite)
+     * @throws NullPointerException     naming the axis when it is null
      * @throws IllegalArgumentException when the radius is not a positive finite number
      */
     public Tube(double radius, Ray axis) {
         this.radius = Util.requirePositive(radius, "tube radius");
-        this.axis = axis;
+        this.axis = Objects.requireNonNull(axis, "tube axis");
         px = axis.getHead().getX();
         py = axis.getHead().getY();
         pz = axis.getHead().getZ();

@@ -16,7 +16,7 @@ public class AmbientLight extends Light {
      * @throws IllegalArgumentException when a factor is negative or not finite
      */
     public AmbientLight(Color iA, Double3 kA) {
-        super(iA.scale(kA));
+        super(Objects.requireNonNull(iA, "ambient intensity").scale(Objects.requireNonNull(kA, "ambient factor kA")));
     }
 
     /**
@@ -36,6 +36,6 @@ public class AmbientLight extends Light {
      * @throws IllegalArgumentException when the factor is negative or not finite
      */
     public AmbientLight(Color iA, double kA) {
-        super(iA.scale(kA));
+        super(Objects.requireNonNull(iA, "ambient intensity").scale(kA));
     }
 }

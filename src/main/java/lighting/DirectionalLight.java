@@ -1,5 +1,7 @@
 package lighting;
 
+import java.util.Objects;
+
 import primitives.Color;
 import primitives.Point;
 import primitives.Vector;
@@ -13,10 +15,11 @@ public class DirectionalLight extends Light implements LightSource {
      *
      * @param intensity the intensity at every point, non-negative
      * @param direction the direction the light travels (normalized here)
+     * @throws NullPointerException naming a null argument
      */
     public DirectionalLight(Color intensity, Vector direction) {
         super(intensity);
-        this.direction = direction.normalize();
+        this.direction = Objects.requireNonNull(direction, "light direction").normalize();
     }
 
     @Override

@@ -1,5 +1,7 @@
 package lighting;
 
+import java.util.Objects;
+
 import primitives.Color;
 import primitives.Point;
 import primitives.Util;
@@ -22,7 +24,7 @@ public class SpotLight extends PointLight {
      */
     public SpotLight(Color intensity, Point position, Vector direction) {
         super(intensity, position);
-        this.direction = direction.normalize();
+        this.direction = Objects.requireNonNull(direction, "spot direction").normalize();
     }
 
     @Override

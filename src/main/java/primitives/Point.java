@@ -1,5 +1,7 @@
 package primitives;
 
+import java.util.Objects;
+
 /**
  * An immutable point in 3D space. Coordinates are stored as three doubles (no wrapper object)
  * because every intersection kernel reads them.
@@ -13,19 +15,28 @@ public class Point {
     public static final Point ZERO = new Point(0, 0, 0);
 
     /**
-     * @param x the x coordinate, in scene units
-     * @param y the y coordinate, in scene units
-     * @param z the z coordinate, in scene units
+     * @param x the x coordinate, in scene units, finite
+     * @param y the y coordinate, in scene units, finite
+     * @param z the z coordinate, in scene units, finite
+     * @throws IllegalArgumentException for a NaN or infinite coordinate, naming the point
      */
     public Point(double x, double y, double z) {
+        if (!(Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z)))
+            throw new IllegalArgumentException("point coordinates must be finite, got (" + x + "," + y + "," + z + ")");
         this.x = x;
         this.y = y;
         this.z = z;
     }
 
-    /** @param xyz the three coordinates, in scene units (course compatibility) */
+    /**
+     * A point from a {@link Double3} (course compatibility).
+     *
+     * @param xyz the three coordinates, in scene units, finite
+     * @throws NullPointerException     naming {@code xyz} when it is null
+     * @throws IllegalArgumentException for a NaN or infinite coordinate
+     */
     public Point(Double3 xyz) {
-        this(xyz.d1, xyz.d2, xyz.d3);
+        this(Objects.requireNonNull(xyz, "point coordinates xyz").d1, xyz.d2, xyz.d3);
     }
 
     /** @return the x coordinate, in scene units */

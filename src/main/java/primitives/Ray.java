@@ -1,6 +1,7 @@
 package primitives;
 
 import java.util.List;
+import java.util.Objects;
 
 import geometries.Intersectable.GeoPoint;
 import geometries.Intersectable.Intersection;
@@ -24,8 +25,8 @@ public final class Ray {
      * @param direction any non-zero vector; it is normalized, so {@code t} measures distance
      */
     public Ray(Point head, Vector direction) {
-        this.head = head;
-        this.direction = direction.normalize();
+        this.head = Objects.requireNonNull(head, "ray head");
+        this.direction = Objects.requireNonNull(direction, "ray direction").normalize();
     }
 
     /**
@@ -38,7 +39,9 @@ public final class Ray {
      * @param normal the surface normal at {@code head}, unit length (either orientation)
      */
     public Ray(Point head, Vector direction, Vector normal) {
-        this.direction = direction.normalize();
+        Objects.requireNonNull(head, "ray head");
+        Objects.requireNonNull(normal, "surface normal");
+        this.direction = Objects.requireNonNull(direction, "ray direction").normalize();
         double nd = Util.alignZero(normal.dotProduct(this.direction));
         if (nd == 0) {
             this.head = head;

@@ -17,6 +17,19 @@ import scene.Scene;
  * lives in {@code RenderLoop}, the sampling strategies in the samplers.
  */
 public final class Camera {
+    /**
+     * Render threads per available core at most: rendering is bound by the processor, so more
+     * threads than cores gain nothing, and a few times more stay harmless; a count such as 100,000
+     * would exhaust the native threads of the machine.
+     */
+    public static final int MAX_THREADS_PER_CORE = 8;
+    /**
+     * The most primary samples of one pixel from the RANDOM grid (columns × rows) or the depth of
+     * field's lens samples: 65,536 (a 256×256 grid), so that the count fits an int and a pixel
+     * ends (ADAPTIVE's depth 6 stays below it, at most 129² lattice points).
+     */
+    public static final int MAX_SAMPLES_PER_PIXEL = 1 << 16;
+
     // View. Units are scene units; vTo, vUp and vRight are unit length and mutually orthogonal.
     private final Point location;
     private final Vector vTo;
@@ -67,6 +80,14 @@ public final class Camera {
         debugPrint = b.debugPrint;
         summary = b.summary;
         output = b.output;
+    }
+
+    /**
+     * @return the most render threads this machine allows: {@link #MAX_THREADS_PER_CORE} per
+     *         available core
+     */
+    public static int maxThreads() {
+        return MAX_THREADS_PER_CORE * Runtime.getRuntime().availableProcessors();
     }
 
     /** @return a new builder with the defaults: no anti-aliasing, pinhole, calling thread, seed 0 */
@@ -515,11 +536,15 @@ public final class Camera {
          * @param columns jittered samples across a pixel, ≥ 1
          * @param rows    jittered samples down a pixel, ≥ 1
          * @return this builder
-         * @throws IllegalArgumentException for a grid below 1×1, naming it
+         * @throws IllegalArgumentException for a grid below 1×1 or of more than
+         *                                  {@link #MAX_SAMPLES_PER_PIXEL} samples, naming it
          */
         public Builder setAntiAliasingGrid(int columns, int rows) {
             if (columns < 1 || rows < 1)
                 throw new IllegalArgumentException("anti-aliasing grid must be at least 1x1, got " + columns + "x" + rows);
+            if ((long) columns * rows > MAX_SAMPLES_PER_PIXEL)
+                throw new IllegalArgumentException("anti-aliasing grid " + columns + "x" + rows + " has "
+                        + (long) columns * rows + " samples per pixel, more than the limit of " + MAX_SAMPLES_PER_PIXEL);
             this.gridColumns = columns;
             this.gridRows = rows;
             return this;
@@ -569,12 +594,14 @@ public final class Camera {
          * Lens samples per pixel with depth of field and no anti-aliasing (default 16); with
          * anti-aliasing, each anti-aliasing sample takes its own lens point instead.
          *
-         * @param samples rays per pixel, ≥ 1
+         * @param samples rays per pixel, 1 to {@link #MAX_SAMPLES_PER_PIXEL}
          * @return this builder
-         * @throws IllegalArgumentException when it is below 1
+         * @throws IllegalArgumentException when it is below 1 or above the limit
          */
         public Builder setDepthOfFieldSamples(int samples) {
-            if (samples < 1) throw new IllegalArgumentException("depth-of-field samples must be at least 1, got " + samples);
+            if (samples < 1 || samples > MAX_SAMPLES_PER_PIXEL)
+                throw new IllegalArgumentException("depth-of-field samples must be from 1 to " + MAX_SAMPLES_PER_PIXEL
+                        + ", got " + samples);
             this.lensSamples = samples;
             return this;
         }
@@ -592,14 +619,19 @@ public final class Camera {
         }
 
         /**
-         * @param threads 0: render on the calling thread; n &gt; 0: n worker threads; -2: one per
-         *                available core; -1 (the course's "parallel streams"): the same as -2, the
-         *                library's one render loop on all cores
+         * @param threads 0: render on the calling thread; n &gt; 0: n worker threads, at most
+         *                {@link #maxThreads()}; -2: one per available core; -1 (the course's
+         *                "parallel streams"): the same as -2, the library's one render loop on all
+         *                cores
          * @return this builder
+         * @throws IllegalArgumentException for another value, naming it and the limit
          */
         public Builder setMultithreading(int threads) {
             if (threads < -2)
                 throw new IllegalArgumentException("thread count must be 0 (calling thread), a positive number, or -1 or -2 (all cores), got " + threads);
+            if (threads > maxThreads())
+                throw new IllegalArgumentException("thread count " + threads + " is more than the limit of " + maxThreads()
+                        + " (" + MAX_THREADS_PER_CORE + " per core, " + Runtime.getRuntime().availableProcessors() + " cores)");
             this.threads = threads;
             return this;
         }

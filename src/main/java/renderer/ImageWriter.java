@@ -159,10 +159,12 @@ public class ImageWriter {
 
     /**
      * Writes the PNG to {@code file} atomically: into a temporary file beside it, then moved into
-     * place, so a reader never sees a half-written image and a failure leaves no file behind.
+     * place, so a reader never sees a half-written image and a failure leaves no file behind; nor
+     * does the JVM's exit during the write (a signal): the temporary file is then deleted.
      *
      * @param file where the PNG goes; missing folders are created
-     * @throws UncheckedIOException naming the file when it cannot be written
+     * @throws UncheckedIOException naming the file when it cannot be written, or when the JVM
+     *                              exits during the write
      */
     public void writeToImage(Path file) {
         // A view of the pixel buffer, not a copy: TYPE_INT_RGB's own layout (0xRRGGBB ints, row
@@ -172,12 +174,24 @@ public class ImageWriter {
                 rgb.getMasks(), null);
         BufferedImage image = new BufferedImage(rgb, raster, false, null);
         Path target = file.toAbsolutePath();
+        // SIGINT or SIGTERM while the file is written: the JVM runs its shutdown hooks, and this
+        // one abandons the write and deletes the temporary file (see InFlightFile).
+        InFlightFile inFlight = new InFlightFile();
+        Thread cleanupOnExit = new Thread(inFlight::abandon, "delete the unfinished " + target.getFileName());
+        try {
+            Runtime.getRuntime().addShutdownHook(cleanupOnExit);
+        } catch (IllegalStateException shuttingDown) {
+            throw new UncheckedIOException("cannot write image " + target + ": the JVM is shutting down",
+                    new IOException(shuttingDown));
+        }
         Path tmp = null;
         try {
             Files.createDirectories(target.getParent());
             tmp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".tmp");
+            inFlight.created(tmp);
             if (!ImageIO.write(image, "png", tmp.toFile()))
                 throw new IOException("no PNG writer available");
+            if (!inFlight.mayComplete()) throw new IOException("the JVM is shutting down");
             try {
                 Files.move(tmp, target, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
             } catch (AtomicMoveNotSupportedException e) {
@@ -192,6 +206,22 @@ public class ImageWriter {
                 }
             }
             throw new UncheckedIOException("cannot write image " + target + ": " + e.getMessage(), e);
+        } finally {
+            inFlight.release();
+            removeHook(cleanupOnExit, inFlight);
+        }
+    }
+
+    /**
+     * Unregisters a hook; while the JVM shuts down that is refused, and the hook runs (or has run)
+     * anyway: running its work here as well is harmless (the writer has released the file, and
+     * deleting is idempotent).
+     */
+    private static void removeHook(Thread hook, InFlightFile inFlight) {
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException shuttingDown) {
+            inFlight.abandon();
         }
     }
 }

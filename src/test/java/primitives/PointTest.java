@@ -2,16 +2,40 @@ package primitives;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException;
+import static org.assertj.core.api.Assertions.assertThatNullPointerException;
 import static org.assertj.core.api.Assertions.within;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 class PointTest {
     private final Point p1 = new Point(1, 2, 3);
     private final Point p2 = new Point(2, 4, 6);
     private final Point p3 = new Point(2, 4, 5);
+
+    @Nested
+    @DisplayName("construction")
+    class Construction {
+        @ParameterizedTest(name = "{0}")
+        @ValueSource(doubles = { Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY })
+        @DisplayName("a NaN or infinite coordinate is refused, naming the point")
+        void nonFinite(double bad) {
+            assertThatIllegalArgumentException().isThrownBy(() -> new Point(bad, 0, 0))
+                    .withMessage("point coordinates must be finite, got (" + bad + ",0.0,0.0)");
+            assertThatIllegalArgumentException().isThrownBy(() -> new Point(0, 0, bad));
+            assertThatIllegalArgumentException().isThrownBy(() -> new Point(new Double3(0, bad, 0)));
+        }
+
+        @Test
+        @DisplayName("a null triple is refused, naming it")
+        void nullTriple() {
+            assertThatNullPointerException().isThrownBy(() -> new Point((Double3) null))
+                    .withMessage("point coordinates xyz");
+        }
+    }
 
     @Nested
     @DisplayName("subtract")

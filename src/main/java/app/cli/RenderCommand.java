@@ -25,6 +25,7 @@ import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
 import scene.Scene;
+import scene.io.Limits;
 import scene.io.LoadedScene;
 import scene.io.Messages;
 import scene.io.RenderSettings;
@@ -58,6 +59,28 @@ public final class RenderCommand implements Callable<Integer> {
     /** Percent between redraws of the terminal progress bar. */
     private static final double BAR_STEP = 1;
 
+    /** The stated limits, for --help: each is refused with a message that names it. */
+    private static final String[] LIMITS = {
+            "  threads            at most " + Camera.MAX_THREADS_PER_CORE + " per core (" + Camera.maxThreads() + " here)",
+            "  samples per pixel  at most " + Camera.MAX_SAMPLES_PER_PIXEL + " (RANDOM grid, depth-of-field samples)",
+            "  rays per pixel     at most " + RenderSettings.MAX_RAYS_PER_PIXEL + ": samples per pixel",
+            "                     (grid, adaptive, lens) x beam-size x shadow-samples",
+            "  image              at most " + RenderSettings.MAX_PIXELS + " pixels, written to images/<name>.png:",
+            "                     a name of at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH
+                    + " characters, no / \\ : or ..",
+            "  scene file         at most " + Limits.MAX_SCENE_BYTES + " bytes, elements nested at most "
+                    + Limits.MAX_NESTING_DEPTH + " deep,",
+            "                     numbers at most " + magnitude(Limits.MAX_MAGNITUDE) + " in magnitude,",
+            "                     sizes and factors 0 or at least " + magnitude(Limits.MIN_MAGNITUDE),
+            "  OBJ file           a regular file of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
+            "                     lines of at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters",
+            "  memory             what does not fit in Java's heap (-Xmx) fails at once" };
+
+    /** 1e9 rather than 1.0E9. */
+    private static String magnitude(double d) {
+        return String.format(Locale.ROOT, "%.0e", d).replace("e+0", "e").replace("e-0", "e-");
+    }
+
     @Parameters(arity = "0..1", paramLabel = "SCENE",
             description = "The scene file (XML). Default: the built-in showcase.")
     private Path scene;
@@ -75,7 +98,8 @@ public final class RenderCommand implements Callable<Integer> {
     private Integer height;
 
     @Option(names = "--threads", paramLabel = "N",
-            description = "Render threads: N > 0 worker threads, 0 the calling thread, -1 or -2 all cores. Default: the file's, else all cores.")
+            description = "Render threads: N > 0 worker threads (at most " + Camera.MAX_THREADS_PER_CORE
+                    + " per core), 0 the calling thread, -1 or -2 all cores. Default: the file's, else all cores.")
     private Integer threads;
 
     @Option(names = "--aa", paramLabel = "MODE",
@@ -132,6 +156,7 @@ public final class RenderCommand implements Callable<Integer> {
     /** The command line, with its streams, ready to {@code execute}. */
     static CommandLine commandLine(PrintStream out, PrintStream err, boolean terminal) {
         CommandLine cl = new CommandLine(new RenderCommand(out, err, terminal));
+        cl.getCommandSpec().usageMessage().footerHeading("%nLimits (docs/scene-format.md, \"Limits\"):%n").footer(LIMITS);
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         cl.setOut(new PrintWriter(out, true, StandardCharsets.UTF_8));
         cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
@@ -176,6 +201,10 @@ public final class RenderCommand implements Callable<Integer> {
         } catch (IOException e) {
             err.println(Messages.cannotReadScene(scene, e));
             return BAD_INPUT;
+        } catch (OutOfMemoryError e) {
+            // Meshes within the size limits can still outgrow a small heap: one line, at once.
+            err.println("render: not enough memory to load " + scene + maxMemory() + " (give Java more memory with -Xmx)");
+            return FAILURE;
         }
         RenderSettings settings = override(job.settings());
         Path target = output != null ? output : ImageWriter.IMAGES.resolve(settings.imageName() + ".png");
@@ -295,7 +324,13 @@ public final class RenderCommand implements Callable<Integer> {
             }
         }
         if (threads != null) s = s.withThreads(threads);
-        if (antiAliasing != null) s = s.withAntiAliasing(antiAliasing);
+        if (antiAliasing != null) {
+            try {
+                s = s.withAntiAliasing(antiAliasing);
+            } catch (IllegalArgumentException e) { // the file's grid or depth, now used, exceeds the ray budget
+                throw usage("--aa " + antiAliasing + ": " + e.getMessage());
+            }
+        }
         if (seed != null) s = s.withSeed(seed);
         return s;
     }
@@ -319,10 +354,14 @@ public final class RenderCommand implements Callable<Integer> {
     private static String notEnoughMemory(RenderSettings s) {
         long mb = 1 << 20;
         long needed = ((long) s.width() * s.height() * Integer.BYTES + mb - 1) / mb;
-        long max = Runtime.getRuntime().maxMemory();
-        String limit = max == Long.MAX_VALUE ? "" : "; Java may use at most " + max / mb + " MB here";
         return String.format(Locale.ROOT, "render: image %dx%d needs %d MB%s (render it smaller with --width or"
-                + " --height, or give Java more memory with -Xmx)", s.width(), s.height(), needed, limit);
+                + " --height, or give Java more memory with -Xmx)", s.width(), s.height(), needed, maxMemory());
+    }
+
+    /** "; Java may use at most N MB here", or nothing when the JVM states no limit. */
+    private static String maxMemory() {
+        long max = Runtime.getRuntime().maxMemory();
+        return max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB here";
     }
 
     /**

@@ -44,8 +44,8 @@ final class SceneFiles implements Serializable {
     static Captured read(Path scene) throws IOException, SceneFormatException {
         Objects.requireNonNull(scene, "scene");
         LinkedHashMap<String, byte[]> contents = new LinkedHashMap<>();
-        LoadedScene loaded = XmlSceneReader.read(scene, file -> {
-            byte[] bytes = FileSource.DISK.readAllBytes(file);
+        LoadedScene loaded = XmlSceneReader.read(scene, (file, maxBytes) -> {
+            byte[] bytes = FileSource.DISK.readAllBytes(file, maxBytes);
             contents.put(file.toString(), bytes);
             return bytes;
         });
@@ -60,7 +60,7 @@ final class SceneFiles implements Serializable {
      * @throws SceneFormatException never for a capture of a valid scene
      */
     LoadedScene load() throws IOException, SceneFormatException {
-        return XmlSceneReader.read(Path.of(scene), file -> {
+        return XmlSceneReader.read(Path.of(scene), (file, maxBytes) -> {
             byte[] bytes = contents.get(file.toString());
             if (bytes == null) throw new NoSuchFileException(file.toString(), null, "not sent with the scene");
             return bytes;

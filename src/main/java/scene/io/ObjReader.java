@@ -1,6 +1,5 @@
 package scene.io;
 
-import java.io.BufferedReader;
 import java.io.FileNotFoundException;
 import java.io.IOException;
 import java.io.InputStream;
@@ -8,6 +7,7 @@ import java.io.InputStreamReader;
 import java.io.Reader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.HashMap;
@@ -44,7 +44,14 @@ import primitives.Util;
  *
  * <p>Errors: a malformed number or index, an index of 0 or out of range, a face of fewer than 3
  * corners, a non-finite number, a zero normal, a degenerate face or a file without faces throws
- * an {@link ObjFormatException} whose message is {@code source:line: what is wrong}. The reader
+ * an {@link ObjFormatException} whose message is {@code source:line: what is wrong} (line 0 for the
+ * file as a whole).
+ *
+ * <p>Limits: the text is streamed line by line (never read whole); a line longer than
+ * {@link Limits#MAX_OBJ_LINE_LENGTH} characters or a text longer than {@link Limits#MAX_OBJ_BYTES}
+ * is refused at the line where the limit is crossed, and {@link #read(Path)} refuses a file that
+ * is not a regular file (a device such as {@code /dev/zero}, a pipe) or is larger than the limit
+ * before reading it. The reader
  * returns a whole mesh or throws; it never returns part of a file. Numbers are read the same in
  * every default {@link Locale} ({@code 1.5}, never {@code 1,5}), and exactly as
  * {@link Double#parseDouble} would read them.
@@ -102,6 +109,16 @@ public final class ObjReader {
      */
     public static TriangleMesh read(Path file) throws IOException {
         Objects.requireNonNull(file, "file");
+        // Refused before a byte is read: a device or a pipe (/dev/zero never ends), a directory,
+        // and a file beyond the size limit. The stream is bounded as well, should the file grow.
+        if (!Files.isRegularFile(file)) {
+            if (!Files.exists(file)) throw new NoSuchFileException(file.toString());
+            throw new ObjFormatException(file.toString(), 0, "not a regular file (a device, a pipe or a folder)");
+        }
+        long size = Files.size(file);
+        if (size > Limits.MAX_OBJ_BYTES)
+            throw new ObjFormatException(file.toString(), 0, "the file has " + size + " bytes, more than the limit of "
+                    + Limits.MAX_OBJ_BYTES + " bytes");
         try (Reader reader = new InputStreamReader(Files.newInputStream(file), StandardCharsets.UTF_8)) {
             return read(reader, file.toString());
         }
@@ -120,8 +137,13 @@ public final class ObjReader {
         Objects.requireNonNull(reader, "reader");
         Objects.requireNonNull(sourceName, "source name");
         ObjReader parser = new ObjReader(sourceName);
-        BufferedReader lines = reader instanceof BufferedReader b ? b : new BufferedReader(reader, 1 << 16);
-        for (String text = lines.readLine(); text != null; text = lines.readLine()) parser.parseLine(text);
+        LineReader lines = new LineReader(reader, Limits.MAX_OBJ_LINE_LENGTH, Limits.MAX_OBJ_BYTES);
+        try {
+            for (String text = lines.readLine(); text != null; text = lines.readLine()) parser.parseLine(text);
+        } catch (LineReader.LimitExceededException e) {
+            ++parser.lineNumber; // the line being read
+            throw parser.error(e.getMessage());
+        }
         return parser.toMesh();
     }
 

@@ -1,5 +1,6 @@
 package scene.io;
 
+import java.util.Locale;
 import java.util.Objects;
 import java.util.function.Consumer;
 
@@ -22,7 +23,8 @@ import scene.Scene;
  * again): a cluster's driver sends the settings it resolved to its executors.
  *
  * @serial exclude
- * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise
+ * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise; a name,
+ *                         not a path (see {@link #requireImageName(String)})
  * @param width            image width in pixels, at least 1
  * @param height           image height in pixels, at least 1; width × height at most
  *                         {@link #MAX_PIXELS}
@@ -59,6 +61,14 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * limit, checked here without allocating).
      */
     public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
+    /**
+     * The ray budget of one pixel: {@link #samplesPerPixel()} × beam size × shadow samples at most
+     * this (2^24, 16,777,216), so that no setting, alone or multiplied by the others, makes a
+     * render that never ends. The defaults use 256; the showcase's adaptive depth 3, 20,736.
+     */
+    public static final long MAX_RAYS_PER_PIXEL = 1L << 24;
+    /** The longest image name, in characters (file names have at most 255 bytes). */
+    public static final int MAX_IMAGE_NAME_LENGTH = 200;
 
     /**
      * Checks what can be checked without a camera: the names and colours are present and the image
@@ -88,12 +98,23 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * @param shadowSamples    shadow rays toward a light with a radius
      * @throws NullPointerException     when the image name, grid colour or anti-aliasing mode is null
      * @throws IllegalArgumentException for a side below 1 pixel or more than {@link #MAX_PIXELS}
-     *                                  pixels, naming the size
+     *                                  pixels, naming the size; for an image name that is not a
+     *                                  plain file name (see {@link #requireImageName(String)}); for
+     *                                  more than {@link #MAX_RAYS_PER_PIXEL} rays per pixel, naming
+     *                                  the factors
      */
     public RenderSettings {
-        Objects.requireNonNull(imageName, "image name");
+        requireImageName(imageName);
         Objects.requireNonNull(gridColor, "grid colour");
         Objects.requireNonNull(antiAliasing, "anti-aliasing mode");
+        double rays = (double) samplesPerPixel(antiAliasing, aaColumns, aaRows, adaptiveDepth, focalDistance, dofSamples)
+                * beamSize * shadowSamples; // a double: the product of three ints may overflow a long
+        if (rays > MAX_RAYS_PER_PIXEL)
+            throw new IllegalArgumentException(String.format(Locale.ROOT,
+                    "%s sampling with %d samples per pixel × beam size %d × %d shadow samples is %.0f rays per pixel,"
+                            + " more than the limit of %d",
+                    antiAliasing, samplesPerPixel(antiAliasing, aaColumns, aaRows, adaptiveDepth, focalDistance, dofSamples),
+                    beamSize, shadowSamples, rays, MAX_RAYS_PER_PIXEL));
         if (width < 1 || height < 1)
             throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
         long pixels = (long) width * height;
@@ -214,6 +235,60 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
             e.beamSize = beamSize;
             e.shadowSamples = shadowSamples;
         });
+    }
+
+    /**
+     * Checks that {@code name} names a file in images/ and nothing else: a scene file must not
+     * choose where on disk its image goes (only the command line's {@code -o} does).
+     *
+     * @param name the image name, without ".png"
+     * @return {@code name}
+     * @throws NullPointerException     for a null name
+     * @throws IllegalArgumentException for a blank name, one longer than
+     *                                  {@link #MAX_IMAGE_NAME_LENGTH}, or one with a path separator
+     *                                  ({@code /} or {@code \}), a drive colon, {@code ..} or a
+     *                                  control character, naming it
+     */
+    public static String requireImageName(String name) {
+        Objects.requireNonNull(name, "image name");
+        if (name.isBlank()) throw new IllegalArgumentException("the image name is blank");
+        if (name.length() > MAX_IMAGE_NAME_LENGTH)
+            throw new IllegalArgumentException("the image name has " + name.length() + " characters, more than the limit of "
+                    + MAX_IMAGE_NAME_LENGTH);
+        for (int i = 0; i < name.length(); ++i) {
+            char c = name.charAt(i);
+            if (c == '/' || c == '\\' || c == ':' || Character.isISOControl(c))
+                throw new IllegalArgumentException("the image name '" + name.replaceAll("\\p{Cntrl}", "?")
+                        + "' is a path, not a name (it contains " + (Character.isISOControl(c) ? "a control character"
+                                : "'" + c + "'") + ")");
+        }
+        if (name.contains(".."))
+            throw new IllegalArgumentException("the image name '" + name + "' contains '..' (a name, not a path, is expected)");
+        return name;
+    }
+
+    /**
+     * The most primary rays one pixel may take: RANDOM's grid, ADAPTIVE's whole lattice of
+     * (2^(depth+1) + 1)² points (the worst case), CORNERS' five points, or without anti-aliasing
+     * the lens samples with depth of field and 1 without.
+     *
+     * @return the samples per pixel, as a long (a grid of two ints may overflow an int)
+     */
+    public long samplesPerPixel() {
+        return samplesPerPixel(antiAliasing, aaColumns, aaRows, adaptiveDepth, focalDistance, dofSamples);
+    }
+
+    private static long samplesPerPixel(AntiAliasing mode, int columns, int rows, int depth, double focalDistance,
+            int dofSamples) {
+        return switch (mode) {
+            case RANDOM -> (long) columns * rows;
+            case ADAPTIVE -> {
+                long side = (1L << Math.min(Math.max(depth, 0) + 1, 30)) + 1;
+                yield side * side;
+            }
+            case CORNERS -> 5;
+            case NONE -> focalDistance > 0 ? dofSamples : 1;
+        };
     }
 
     /** @return whether these settings ask for depth of field */

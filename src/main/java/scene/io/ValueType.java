@@ -15,7 +15,8 @@ import primitives.Vector;
  * A kind of attribute value: what the reader expects (for messages) and how the text becomes a
  * value. Numbers are plain decimals ("50", "-0.25", "1e-6") parsed the same on every machine
  * whatever its locale; "NaN", "Infinity", hexadecimal or Java suffixes ("1d") are rejected, and so
- * is any number too large to be finite. Triples are separated by white space, as in the course's
+ * is any number beyond {@link Limits#MAX_MAGNITUDE}; a positive size or distance, or a
+ * non-negative factor other than 0, is at least {@link Limits#MIN_MAGNITUDE}. Triples are separated by white space, as in the course's
  * scene files ("75 127 90").
  *
  * @param expected what a valid value looks like, completing "expected …" in messages
@@ -34,15 +35,17 @@ record ValueType<T>(String expected, Parser<T> parser) {
     private static final Pattern NON_FINITE = Pattern.compile("[+-]?(?:nan|inf|infinity)", Pattern.CASE_INSENSITIVE);
 
     static final ValueType<Double> NUMBER = new ValueType<>("a number", ValueType::number);
+    /** Sizes, distances and exponents: at least {@link Limits#MIN_MAGNITUDE}. */
     static final ValueType<Double> POSITIVE = new ValueType<>("a positive number", text -> {
         double d = number(text);
         if (!(d > 0)) throw new IllegalArgumentException(text.strip() + " is not positive");
-        return d;
+        return notTiny(text, d);
     });
+    /** Attenuation factors, spreads, a light's radius, the aperture: 0 or at least {@link Limits#MIN_MAGNITUDE}. */
     static final ValueType<Double> NON_NEGATIVE = new ValueType<>("a number ≥ 0", text -> {
         double d = number(text);
         if (d < 0) throw new IllegalArgumentException(text.strip() + " is negative");
-        return d;
+        return notTiny(text, d);
     });
     static final ValueType<Integer> INTEGER = new ValueType<>("an integer", ValueType::integer);
     static final ValueType<Integer> POSITIVE_INTEGER = new ValueType<>("an integer ≥ 1", text -> {
@@ -83,9 +86,14 @@ record ValueType<T>(String expected, Parser<T> parser) {
             if (c < 0) throw new IllegalArgumentException("colour component " + format(c) + " is negative");
         return new Color(d[0], d[1], d[2]);
     });
-    /** A coefficient for all three channels ("0.5") or one per channel ("0.5 0.7 0.6"). */
-    static final ValueType<Double3> COEFFICIENTS = new ValueType<>("a number or a triple \"r g b\"", text -> {
+    /**
+     * A coefficient for all three channels ("0.5") or one per channel ("0.5 0.7 0.6"), never
+     * negative: every coefficient of the format (ka, kd, ks, kt, kr) scales light.
+     */
+    static final ValueType<Double3> COEFFICIENTS = new ValueType<>("a number or a triple \"r g b\", each ≥ 0", text -> {
         double[] d = numbers(text, 1, 3);
+        for (double c : d)
+            if (c < 0) throw new IllegalArgumentException("coefficient " + format(c) + " is negative");
         return d.length == 1 ? new Double3(d[0]) : new Double3(d[0], d[1], d[2]);
     });
     /** Two positive numbers "width height", or one for a square. */
@@ -136,7 +144,7 @@ record ValueType<T>(String expected, Parser<T> parser) {
         });
     }
 
-    /** A strict decimal number, finite. */
+    /** A strict decimal number, at most {@link Limits#MAX_MAGNITUDE} in magnitude. */
     static double number(String text) {
         String t = text.strip();
         if (t.isEmpty()) throw new IllegalArgumentException("the value is empty");
@@ -144,6 +152,21 @@ record ValueType<T>(String expected, Parser<T> parser) {
         if (!DECIMAL.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not a number");
         double d = Double.parseDouble(t); // locale-independent by specification
         if (!Double.isFinite(d)) throw new IllegalArgumentException("'" + t + "' is not a finite number (too large)");
+        if (Math.abs(d) > Limits.MAX_MAGNITUDE)
+            throw new IllegalArgumentException(t + " is larger than " + format(Limits.MAX_MAGNITUDE)
+                    + " in magnitude (the limit)");
+        return d;
+    }
+
+    /**
+     * A positive quantity below {@link Limits#MIN_MAGNITUDE} is lost in the precision of the
+     * coordinates it is added to (a view plane 1e-300 away gives rays no direction), or overflows
+     * when inverted (an attenuation 1 / kc).
+     */
+    private static double notTiny(String text, double d) {
+        if (d != 0 && d < Limits.MIN_MAGNITUDE)
+            throw new IllegalArgumentException(text.strip() + " is closer to 0 than 1e-9 (the limit; write 0 for none"
+                    + " where 0 is allowed)");
         return d;
     }
 

@@ -29,6 +29,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Objects;
 import java.util.function.Consumer;
+import java.util.function.UnaryOperator;
 
 import geometries.Cylinder;
 import geometries.Geometry;
@@ -77,12 +78,19 @@ public final class XmlSceneReader {
 
     // Settings validated by the library's own setters, so the rules live in one place.
     private static final ValueType<Integer> THREADS = INTEGER.narrowedBy(
-            "0 (the calling thread), a number of threads, or -2 (all cores)",
+            "0 (the calling thread), a number of threads up to " + Camera.MAX_THREADS_PER_CORE + " per core, or -2 (all cores)",
             n -> Camera.getBuilder().setMultithreading(n));
     private static final ValueType<Integer> ADAPTIVE_DEPTH = INTEGER.narrowedBy("an integer from 1 to 6",
             d -> Camera.getBuilder().setAdaptive(d, 0));
+    private static final ValueType<int[]> AA_GRID = GRID.narrowedBy(GRID.expected() + ", at most "
+            + Camera.MAX_SAMPLES_PER_PIXEL + " samples", g -> Camera.getBuilder().setAntiAliasingGrid(g[0], g[1]));
+    private static final ValueType<Integer> LENS_SAMPLES = POSITIVE_INTEGER.narrowedBy("an integer from 1 to "
+            + Camera.MAX_SAMPLES_PER_PIXEL, n -> Camera.getBuilder().setDepthOfFieldSamples(n));
     private static final ValueType<Integer> SHININESS = INTEGER.narrowedBy("an integer ≥ 0",
             n -> new Material().setShininess(n));
+    private static final ValueType<String> IMAGE_NAME = TEXT.narrowedBy("a file name without /, \\, :, .. or"
+            + " control characters, at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH + " characters (the image goes"
+            + " to images/<name>.png; only the command line's -o chooses another place)", RenderSettings::requireImageName);
 
     private final Path file;
     private final String fileName;
@@ -109,18 +117,39 @@ public final class XmlSceneReader {
 
     /**
      * As {@link #read(Path)}, with the bytes of the scene file and of its meshes taken from
-     * {@code files} (paths and messages are the same as when read from the disk).
+     * {@code files} (paths and messages are the same as when read from the disk). The scene file
+     * is held to {@link Limits#MAX_SCENE_BYTES}, each mesh to {@link Limits#MAX_OBJ_BYTES}.
      *
      * @param file  the scene file as the user named it
      * @param files where the bytes of {@code file} and of the meshes it references come from
      * @return the scene, its view and its settings
      * @throws IOException          when {@code files} cannot give the scene file
-     * @throws SceneFormatException when its content is not a valid scene
+     * @throws SceneFormatException when its content is not a valid scene, or the file is not a
+     *                              regular file or is larger than the limit
      */
     public static LoadedScene read(Path file, FileSource files) throws IOException, SceneFormatException {
         Objects.requireNonNull(file, "file");
         Objects.requireNonNull(files, "files");
-        String text = decodeUtf8(files.readAllBytes(file), file.toString());
+        byte[] content;
+        try {
+            content = files.readAllBytes(file, Limits.MAX_SCENE_BYTES);
+        } catch (FileSource.RefusedFileException e) {
+            throw new SceneFormatException(file.toString(), 0, 0, e.reason()
+                    + " (expected an XML scene file within the limit; meshes go in OBJ files)");
+        }
+        return parse(content, file, files);
+    }
+
+    /**
+     * Reads a scene file's content as if it were at {@code file} (for messages and mesh paths);
+     * meshes come from the disk.
+     */
+    static LoadedScene read(byte[] content, Path file) throws SceneFormatException {
+        return parse(content, file, FileSource.DISK);
+    }
+
+    private static LoadedScene parse(byte[] content, Path file, FileSource files) throws SceneFormatException {
+        String text = decodeUtf8(content, file.toString());
         if (text.startsWith("\uFEFF")) text = text.substring(1); // a byte-order mark is not content
         XmlSceneReader reader = new XmlSceneReader(file, files);
         return reader.scene(XmlTreeBuilder.parse(text, reader.fileName));
@@ -159,12 +188,28 @@ public final class XmlSceneReader {
         if ((part = parts.get("ambient-light")) != null) scene.setAmbientLight(ambientLight(part));
         if ((part = parts.get("geometries")) != null) geometries(part, scene);
         if ((part = parts.get("lights")) != null) lights(part, scene);
-        RenderSettings settings = RenderSettings.defaults(scene.name);
-        if ((part = parts.get("image")) != null) settings = image(part, settings);
+        XmlElement image = parts.get("image");
+        RenderSettings settings = RenderSettings.defaults(image != null && image.has("name")
+                ? image.required("name", IMAGE_NAME) : imageNameOf(root, scene.name));
+        if (image != null) settings = image(image, settings);
         if ((part = parts.get("render")) != null) settings = render(part, settings);
         Consumer<Camera.Builder> view = (part = parts.get("camera")) != null ? camera(part, scene) : null;
         return new LoadedScene(scene, view, settings, view != null ? null
                 : root.error("the scene has no <camera> (expected a <camera> element inside <scene> to render it)"));
+    }
+
+    /**
+     * The scene's name as the image's, when no {@code <image name>} is given: it must then be a
+     * plain file name too (see {@link RenderSettings#requireImageName(String)}).
+     */
+    private static String imageNameOf(XmlElement root, String sceneName) throws SceneFormatException {
+        try {
+            return RenderSettings.requireImageName(sceneName);
+        } catch (IllegalArgumentException ex) {
+            String reason = "the scene name names the image: " + ex.getMessage() + " (expected " + IMAGE_NAME.expected()
+                    + ", or an <image name=\"…\">)";
+            throw root.has("name") ? root.errorAt("name", reason, ex) : root.error(reason, ex);
+        }
     }
 
     /** The scene's name when the file gives none: the file name without its extension. */
@@ -246,6 +291,13 @@ public final class XmlSceneReader {
         e.ifPresent("kl", NON_NEGATIVE, light::setKl);
         e.ifPresent("kq", NON_NEGATIVE, light::setKq);
         e.ifPresent("radius", NON_NEGATIVE, light::setRadius);
+        try {
+            light.validate(); // checked here, not when rendering, to report it at its place
+        } catch (IllegalArgumentException ex) {
+            String at = e.has("kc") ? "kc" : e.has("kl") ? "kl" : "kq";
+            String reason = "invalid <" + e.name() + ">: " + ex.getMessage() + " (expected kc, kl and kq ≥ 0, not all 0)";
+            throw e.has(at) ? e.errorAt(at, reason, ex) : e.error(reason, ex);
+        }
     }
 
     // ---------------------------------------------------------------- geometries
@@ -333,7 +385,12 @@ public final class XmlSceneReader {
         try {
             // Decoded as ObjReader.read(Path) does: UTF-8, malformed bytes replaced (only comments
             // and names may hold them, and those are ignored).
-            byte[] bytes = files.readAllBytes(obj);
+            byte[] bytes;
+            try {
+                bytes = files.readAllBytes(obj, Limits.MAX_OBJ_BYTES);
+            } catch (FileSource.RefusedFileException refused) {
+                throw new ObjFormatException(obj.toString(), 0, refused.reason());
+            }
             return ObjReader.read(new InputStreamReader(new ByteArrayInputStream(bytes), StandardCharsets.UTF_8),
                     obj.toString());
         } catch (ObjFormatException ex) {
@@ -385,7 +442,7 @@ public final class XmlSceneReader {
     private static RenderSettings image(XmlElement e, RenderSettings s) throws SceneFormatException {
         e.allowAttributes(List.of("name", "width", "height", "grid-interval", "grid-color"));
         noChildren(e);
-        String name = e.optional("name", TEXT, s.imageName());
+        String name = e.optional("name", IMAGE_NAME, s.imageName());
         int width = e.optional("width", POSITIVE_INTEGER, s.width());
         int height = e.optional("height", POSITIVE_INTEGER, s.height());
         try {
@@ -400,27 +457,52 @@ public final class XmlSceneReader {
 
     private static RenderSettings render(XmlElement e, RenderSettings s) throws SceneFormatException {
         e.allowAttributes(List.of("threads", "seed", "bvh", "beam-size", "shadow-samples"));
-        s = s.withThreads(e.optional("threads", THREADS, s.threads())).withSeed(e.optional("seed", LONG, s.seed()))
-                .withTracer(e.optional("bvh", BOOLEAN, s.bvh()), e.optional("beam-size", POSITIVE_INTEGER, s.beamSize()),
-                        e.optional("shadow-samples", POSITIVE_INTEGER, s.shadowSamples()));
+        int threads = e.optional("threads", THREADS, s.threads());
+        long seed = e.optional("seed", LONG, s.seed());
+        boolean bvh = e.optional("bvh", BOOLEAN, s.bvh());
+        int beam = e.optional("beam-size", POSITIVE_INTEGER, s.beamSize());
+        int shadows = e.optional("shadow-samples", POSITIVE_INTEGER, s.shadowSamples());
+        s = withinBudget(e, e.has("beam-size") ? "beam-size" : "shadow-samples", s.withThreads(threads).withSeed(seed),
+                r -> r.withTracer(bvh, beam, shadows));
         Map<String, XmlElement> parts = uniqueChildren(e, RENDER_CHILDREN);
         XmlElement aa = parts.get("anti-aliasing");
         if (aa != null) {
             aa.allowAttributes(List.of("mode", "grid", "depth", "threshold"));
             noChildren(aa);
-            int[] grid = aa.optional("grid", GRID, new int[] { s.aaColumns(), s.aaRows() });
-            s = s.withAntiAliasing(aa.required("mode", ValueType.enumeration(AntiAliasing.class)))
-                    .withAntiAliasingParameters(grid[0], grid[1], aa.optional("depth", ADAPTIVE_DEPTH, s.adaptiveDepth()),
-                            aa.optional("threshold", NON_NEGATIVE, s.adaptiveThreshold()));
+            int[] grid = aa.optional("grid", AA_GRID, new int[] { s.aaColumns(), s.aaRows() });
+            AntiAliasing mode = aa.required("mode", ValueType.enumeration(AntiAliasing.class));
+            int depth = aa.optional("depth", ADAPTIVE_DEPTH, s.adaptiveDepth());
+            double threshold = aa.optional("threshold", NON_NEGATIVE, s.adaptiveThreshold());
+            String at = mode == AntiAliasing.RANDOM ? "grid" : mode == AntiAliasing.ADAPTIVE ? "depth" : "mode";
+            s = withinBudget(aa, at, s, r -> r.withAntiAliasing(mode)
+                    .withAntiAliasingParameters(grid[0], grid[1], depth, threshold));
         }
         XmlElement dof = parts.get("depth-of-field");
         if (dof != null) {
             dof.allowAttributes(List.of("focal-distance", "aperture", "samples"));
             noChildren(dof);
-            s = s.withDepthOfField(dof.required("focal-distance", POSITIVE), dof.required("aperture", NON_NEGATIVE),
-                    dof.optional("samples", POSITIVE_INTEGER, s.dofSamples()));
+            double focalDistance = dof.required("focal-distance", POSITIVE);
+            double aperture = dof.required("aperture", NON_NEGATIVE);
+            int samples = dof.optional("samples", LENS_SAMPLES, s.dofSamples());
+            s = withinBudget(dof, "samples", s, r -> r.withDepthOfField(focalDistance, aperture, samples));
         }
         return s;
+    }
+
+    /**
+     * {@code change} applied to {@code s}; a ray budget it exceeds (see
+     * {@link RenderSettings#MAX_RAYS_PER_PIXEL}) is reported at {@code attribute} of {@code e}, or
+     * at {@code e} when the attribute is not written (a default made the product too large).
+     */
+    private static RenderSettings withinBudget(XmlElement e, String attribute, RenderSettings s,
+            UnaryOperator<RenderSettings> change) throws SceneFormatException {
+        try {
+            return change.apply(s);
+        } catch (IllegalArgumentException ex) {
+            String reason = "invalid <" + e.name() + ">: " + ex.getMessage() + " (expected samples per pixel × beam-size"
+                    + " × shadow-samples at most " + RenderSettings.MAX_RAYS_PER_PIXEL + ")";
+            throw e.has(attribute) ? e.errorAt(attribute, reason, ex) : e.error(reason, ex);
+        }
     }
 
     /**
@@ -462,11 +544,22 @@ public final class XmlSceneReader {
         // Camera.build()'s: a probe runs them with a 1x1 image and a tracer that is never prepared.
         Camera.Builder probe = Camera.getBuilder();
         view.accept(probe);
+        Camera built;
         try {
-            probe.setImageWriter(new ImageWriter("probe", 1, 1)).setRayTracer(new RayTracerBasic(scene)).build();
+            built = probe.setImageWriter(new ImageWriter("probe", 1, 1)).setRayTracer(new RayTracerBasic(scene)).build();
         } catch (IllegalArgumentException ex) {
             throw e.error("invalid <camera>: " + ex.getMessage()
                     + " (expected a target away from the location and an up not along the view direction)", ex);
+        }
+        // The rays through the view plane's centre and quarters: a view plane too near or too
+        // small for the location's precision gives them no direction (the zero vector).
+        try {
+            built.constructRay(1, 1, 0, 0);
+            for (int i = 0; i < 2; ++i)
+                for (int j = 0; j < 2; ++j) built.constructRay(2, 2, j, i);
+        } catch (IllegalArgumentException ex) {
+            throw e.errorAt("vp-distance", "invalid <camera>: no ray through the view plane: " + ex.getMessage()
+                    + " (expected a view plane whose distance and size are not lost in the precision of the location)", ex);
         }
         return view;
     }

@@ -23,8 +23,8 @@ import org.xml.sax.helpers.DefaultHandler;
 /**
  * Parses scene-file text with the JDK's SAX parser into {@link XmlElement}s that know their
  * position. Hardened against hostile files: DOCTYPE declarations (and with them every external
- * entity, external DTD and entity-expansion bomb) are refused, XInclude is off, and the JDK's
- * secure-processing limits apply. Parser messages are requested in the base (English) language so
+ * entity, external DTD and entity-expansion bomb) are refused, XInclude is off, the JDK's
+ * secure-processing limits apply, and elements nest at most {@link Limits#MAX_NESTING_DEPTH} deep. Parser messages are requested in the base (English) language so
  * that the one-line error does not depend on the machine's locale.
  */
 final class XmlTreeBuilder extends DefaultHandler {
@@ -130,6 +130,9 @@ final class XmlTreeBuilder extends DefaultHandler {
         Map<String, String> map = new LinkedHashMap<>();
         for (int i = 0; i < attributes.getLength(); ++i) map.put(attributes.getQName(i), attributes.getValue(i));
         XmlElement element = new XmlElement(qName, map, source, file, start);
+        if (open.size() >= Limits.MAX_NESTING_DEPTH)
+            throw new SAXException(element.error("<" + qName + "> is nested " + (open.size() + 1)
+                    + " elements deep (expected at most " + Limits.MAX_NESTING_DEPTH + ", the limit)"));
         if (open.isEmpty()) root = element;
         else open.peek().addChild(element);
         open.push(element);

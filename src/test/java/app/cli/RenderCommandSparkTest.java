@@ -26,8 +26,11 @@ import renderer.ImageWriter;
  * command without {@code --spark}. Each Spark run starts and stops its own context.
  */
 class RenderCommandSparkTest {
-    /** Where the frames test's images go (frames are written to images/&lt;image name&gt;.png). */
-    private static final Path FRAMES = ImageWriter.IMAGES.resolve("spark-test");
+    /**
+     * The prefix of the image names: frames are written to images/&lt;image name&gt;.png (an image
+     * name is a name, not a path), and removed after each test.
+     */
+    private static final String PREFIX = "spark-test-";
 
     @TempDir
     Path dir;
@@ -60,7 +63,7 @@ class RenderCommandSparkTest {
                         <point-light color="300 300 300" position="20 30 0" radius="3"/>
                     </lights>
                     <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="40 20" vp-distance="25"/>
-                    <image name="spark-test/%s" width="70" height="35"/>
+                    <image name="spark-test-%s" width="70" height="35"/>
                     <render threads="1" beam-size="3" shadow-samples="3" seed="%d">
                         <anti-aliasing mode="random" grid="2 3"/>
                     </render>
@@ -69,13 +72,14 @@ class RenderCommandSparkTest {
         return file;
     }
 
+    private static Path frame(String name) {
+        return ImageWriter.IMAGES.resolve(PREFIX + name + ".png");
+    }
+
     @AfterEach
     void removeFrames() throws IOException {
-        if (Files.isDirectory(FRAMES))
-            try (var files = Files.list(FRAMES)) {
-                for (Path f : files.toList()) Files.delete(f);
-            }
-        Files.deleteIfExists(FRAMES);
+        for (String name : List.of("one", "a", "b", "good"))
+            Files.deleteIfExists(frame(name));
     }
 
     @Test
@@ -87,8 +91,8 @@ class RenderCommandSparkTest {
         assertThat(local.exitCode()).isZero();
         assertThat(spark.exitCode()).as(spark.err()).isZero();
         assertThat(Files.readAllBytes(dir.resolve("spark.png"))).isEqualTo(Files.readAllBytes(dir.resolve("local.png")));
-        assertThat(spark.out()).contains("spark render spark-test/one: 100.0%  2/2 tiles")
-                .contains("spark render spark-test/one 70x35 [RANDOM 2x3, ").contains("1 executor, 2 tasks, 0 retries")
+        assertThat(spark.out()).contains("spark render spark-test-one: 100.0%  2/2 tiles")
+                .contains("spark render spark-test-one 70x35 [RANDOM 2x3, ").contains("1 executor, 2 tasks, 0 retries")
                 .contains("wrote " + dir.resolve("spark.png"));
         assertThat(spark.err()).isEmpty();
     }
@@ -102,7 +106,7 @@ class RenderCommandSparkTest {
         assertThat(spark.out()).contains("spark render 2 frames: 100.0%  2/2 tiles");
         for (Path scene : List.of(a, b)) {
             String name = scene.getFileName().toString().replace(".xml", "");
-            Path png = FRAMES.resolve(name + ".png");
+            Path png = frame(name);
             Path local = dir.resolve(name + "-local.png");
             assertThat(run(scene.toString(), "--width", "20", "-o", local.toString()).exitCode()).isZero();
             assertThat(Files.readAllBytes(png)).as(name).isEqualTo(Files.readAllBytes(local));
@@ -121,7 +125,7 @@ class RenderCommandSparkTest {
         assertThat(spark.exitCode()).isEqualTo(2);
         assertThat(spark.err()).isEqualTo(local.err()).startsWith(bad + ":3:").hasLineCount(1);
         assertThat(spark.out()).as("no progress, no summary: no task ran").isEmpty();
-        assertThat(FRAMES.resolve("good.png")).doesNotExist();
+        assertThat(frame("good")).doesNotExist();
     }
 
     @Test

@@ -1,19 +1,14 @@
 package app.cli;
 
+import static app.cli.Cli.run;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.awt.image.BufferedImage;
-import java.io.ByteArrayOutputStream;
-import java.io.File;
 import java.io.IOException;
-import java.io.PrintStream;
-import java.net.URISyntaxException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -29,7 +24,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
-import picocli.CommandLine;
+import app.cli.Cli.Run;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Model.OptionSpec;
 import primitives.Vector;
@@ -44,29 +39,8 @@ import scene.samples.Showcase;
  * tiny; every image goes to the test's temporary folder.
  */
 class RenderCommandTest {
-    /** The jar's Main-Class (pom.xml's main.class). */
-    private static final String MAIN_CLASS = "app.cli.Main";
-
     @TempDir
     Path dir;
-
-    /** What a run printed and returned. */
-    record Run(int exitCode, String out, String err) {
-        List<String> errLines() {
-            return err.lines().toList();
-        }
-    }
-
-    private static Run run(boolean terminal, String... args) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-        int code = RenderCommand.commandLine(new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8), terminal).execute(args);
-        return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
-    }
-
-    private static Run run(String... args) {
-        return run(false, args);
-    }
 
     /**
      * A small lit scene, 40×20 pixels, with a sphere edge against the background and a glossy
@@ -104,23 +78,7 @@ class RenderCommandTest {
 
     /** Runs the jar's entry point in a new JVM with this JVM's Java, the classes and picocli. */
     private Run runJava(String heap, String... args) throws IOException, InterruptedException {
-        String classPath = location(RenderCommand.class) + File.pathSeparator + location(CommandLine.class);
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                heap, "-cp", classPath, MAIN_CLASS));
-        command.addAll(List.of(args));
-        Process process = new ProcessBuilder(command).directory(dir.toFile())
-                .redirectOutput(dir.resolve("stdout.txt").toFile()).redirectError(dir.resolve("stderr.txt").toFile()).start();
-        assertThat(process.waitFor(60, TimeUnit.SECONDS)).as("the command ends").isTrue();
-        return new Run(process.exitValue(), Files.readString(dir.resolve("stdout.txt")),
-                Files.readString(dir.resolve("stderr.txt")));
-    }
-
-    private static String location(Class<?> type) {
-        try {
-            return Path.of(type.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
-        } catch (URISyntaxException e) {
-            throw new IllegalStateException(e);
-        }
+        return Cli.runJava(dir, heap, args);
     }
 
     private static BufferedImage image(Path png) throws IOException {
@@ -341,7 +299,7 @@ class RenderCommandTest {
         @Test
         @DisplayName("without -o the image goes to images/<image name>.png")
         void defaultOutput() throws IOException {
-            String name = "cli-test/default-output";
+            String name = "cli-test-default-output";
             Path expected = ImageWriter.IMAGES.resolve(name + ".png");
             Files.deleteIfExists(expected);
             Run r = run(write("named.xml", SMALL.replace("<image name=\"small\"", "<image name=\"" + name + "\"")).toString(),

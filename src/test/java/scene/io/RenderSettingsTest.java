@@ -16,6 +16,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import primitives.Color;
 import primitives.Point;
@@ -144,6 +145,71 @@ class RenderSettingsTest {
         void accepted(int width, int height) {
             RenderSettings s = RenderSettings.defaults("x").withImage("x", width, height);
             assertThat(new int[] { s.width(), s.height() }).containsExactly(width, height);
+        }
+    }
+
+    @Nested
+    @DisplayName("the ray budget: samples per pixel × beam size × shadow samples at most 2^24")
+    class RayBudget {
+        @ParameterizedTest(name = "{0}")
+        @CsvSource({ "NONE, 1", "CORNERS, 5", "RANDOM, 12", "ADAPTIVE, 289" })
+        @DisplayName("samples per pixel of each mode (ADAPTIVE: its whole lattice at depth 3)")
+        void samplesPerPixel(AntiAliasing mode, long samples) {
+            RenderSettings s = RenderSettings.defaults("x").withAntiAliasingParameters(3, 4, 3, 8).withAntiAliasing(mode);
+            assertThat(s.samplesPerPixel()).isEqualTo(samples);
+        }
+
+        @Test
+        @DisplayName("lens samples count without anti-aliasing")
+        void lensSamples() {
+            assertThat(RenderSettings.defaults("x").withDepthOfField(10, 1, 40).samplesPerPixel()).isEqualTo(40);
+        }
+
+        @Test
+        @DisplayName("up to the budget accepted; one factor more refused, naming every factor")
+        void limit() {
+            RenderSettings grid = RenderSettings.defaults("x").withAntiAliasingParameters(256, 256, 3, 8)
+                    .withAntiAliasing(AntiAliasing.RANDOM);
+            assertThat(grid.withTracer(true, 16, 16).samplesPerPixel() * 16 * 16).isEqualTo(RenderSettings.MAX_RAYS_PER_PIXEL);
+            assertThatThrownBy(() -> grid.withTracer(true, 17, 16)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("RANDOM sampling with 65536 samples per pixel × beam size 17 × 16 shadow samples is 17825792"
+                            + " rays per pixel, more than the limit of 16777216");
+        }
+
+        @Test
+        @DisplayName("factors whose product overflows a long are still refused")
+        void noOverflow() {
+            assertThatThrownBy(() -> RenderSettings.defaults("x").withAntiAliasingParameters(65536, 65536, 3, 8)
+                    .withAntiAliasing(AntiAliasing.RANDOM).withTracer(true, Integer.MAX_VALUE, Integer.MAX_VALUE))
+                    .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("more than the limit of 16777216");
+        }
+    }
+
+    @Nested
+    @DisplayName("the image name is a file name in images/, not a path")
+    class ImageName {
+        @ParameterizedTest(name = "\"{0}\"")
+        @ValueSource(strings = { "/tmp/x", "../../x", "a/b", "a\\b", "c:x", "..", "a..b",
+                "tab\there", " " })
+        @DisplayName("refused")
+        void refused(String name) {
+            assertThatThrownBy(() -> RenderSettings.defaults(name)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessageStartingWith("the image name");
+        }
+
+        @ParameterizedTest(name = "\"{0}\"")
+        @ValueSource(strings = { "x", "two colors", "teapot-1.5", "été" })
+        @DisplayName("accepted")
+        void accepted(String name) {
+            assertThat(RenderSettings.defaults(name).imageName()).isEqualTo(name);
+        }
+
+        @Test
+        @DisplayName("at most 200 characters")
+        void length() {
+            RenderSettings.defaults("x".repeat(RenderSettings.MAX_IMAGE_NAME_LENGTH));
+            assertThatThrownBy(() -> RenderSettings.defaults("x".repeat(201))).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("the image name has 201 characters, more than the limit of 200");
         }
     }
 }

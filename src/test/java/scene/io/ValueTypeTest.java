@@ -25,7 +25,7 @@ class ValueTypeTest {
     class Numbers {
         @ParameterizedTest(name = "\"{0}\" is {1}")
         @CsvSource(delimiter = '|', value = { "50|50", "-0.25|-0.25", "+3|3", "1e-6|0.000001", "2.5E3|2500", ".5|0.5",
-                "5.|5", "'  7  '|7", "-0|0", "1.7976931348623157e308|1.7976931348623157e308" })
+                "5.|5", "'  7  '|7", "-0|0", "1e9|1e9", "-1e9|-1e9", "1e-300|1e-300" })
         void valid(String text, double expected) {
             assertThat(ValueType.number(text)).isEqualTo(expected);
         }
@@ -42,6 +42,30 @@ class ValueTypeTest {
         void nonFinite(String text) {
             assertThatThrownBy(() -> ValueType.number(text)).isInstanceOf(IllegalArgumentException.class)
                     .hasMessageStartingWith("'" + text + "' is not a finite number");
+        }
+
+        @ParameterizedTest(name = "\"{0}\" is beyond the limit")
+        @ValueSource(strings = { "1000000001", "-1e10", "1.7976931348623157e308" })
+        void beyondTheLimit(String text) {
+            assertThatThrownBy(() -> ValueType.number(text)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage(text + " is larger than 1000000000 in magnitude (the limit)");
+        }
+
+        @ParameterizedTest(name = "\"{0}\" is too small for a size or a factor")
+        @ValueSource(strings = { "1e-300", "9.9e-10" })
+        void tooSmall(String text) {
+            assertThatThrownBy(() -> ValueType.POSITIVE.parse(text)).hasMessageStartingWith(text + " is closer to 0 than 1e-9");
+            assertThatThrownBy(() -> ValueType.NON_NEGATIVE.parse(text)).hasMessageStartingWith(text + " is closer to 0 than 1e-9");
+            assertThat(ValueType.NON_NEGATIVE.parse("0")).isZero();
+            assertThat(ValueType.POSITIVE.parse("1e-9")).isEqualTo(1e-9);
+        }
+
+        @ParameterizedTest(name = "\"{0}\"")
+        @ValueSource(strings = { "-0.1", "0.1 -22 0.3" })
+        @DisplayName("a negative coefficient is refused (a fuzzing finding: ka=\"0.1 -22 0.3\" failed in AmbientLight)")
+        void negativeCoefficient(String text) {
+            assertThatThrownBy(() -> ValueType.COEFFICIENTS.parse(text)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessageEndingWith(" is negative");
         }
 
         @Test

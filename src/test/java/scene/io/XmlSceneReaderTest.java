@@ -431,12 +431,12 @@ class XmlSceneReaderTest {
         @DisplayName("every setting is read")
         void everything() throws Exception {
             RenderSettings s = readScene("""
-                    <image name="out/picture" width="64" height="32" grid-interval="8" grid-color="0 255 0"/>
+                    <image name="picture" width="64" height="32" grid-interval="8" grid-color="0 255 0"/>
                     <render threads="3" seed="-42" bvh="false" beam-size="7" shadow-samples="9">
                         <anti-aliasing mode="random" grid="3 5" depth="4" threshold="2.5"/>
                         <depth-of-field focal-distance="900" aperture="5" samples="12"/>
                     </render>""").settings();
-            assertThat(s.imageName()).isEqualTo("out/picture");
+            assertThat(s.imageName()).isEqualTo("picture");
             assertThat(s.width()).isEqualTo(64);
             assertThat(s.height()).isEqualTo(32);
             assertThat(s.gridInterval()).isEqualTo(8);
