@@ -29,9 +29,11 @@ public final class Util {
 
     /**
      * A uniformly distributed number in [min, max) for building scenes (the course's helper, e.g.
-     * to scatter spheres). Unlike the course's {@code Math.random()}, the sequence is reproducible:
-     * it starts from a fixed seed in every JVM, so the n-th call of a run always returns the same
-     * number. The renderer never calls this; its sampling draws from per-pixel streams.
+     * to scatter spheres). Unlike the course's version, which draws from the JDK's shared
+     * unseeded generator, the sequence is reproducible: it starts from a fixed seed in every JVM,
+     * so the n-th call of a run always returns the same number. This is the library's one piece
+     * of static mutable state, which the course's static signature imposes; the renderer never
+     * calls it (its sampling draws from per-pixel streams), so images never depend on it.
      *
      * @param min the smallest value, finite
      * @param max the bound, finite and not below {@code min}; {@code min == max} returns min
