@@ -1,24 +1,20 @@
 package app.cli;
 
+import static app.cli.Cli.run;
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.io.ByteArrayOutputStream;
-import java.io.File;
 import java.io.IOException;
-import java.io.PrintStream;
-import java.net.URISyntaxException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
-import picocli.CommandLine;
+import app.cli.Cli.Run;
+
 import renderer.ImageWriter;
 
 /**
@@ -34,16 +30,6 @@ class RenderCommandSparkTest {
 
     @TempDir
     Path dir;
-
-    record Run(int exitCode, String out, String err) {
-    }
-
-    private static Run run(String... args) {
-        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
-        int code = RenderCommand.commandLine(new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8), false).execute(args);
-        return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
-    }
 
     /** A small scene: a sphere's edge, a glossy floor and a soft shadow, so that sampling shows. */
     private Path scene(String name, int seed) throws IOException {
@@ -155,22 +141,10 @@ class RenderCommandSparkTest {
     @DisplayName("--spark without Spark on the class path (the runnable jar): one line saying how to run it, exit 2")
     void noSparkOnClassPath() throws IOException, InterruptedException {
         Path scene = scene("one", 0);
-        String classPath = location(RenderCommand.class) + File.pathSeparator + location(CommandLine.class);
-        Process process = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
-                classPath, "app.cli.Main", "--spark", "local[2]", scene.toString()).directory(dir.toFile())
-                .redirectOutput(dir.resolve("stdout.txt").toFile()).redirectError(dir.resolve("stderr.txt").toFile()).start();
-        assertThat(process.waitFor(60, TimeUnit.SECONDS)).isTrue();
-        assertThat(process.exitValue()).isEqualTo(2);
-        assertThat(Files.readString(dir.resolve("stderr.txt"))).hasLineCount(1)
+        Run run = Cli.runJava(dir, "-Xmx256m", "--spark", "local[2]", scene.toString());
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).hasLineCount(1)
                 .startsWith("render: --spark needs Apache Spark on the class path").contains("-Pspark", "spark-submit");
         assertThat(dir.resolve("images")).doesNotExist();
-    }
-
-    private static String location(Class<?> type) {
-        try {
-            return Path.of(type.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
-        } catch (URISyntaxException e) {
-            throw new IllegalStateException(e);
-        }
     }
 }
