@@ -13,13 +13,13 @@ import java.util.regex.PatternSyntaxException;
 record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMax, int scalingMax,
                double budgetSeconds, Pattern match, boolean images, boolean help) {
 
-    static final List<String> GROUPS = List.of("teapot", "glossy", "showcase", "aa", "scaling");
+    static final List<String> GROUPS = List.of("teapot", "glossy", "showcase", "aa", "scaling", "build");
 
     static final String USAGE = """
             bench.RenderBenchmark: renders the benchmark scenes and prints a Markdown table.
               --quick            tiny images, 1 timed run: a smoke test of every configuration
               --runs N           timed runs per configuration after the warm-up (default 5)
-              --only G1,G2       groups to run, of teapot, glossy, showcase, aa, scaling (default all)
+              --only G1,G2       groups to run, of teapot, glossy, showcase, aa, scaling, build (default all)
               --match REGEX      only configurations whose "group settings, N threads" line contains a
                                  match, e.g. "teapot BVH" or "beam 50" (handy under a profiler)
               --out FILE         also write the tables to FILE

@@ -82,7 +82,9 @@ public final class RenderBenchmark {
                     m.median(), m.runs(), m.mraysPerSecond());
             results.add(m);
         }
-        return Report.markdown(options, commandLine, machine, Machine.loadAverage(), results);
+        String report = Report.markdown(options, commandLine, machine, Machine.loadAverage(), results);
+        // The build group times Bvh.build alone (no render): its own table after the others.
+        return options.groups().contains("build") ? report + "\n" + BuildBenchmark.markdown(options, log) : report;
     }
 
     private Measurement measure(Configuration c, Scene scene) {

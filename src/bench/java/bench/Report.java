@@ -124,13 +124,13 @@ final class Report {
         s.append("\n| measure | ours | target | met? |\n|---|--:|--:|---|\n");
         bvh2.ifPresent(m -> {
             double rate = m.cameraMraysPerSecond();
-            s.append(String.format(Locale.ROOT, "| teapot camera rays in the full render (shaded, shadows), BVH, 2 threads (Mrays/s) | %.2f | ≥ 15 | %s |%n",
-                    rate, rate >= 15 ? "yes" : "**no**"));
+            s.append(String.format(Locale.ROOT, "| teapot camera rays in the full render (shaded, shadows), BVH, 2 threads (Mrays/s) | %.2f | ≥ 12 | %s |%n",
+                    rate, rate >= 12 ? "yes" : "**no**"));
         });
         find(results, c -> c.group().equals("teapot") && c.width() == 1000 && primary.test(c) && c.threads() == 2).ifPresent(m -> {
             double rate = m.cameraMraysPerSecond();
-            s.append(String.format(Locale.ROOT, "| teapot primary rays, tracing core only (closest hit, no shading), 2 threads (Mrays/s) | %.2f | ≥ 15 | %s |%n",
-                    rate, rate >= 15 ? "yes" : "**no**"));
+            s.append(String.format(Locale.ROOT, "| teapot primary rays, tracing core only (closest hit, no shading), 2 threads (Mrays/s) | %.2f | ≥ 18.5 | %s |%n",
+                    rate, rate >= 18.5 ? "yes" : "**no**"));
             s.append(String.format(Locale.ROOT, "| … as a fraction of Embree's ~37 Mrays/s primary rays (within 2× = ≥ 0.50) | %.2f | ≥ 0.50 | %s |%n",
                     rate / 37, rate / 37 >= 0.5 ? "yes" : "**no**"));
         });
@@ -147,6 +147,18 @@ final class Report {
         if (flat2.isPresent() && bvh2.isPresent())
             s.append(String.format(Locale.ROOT, "| teapot 2 threads: BVH vs flat (speed-up) | %.1f | – | – |%n",
                     flat2.get().median() / bvh2.get().median()));
+        // Every other configuration rendered on 1 and on 2 threads: the second thread's speed-up.
+        for (Measurement two : results) {
+            Configuration c2 = two.config();
+            if (c2.threads() != 2 || c2.group().equals("teapot")) continue;
+            find(results, c -> c.threads() == 1 && c.group().equals(c2.group()) && c.sceneKey().equals(c2.sceneKey())
+                    && c.settings().equals(c2.settings()) && c.width() == c2.width() && c.height() == c2.height()
+                    && c.bvh() == c2.bvh()).ifPresent(one -> {
+                        double speedup = one.median() / two.median();
+                        s.append(String.format(Locale.ROOT, "| %s %s %s: 2 threads vs 1 (speed-up) | %.2f | ≥ 1.8 | %s |%n",
+                                c2.group(), c2.resolution(), c2.settings(), speedup, speedup >= 1.8 ? "yes" : "**no**"));
+                    });
+        }
         Optional<Measurement> k3 = find(results, c -> c.group().equals("scaling") && c.bvh() && c.primitives() == 2000);
         Optional<Measurement> m6 = find(results, c -> c.group().equals("scaling") && c.bvh() && c.primitives() == 2_000_000);
         if (k3.isPresent() && m6.isPresent()) {

@@ -2,6 +2,8 @@ package geometries;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.ForkJoinPool;
+import java.util.concurrent.RecursiveAction;
 
 import primitives.Point;
 import primitives.Ray;
@@ -26,6 +28,11 @@ public final class Bvh extends Intersectable {
     private static final double TRAVERSAL_COST = 1.0;
     /** Nodes with more primitives than this are binned along their widest axis only. */
     private static final int FULL_SEARCH_LIMIT = 1 << 16;
+    /**
+     * Subtrees over more primitives than this are built as parallel tasks; smaller ones are not
+     * worth a task (about 0.1 ms of work).
+     */
+    private static final int FORK_ABOVE = 4096;
 
     /** The leaves this tree indexes, as collected: what it contributes to a tree built around it. */
     private final Intersectable[] leaves;
@@ -46,15 +53,36 @@ public final class Bvh extends Intersectable {
     /**
      * Indexes the leaves of {@code geometries} as they are now: geometries added later are not in
      * the tree, so build it after the scene is complete (the renderer does, once per render).
+     * Builds on every available processor; the tree does not depend on how many.
      *
      * @param geometries the scene's geometries; bounded leaves go into the tree
      * @return the hierarchy, immutable, safe to share between render threads
      */
     public static Bvh build(Geometries geometries) {
-        return new Bvh(geometries);
+        return build(geometries, Runtime.getRuntime().availableProcessors());
     }
 
-    private Bvh(Geometries geometries) {
+    /**
+     * Indexes the leaves of {@code geometries} as they are now, building subtrees of large scenes
+     * in parallel. The tree is the same for every {@code parallelism}: the same nodes, boxes and
+     * primitive order, hence the same answers in the same order.
+     *
+     * @param geometries  the scene's geometries; bounded leaves go into the tree
+     * @param parallelism the number of threads the build may use; 1 builds on the calling thread
+     * @return the hierarchy, immutable, safe to share between render threads
+     * @throws IllegalArgumentException when {@code parallelism < 1}
+     */
+    public static Bvh build(Geometries geometries, int parallelism) {
+        return build(geometries, parallelism, FORK_ABOVE);
+    }
+
+    /** As {@link #build(Geometries, int)}, forking subtrees over more than {@code forkAbove} primitives. */
+    static Bvh build(Geometries geometries, int parallelism, int forkAbove) {
+        if (parallelism < 1) throw new IllegalArgumentException("parallelism must be at least 1, got " + parallelism);
+        return new Bvh(geometries, parallelism, Math.max(1, forkAbove));
+    }
+
+    private Bvh(Geometries geometries, int parallelism, int forkAbove) {
         List<Intersectable> leaves = new ArrayList<>();
         geometries.collectLeaves(leaves);
         List<Intersectable> free = new ArrayList<>();
@@ -66,7 +94,7 @@ public final class Bvh extends Intersectable {
         this.leaves = leaves.toArray(new Intersectable[0]);
         unbounded = free.toArray(new Intersectable[0]);
 
-        Builder b = new Builder(total);
+        Builder b = new Builder(total, parallelism, forkAbove);
         for (Intersectable leaf : leaves) {
             if (leaf.getBoundingBox() == null) continue;
             for (int i = 0, n = leaf.primitiveCount(); i < n; ++i) b.addPrimitive(leaf, i, leaf.primitiveBounds(i));
@@ -75,14 +103,25 @@ public final class Bvh extends Intersectable {
         owner = b.orderedOwner;
         prim = b.orderedPrim;
         nodeCount = b.nodes;
-        node = new double[nodeCount * NODE];
-        for (int i = 0; i < nodeCount; ++i) {
-            System.arraycopy(b.box, i * 6, node, i * NODE, 6);
-            node[i * NODE + 6] = b.firstOrRight[i];
-            node[i * NODE + 7] = b.count[i];
-        }
-        skip = java.util.Arrays.copyOf(b.skip, nodeCount);
+        node = b.node;
+        skip = b.skip;
         depth = b.maxDepth + 1;
+    }
+
+    /**
+     * Whether {@code other} is the same tree as this one: the same nodes (boxes bit for bit, links)
+     * over the same primitives in the same leaf order. For the tests of the build's determinism.
+     */
+    boolean sameTreeAs(Bvh other) {
+        if (!java.util.Arrays.equals(node, other.node) || !java.util.Arrays.equals(skip, other.skip)
+                || !java.util.Arrays.equals(prim, other.prim) || owner.length != other.owner.length
+                || unbounded.length != other.unbounded.length || depth != other.depth)
+            return false;
+        for (int i = 0; i < owner.length; ++i)
+            if (owner[i] != other.owner[i]) return false;
+        for (int i = 0; i < unbounded.length; ++i)
+            if (unbounded[i] != other.unbounded[i]) return false;
+        return true;
     }
 
     /** @return the number of nodes in the tree (0 when nothing is bounded) */
@@ -243,33 +282,56 @@ public final class Bvh extends Intersectable {
         return new BoundingBox(node[0], node[1], node[2], node[3], node[4], node[5]);
     }
 
-    /** The top-down binned-SAH builder; its arrays become the tree's. */
+    /**
+     * The top-down binned-SAH builder. The primitives' bounds and centroids are kept in slot order
+     * (the order the leaves will list them in) and moved with every partition, so that binning a
+     * node reads one contiguous range instead of gathering through a permutation. Subtrees over
+     * more than {@link #forkAbove} primitives are built as fork/join tasks.
+     *
+     * <p>Deterministic whatever the parallelism: a node's split depends only on the primitives of
+     * its range, the partition is stable, and every subtree writes into node slots reserved for it
+     * in advance (a subtree over n primitives has at most 2n − 1 nodes, so the right child of a
+     * node whose left child covers nL primitives goes to slot {@code node + 2·nL}). A final
+     * sequential pass renumbers the slots depth-first, the layout the walks expect.
+     */
     private static final class Builder {
         private final Intersectable[] owners;
         private final int[] prims;
-        private final double[] bounds; // 6 per primitive
-        private final double[] centroid; // 3 per primitive
+        private final int total;
+        private final int parallelism;
+        private final int forkAbove;
         private int added;
-        private int[] order; // primitive ids, permuted into leaf order
+        // Per slot, in slot order: the primitive id, its padded bounds (6) and its centroid (3).
+        private int[] order;
+        private double[] bounds;
+        private double[] centroid;
+        // The stable partition's buffers for the right part, indexed by slot like the arrays above
+        // so that concurrent subtrees never share a region.
+        private int[] scratchOrder;
+        private double[] scratchBounds;
+        private double[] scratchCentroid;
+        // Per reserved node slot: the box (6), the primitive count (> 0 for a leaf) and for a leaf
+        // its first slot, for an inner node the primitive count of its left child; the number of
+        // nodes of the subtree rooted there.
+        private double[] slotBox;
+        private int[] slotCount;
+        private int[] slotFirstOrLeft;
+        private int[] slotSize;
 
         Intersectable[] orderedOwner;
         int[] orderedPrim;
-        double[] box;
-        int[] firstOrRight;
-        int[] count;
+        double[] node;
         int[] skip;
         int nodes;
         int maxDepth;
-        // Scratch reused by every node of the build.
-        private int[] scratch;
-        private final int[] binCount = new int[BINS];
-        private final double[] binBox = new double[BINS * 6];
-        private final double[] rightArea = new double[BINS];
-        private final double[] acc = new double[6];
 
-        Builder(int total) {
+        Builder(int total, int parallelism, int forkAbove) {
+            this.total = total;
+            this.parallelism = parallelism;
+            this.forkAbove = forkAbove;
             owners = new Intersectable[total];
             prims = new int[total];
+            order = new int[total];
             bounds = new double[total * 6];
             centroid = new double[total * 3];
         }
@@ -278,6 +340,7 @@ public final class Bvh extends Intersectable {
             int i = added++;
             owners[i] = leaf;
             prims[i] = index;
+            order[i] = i;
             BoundingBox p = b.padded();
             int o = i * 6;
             bounds[o] = p.minX;
@@ -292,16 +355,36 @@ public final class Bvh extends Intersectable {
         }
 
         void build() {
-            int n = added;
-            order = new int[n];
-            scratch = new int[n];
-            for (int i = 0; i < n; ++i) order[i] = i;
+            int n = total;
+            scratchOrder = new int[n];
+            scratchBounds = new double[n * 6];
+            scratchCentroid = new double[n * 3];
             int capacity = Math.max(1, 2 * n);
-            box = new double[capacity * 6];
-            firstOrRight = new int[capacity];
-            count = new int[capacity];
-            skip = new int[capacity];
-            if (n > 0) buildNode(0, n, 0);
+            slotBox = new double[capacity * 6];
+            slotCount = new int[capacity];
+            slotFirstOrLeft = new int[capacity];
+            slotSize = new int[capacity];
+            if (n > 0) {
+                Subtree root = new Subtree(0, n, 0, 0);
+                if (parallelism > 1 && n > forkAbove) {
+                    ForkJoinPool pool = new ForkJoinPool(parallelism);
+                    try {
+                        pool.invoke(root);
+                    } finally {
+                        pool.shutdown();
+                    }
+                } else {
+                    root.compute();
+                }
+                maxDepth = root.maxLevel;
+            }
+            // The build's buffers are garbage from here on: let them go before the node array is made.
+            scratchOrder = null;
+            scratchBounds = null;
+            scratchCentroid = null;
+            bounds = null;
+            centroid = null;
+            flatten(n);
             orderedOwner = new Intersectable[n];
             orderedPrim = new int[n];
             for (int i = 0; i < n; ++i) {
@@ -310,14 +393,99 @@ public final class Bvh extends Intersectable {
             }
         }
 
-        /** Builds the subtree over order[start, end) and returns its node index. */
-        private int buildNode(int start, int end, int level) {
-            int node = nodes++;
-            if (level > maxDepth) maxDepth = level;
+        /** Renumbers the reserved slots depth-first (left child next) into the packed node records. */
+        private void flatten(int n) {
+            nodes = n == 0 ? 0 : slotSize[0];
+            node = new double[nodes * NODE];
+            skip = new int[nodes];
+            if (n == 0) return;
+            int[] stack = new int[2 * (maxDepth + 2)];
+            int top = 0;
+            stack[top++] = 0; // slot
+            stack[top++] = 0; // its depth-first index
+            while (top > 0) {
+                int f = stack[--top], s = stack[--top];
+                System.arraycopy(slotBox, s * 6, node, f * NODE, 6);
+                int count = slotCount[s];
+                skip[f] = f + slotSize[s];
+                if (count > 0) {
+                    node[f * NODE + 6] = slotFirstOrLeft[s];
+                    node[f * NODE + 7] = count;
+                } else {
+                    int left = s + 1, right = s + 2 * slotFirstOrLeft[s];
+                    int rightIndex = f + 1 + slotSize[left];
+                    node[f * NODE + 6] = rightIndex;
+                    node[f * NODE + 7] = 0;
+                    stack[top++] = right;
+                    stack[top++] = rightIndex;
+                    stack[top++] = left;
+                    stack[top++] = f + 1;
+                }
+            }
+        }
+
+        /** The subtree over slots [start, end), rooted at node slot {@code slot}. */
+        private final class Subtree extends RecursiveAction {
+            private static final long serialVersionUID = 1L;
+            private final int start;
+            private final int end;
+            private final int level;
+            private final int slot;
+            /** The deepest level reached in this subtree, once computed. */
+            int maxLevel;
+
+            Subtree(int start, int end, int level, int slot) {
+                this.start = start;
+                this.end = end;
+                this.level = level;
+                this.slot = slot;
+            }
+
+            @Override
+            protected void compute() {
+                Binner binner = new Binner();
+                if (end - start <= forkAbove || parallelism <= 1) {
+                    maxLevel = buildNode(binner, start, end, level, slot);
+                    return;
+                }
+                int mid = split(binner, start, end, slot);
+                if (mid < 0) {
+                    maxLevel = level;
+                    return;
+                }
+                Subtree left = new Subtree(start, mid, level + 1, slot + 1);
+                Subtree right = new Subtree(mid, end, level + 1, slot + 2 * (mid - start));
+                invokeAll(left, right);
+                slotSize[slot] = 1 + slotSize[left.slot] + slotSize[right.slot];
+                maxLevel = Math.max(left.maxLevel, right.maxLevel);
+            }
+        }
+
+        /**
+         * Builds the subtree over slots [start, end) at node slot {@code slot}, sequentially.
+         *
+         * @return the deepest level reached
+         */
+        private int buildNode(Binner binner, int start, int end, int level, int slot) {
+            int mid = split(binner, start, end, slot);
+            if (mid < 0) return level;
+            int right = slot + 2 * (mid - start);
+            int deepest = Math.max(buildNode(binner, start, mid, level + 1, slot + 1),
+                    buildNode(binner, mid, end, level + 1, right));
+            slotSize[slot] = 1 + slotSize[slot + 1] + slotSize[right];
+            return deepest;
+        }
+
+        /**
+         * Writes node {@code slot}'s box and decides it: a leaf (recorded here, size 1; returns −1)
+         * or a split, whose partition of [start, end) it performs and whose middle it returns.
+         */
+        private int split(Binner binner, int start, int end, int slot) {
             double bx0 = Double.POSITIVE_INFINITY, by0 = bx0, bz0 = bx0, bx1 = Double.NEGATIVE_INFINITY, by1 = bx1, bz1 = bx1;
             double cx0 = bx0, cy0 = bx0, cz0 = bx0, cx1 = bx1, cy1 = bx1, cz1 = bx1;
+            double[] bounds = this.bounds, centroid = this.centroid;
             for (int i = start; i < end; ++i) {
-                int p = order[i], o = p * 6, c = p * 3;
+                int o = i * 6, c = i * 3;
                 if (bounds[o] < bx0) bx0 = bounds[o];
                 if (bounds[o + 1] < by0) by0 = bounds[o + 1];
                 if (bounds[o + 2] < bz0) bz0 = bounds[o + 2];
@@ -331,13 +499,13 @@ public final class Bvh extends Intersectable {
                 if (centroid[c + 1] > cy1) cy1 = centroid[c + 1];
                 if (centroid[c + 2] > cz1) cz1 = centroid[c + 2];
             }
-            int o = node * 6;
-            box[o] = bx0;
-            box[o + 1] = by0;
-            box[o + 2] = bz0;
-            box[o + 3] = bx1;
-            box[o + 4] = by1;
-            box[o + 5] = bz1;
+            int o = slot * 6;
+            slotBox[o] = bx0;
+            slotBox[o + 1] = by0;
+            slotBox[o + 2] = bz0;
+            slotBox[o + 3] = bx1;
+            slotBox[o + 4] = by1;
+            slotBox[o + 5] = bz1;
             int n = end - start;
             // Binned SAH over every axis whose centroids spread; for very large nodes only along
             // the widest one (as pbrt does), a third of the work for trees of nearly the same
@@ -346,34 +514,39 @@ public final class Bvh extends Intersectable {
             double[] extentOf = { cx1 - cx0, cy1 - cy0, cz1 - cz0 };
             double[] lowOf = { cx0, cy0, cz0 };
             int widest = extentOf[0] >= extentOf[1] && extentOf[0] >= extentOf[2] ? 0 : extentOf[1] >= extentOf[2] ? 1 : 2;
-            int mid = -1;
+            double parentArea = (bx1 - bx0) * (by1 - by0) + (by1 - by0) * (bz1 - bz0) + (bz1 - bz0) * (bx1 - bx0);
+            boolean[] searched = binner.searched;
+            for (int a = 0; a < 3; ++a)
+                searched[a] = n > 1 && extentOf[a] > 0 && (n <= FULL_SEARCH_LIMIT || a == widest);
+            binner.bin(bounds, centroid, start, end, lowOf, extentOf);
             double bestCost = Double.POSITIVE_INFINITY;
             int bestBin = -1, bestAxis = -1;
-            double parentArea = (bx1 - bx0) * (by1 - by0) + (by1 - by0) * (bz1 - bz0) + (bz1 - bz0) * (bx1 - bx0);
-            for (int a = 0; a < 3 && n > 1; ++a) {
-                if (!(extentOf[a] > 0) || (n > FULL_SEARCH_LIMIT && a != widest)) continue;
-                java.util.Arrays.fill(binCount, 0);
-                for (int k = 0; k < BINS; ++k) resetBox(binBox, k);
-                double lo = lowOf[a], scale = BINS / extentOf[a];
-                for (int i = start; i < end; ++i) {
-                    int p = order[i];
-                    int k = bin(centroid[p * 3 + a], lo, scale);
-                    binCount[k]++;
-                    growBox(binBox, k, bounds, p);
-                }
-                // Sweep from the right for the areas of every right part, then from the left.
+            for (int a = 0; a < 3; ++a) {
+                if (!searched[a]) continue;
+                double[] acc = binner.acc, rightArea = binner.rightArea, binBox = binner.binBox;
+                int[] binCount = binner.binCount;
+                int base = a * BINS;
+                // Sweep from the right for the areas of every right part, then from the left. An
+                // empty bin changes neither part's box nor count, so it is skipped: the areas and
+                // costs are the numbers a sweep over every bin computes, and an empty bin's split
+                // costs exactly what its left neighbour's does, which cannot beat it.
                 resetBox(acc, 0);
+                double area = halfArea(acc, 0);
                 for (int k = BINS - 1; k > 0; --k) {
-                    growBox(acc, 0, binBox, k);
-                    rightArea[k] = halfArea(acc, 0);
+                    if (binCount[base + k] > 0) {
+                        growBox(acc, 0, binBox, base + k);
+                        area = halfArea(acc, 0);
+                    }
+                    rightArea[k] = area;
                 }
                 resetBox(acc, 0);
                 int leftCount = 0;
                 for (int k = 0; k < BINS - 1; ++k) {
-                    growBox(acc, 0, binBox, k);
-                    leftCount += binCount[k];
+                    if (binCount[base + k] == 0) continue;
+                    growBox(acc, 0, binBox, base + k);
+                    leftCount += binCount[base + k];
                     int rightCount = n - leftCount;
-                    if (leftCount == 0 || rightCount == 0) continue;
+                    if (rightCount == 0) continue;
                     double cost = TRAVERSAL_COST + (halfArea(acc, 0) * leftCount + rightArea[k + 1] * rightCount) / parentArea;
                     if (cost < bestCost) {
                         bestCost = cost;
@@ -381,33 +554,89 @@ public final class Bvh extends Intersectable {
                         bestAxis = a;
                     }
                 }
+                binner.clear(a);
             }
-            if (bestBin >= 0 && (bestCost < n || n > MAX_LEAF)) {
-                // Stable partition through the shared scratch buffer: deterministic order.
-                double lo = lowOf[bestAxis], scale = BINS / extentOf[bestAxis];
-                int l = start, r = 0;
-                for (int i = start; i < end; ++i) {
-                    int p = order[i];
-                    if (bin(centroid[p * 3 + bestAxis], lo, scale) <= bestBin) order[l++] = p;
-                    else scratch[r++] = p;
-                }
-                System.arraycopy(scratch, 0, order, l, r);
-                mid = l;
-            }
-            if (mid < 0 && n > MAX_LEAF) {
-                // All centroids coincide: split the range in half to bound the leaf size.
-                mid = start + n / 2;
-            }
+            int mid = -1;
+            if (bestBin >= 0 && (bestCost < n || n > MAX_LEAF))
+                mid = partition(start, end, bestAxis, lowOf[bestAxis], BINS / extentOf[bestAxis], bestBin);
+            // All centroids coincide: split the range in half to bound the leaf size.
+            if (mid < 0 && n > MAX_LEAF) mid = start + n / 2;
             if (mid < 0) {
-                firstOrRight[node] = start;
-                count[node] = n;
+                slotCount[slot] = n;
+                slotFirstOrLeft[slot] = start;
+                slotSize[slot] = 1;
             } else {
-                count[node] = 0;
-                buildNode(start, mid, level + 1);
-                firstOrRight[node] = buildNode(mid, end, level + 1);
+                slotCount[slot] = 0;
+                slotFirstOrLeft[slot] = mid - start;
             }
-            skip[node] = nodes;
-            return node;
+            return mid;
+        }
+
+        /**
+         * Stable partition of slots [start, end): the primitives whose centroid falls in a bin
+         * up to {@code lastLeftBin} along {@code axis} first, each moved with its bounds and
+         * centroid. The right part goes through the scratch buffers' slots [start, end).
+         *
+         * @return the first slot of the right part
+         */
+        private int partition(int start, int end, int axis, double lo, double scale, int lastLeftBin) {
+            int l = start, r = start;
+            for (int i = start; i < end; ++i) {
+                if (bin(centroid[i * 3 + axis], lo, scale) <= lastLeftBin) {
+                    if (l != i) moveSlot(order, bounds, centroid, i, order, bounds, centroid, l);
+                    ++l;
+                } else {
+                    moveSlot(order, bounds, centroid, i, scratchOrder, scratchBounds, scratchCentroid, r++);
+                }
+            }
+            int right = r - start;
+            System.arraycopy(scratchOrder, start, order, l, right);
+            System.arraycopy(scratchBounds, start * 6, bounds, l * 6, right * 6);
+            System.arraycopy(scratchCentroid, start * 3, centroid, l * 3, right * 3);
+            return l;
+        }
+
+        private static void moveSlot(int[] fromOrder, double[] fromBounds, double[] fromCentroid, int from,
+                                     int[] toOrder, double[] toBounds, double[] toCentroid, int to) {
+            toOrder[to] = fromOrder[from];
+            System.arraycopy(fromBounds, from * 6, toBounds, to * 6, 6);
+            System.arraycopy(fromCentroid, from * 3, toCentroid, to * 3, 3);
+        }
+
+        /** One task's bins: per searched axis, BINS counts and boxes, filled in one pass over a range. */
+        private static final class Binner {
+            final boolean[] searched = new boolean[3];
+            final int[] binCount = new int[3 * BINS];
+            final double[] binBox = new double[3 * BINS * 6];
+            final double[] rightArea = new double[BINS];
+            final double[] acc = new double[6];
+
+            Binner() {
+                for (int k = 0; k < 3 * BINS; ++k) resetBox(binBox, k);
+            }
+
+            /** Fills the searched axes' bins, which are empty, from slots [start, end). */
+            void bin(double[] bounds, double[] centroid, int start, int end, double[] lowOf, double[] extentOf) {
+                for (int a = 0; a < 3; ++a) {
+                    if (!searched[a]) continue;
+                    double lo = lowOf[a], scale = BINS / extentOf[a];
+                    int base = a * BINS;
+                    for (int i = start; i < end; ++i) {
+                        int k = base + Bvh.Builder.bin(centroid[i * 3 + a], lo, scale);
+                        binCount[k]++;
+                        growBox(binBox, k, bounds, i);
+                    }
+                }
+            }
+
+            /** Empties axis {@code a}'s bins again (only the used ones need it). */
+            void clear(int a) {
+                for (int k = a * BINS, end = k + BINS; k < end; ++k) {
+                    if (binCount[k] == 0) continue;
+                    binCount[k] = 0;
+                    resetBox(binBox, k);
+                }
+            }
         }
 
         private static int bin(double c, double lo, double scale) {

@@ -179,6 +179,80 @@ class BvhTest {
         }
     }
 
+    /**
+     * Flat boxes (axis-aligned triangles, zero thickness along one axis), nearly point-like spheres
+     * and large triangles, far from the origin (coordinates of a few million, where the boxes'
+     * padding and the slab test's rounding matter).
+     */
+    static Scene degenerateBoxes() {
+        Random rnd = new Random(7);
+        Point c = new Point(3e6, -2e6, 5e6);
+        double half = 20;
+        Geometries g = new Geometries();
+        for (int i = 0; i < 150; ++i) {
+            Point p = RandomScenes.point(rnd, c, half);
+            double a = 1 + 4 * rnd.nextDouble(), b = 1 + 4 * rnd.nextDouble();
+            Geometry shape = switch (i % 3) {
+                case 0 -> new Triangle(p, p.add(new Vector(a, 0, 0)), p.add(new Vector(0, b, 0))); // flat in z
+                case 1 -> new Triangle(p, p.add(new Vector(0, a, 0)), p.add(new Vector(0, 0, b))); // flat in x
+                default -> new Sphere(p, 1e-3 * (1 + rnd.nextDouble())); // nearly a point
+            };
+            g.add(RandomScenes.withMaterial(rnd, shape));
+        }
+        return new Scene("flat and point-like boxes at coordinates of millions", g, c, half);
+    }
+
+    static Stream<Arguments> parallelScenes() {
+        return Stream.concat(randomScenes(), Stream.of(Arguments.of(degenerateBoxes())));
+    }
+
+    @Nested
+    @DisplayName("the parallel build: the same tree on any number of threads")
+    class ParallelBuild {
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#parallelScenes")
+        @DisplayName("1 and 2 threads, forking at every node or above the default size, give the same tree")
+        void sameTree(Scene scene) {
+            Bvh sequential = Bvh.build(scene.geometries(), 1);
+            assertThat(sequential.nodeCount()).isGreaterThan(1);
+            assertThat(Bvh.build(scene.geometries(), 2, 1).sameTreeAs(sequential)).as("2 threads, a task per node").isTrue();
+            assertThat(Bvh.build(scene.geometries(), 2, 16).sameTreeAs(sequential)).as("2 threads, tasks above 16").isTrue();
+            assertThat(Bvh.build(scene.geometries(), 3, 1).sameTreeAs(sequential)).as("3 threads").isTrue();
+            assertThat(Bvh.build(scene.geometries()).sameTreeAs(sequential)).as("the default").isTrue();
+        }
+
+        @Test
+        @DisplayName("a different scene is a different tree (the comparison can fail)")
+        void differentTree() {
+            Scene a = degenerateBoxes();
+            Geometries fewer = new Geometries();
+            a.geometries().getItems().stream().skip(1).forEach(fewer::add);
+            assertThat(Bvh.build(fewer, 2, 1).sameTreeAs(Bvh.build(a.geometries(), 1))).isFalse();
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#parallelScenes")
+        @DisplayName("a tree built with a task per node answers as brute force: closest hits and every occluder")
+        void answersAsBruteForce(Scene scene) {
+            Bvh tree = Bvh.build(scene.geometries(), 2, 1);
+            List<Ray> rays = RandomScenes.rays(new Random(600), RAYS, scene.centre(), scene.half());
+            assertSameClosestHits(tree, scene.geometries(), rays);
+            Random rnd = new Random(601);
+            for (Ray ray : rays.subList(0, 500)) {
+                double max = 3 * scene.half() * rnd.nextDouble();
+                Hits.assertSameVisits(Hits.visited(tree, ray, max), Hits.visited(scene.geometries(), ray, max), 0,
+                        "tree vs flat walk within " + max + " for " + ray);
+            }
+        }
+
+        @Test
+        @DisplayName("parallelism below 1 is rejected, naming the value")
+        void badParallelism() {
+            org.assertj.core.api.Assertions.assertThatIllegalArgumentException()
+                    .isThrownBy(() -> Bvh.build(new Geometries(), 0)).withMessageContaining("0");
+        }
+    }
+
     @Nested
     @DisplayName("degenerate scenes")
     class Degenerate {
