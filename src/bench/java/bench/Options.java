@@ -11,7 +11,7 @@ import java.util.regex.PatternSyntaxException;
 
 /** The command line of {@link RenderBenchmark}; see {@link #USAGE}. */
 record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMax, int scalingMax,
-               double budgetSeconds, Pattern match, boolean images, boolean help) {
+               double budgetSeconds, double warmupSeconds, Pattern match, boolean images, boolean help) {
 
     static final List<String> GROUPS = List.of("teapot", "glossy", "showcase", "aa", "scaling", "build");
 
@@ -19,6 +19,10 @@ record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMa
             bench.RenderBenchmark: renders the benchmark scenes and prints a Markdown table.
               --quick            tiny images, 1 timed run: a smoke test of every configuration
               --runs N           timed runs per configuration after the warm-up (default 5)
+              --warmup S         warm-up renders per configuration until they took S seconds (default 2;
+                                 at least one, at most 20): one render is too few for C2 to finish
+                                 compiling a short render's code, and a 2-thread render, whose
+                                 compiler threads take a core from it, would be measured cold
               --only G1,G2       groups to run, of teapot, glossy, showcase, aa, scaling, build (default all)
               --match REGEX      only configurations whose "group settings, N threads" line contains a
                                  match, e.g. "teapot BVH" or "beam 50" (handy under a profiler)
@@ -35,7 +39,7 @@ record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMa
     static Options parse(String... args) {
         boolean quick = false, help = false, images = false;
         int runs = -1, flatMax = 1000, scalingMax = 1_000_000;
-        double budget = 0;
+        double budget = 0, warmup = -1;
         Set<String> groups = new LinkedHashSet<>(GROUPS);
         Path out = null;
         Pattern match = null;
@@ -60,15 +64,8 @@ record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMa
                         throw new IllegalArgumentException("--match needs a regular expression, got '" + v + "'", e);
                     }
                 }
-                case "--budget" -> {
-                    String v = value(list, ++i, a);
-                    try {
-                        budget = Double.parseDouble(v);
-                    } catch (NumberFormatException e) {
-                        throw new IllegalArgumentException("--budget needs seconds, got '" + v + "'", e);
-                    }
-                    if (!(budget >= 0)) throw new IllegalArgumentException("--budget must be >= 0 seconds, got " + v);
-                }
+                case "--budget" -> budget = seconds(a, value(list, ++i, a));
+                case "--warmup" -> warmup = seconds(a, value(list, ++i, a));
                 case "--only" -> {
                     groups = new LinkedHashSet<>();
                     for (String g : value(list, ++i, a).split(",")) {
@@ -82,12 +79,24 @@ record Options(boolean quick, int runs, Set<String> groups, Path out, int flatMa
             }
         }
         if (runs < 0) runs = quick ? 1 : 5;
-        return new Options(quick, runs, groups, out, flatMax, scalingMax, budget, match, images, help);
+        if (warmup < 0) warmup = quick ? 0 : 2;
+        return new Options(quick, runs, groups, out, flatMax, scalingMax, budget, warmup, match, images, help);
     }
 
     private static String value(List<String> args, int i, String option) {
         if (i >= args.size()) throw new IllegalArgumentException(option + " needs a value");
         return args.get(i);
+    }
+
+    private static double seconds(String option, String v) {
+        double s;
+        try {
+            s = Double.parseDouble(v);
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException(option + " needs seconds, got '" + v + "'", e);
+        }
+        if (!(s >= 0) || Double.isInfinite(s)) throw new IllegalArgumentException(option + " must be >= 0 seconds, got " + v);
+        return s;
     }
 
     private static int positiveInt(String option, String v) {

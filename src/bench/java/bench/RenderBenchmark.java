@@ -87,11 +87,18 @@ public final class RenderBenchmark {
         return options.groups().contains("build") ? report + "\n" + BuildBenchmark.markdown(options, log) : report;
     }
 
+    /** The most warm-up renders of one configuration, whatever --warmup asks. */
+    private static final int MAX_WARMUP_RENDERS = 20;
+
     private Measurement measure(Configuration c, Scene scene) {
-        // Warm-up: one render (smaller for costly configurations, see Configuration.warmupScale).
+        // Warm-up: renders (smaller for costly configurations, see Configuration.warmupScale) until
+        // they took --warmup seconds: with a single one, a 0.2 s render's first timed runs still
+        // ran code that C2 was compiling, on 2 threads with the compiler taking one of the cores.
         int ww = Math.max(16, (int) Math.round(c.width() * c.warmupScale()));
         int wh = Math.max(16, (int) Math.round(c.height() * c.warmupScale()));
-        render(c, scene, ww, wh, c.threads(), false);
+        double warm = 0;
+        for (int i = 0; i < MAX_WARMUP_RENDERS && (i == 0 || warm < options.warmupSeconds()); ++i)
+            warm += render(c, scene, ww, wh, c.threads(), false).seconds();
 
         double allocPerRay = allocationPerRay(c, scene);
 

@@ -23,7 +23,8 @@ final class Report {
         s.append("- Date: ").append(machine.date()).append("\n");
         s.append("- Machine: ").append(machine.summary())
                 .append(String.format(Locale.ROOT, ", %.2f at the end", loadAtEnd)).append("\n");
-        s.append("- Each configuration: one warm-up render, then ").append(o.runs())
+        s.append(String.format(Locale.ROOT, "- Each configuration: warm-up renders until they took %.1f s (at least one), then ",
+                o.warmupSeconds())).append(o.runs())
                 .append(" timed run(s); render times are medians of RenderStats.seconds() (the render loop: no BVH build, "
                         + "no JVM start, no PNG); the BVH build is the median of RenderStats.prepareSeconds().\n\n");
 
