@@ -31,12 +31,14 @@ import java.util.Objects;
 import java.util.function.Consumer;
 import java.util.function.UnaryOperator;
 
+import geometries.BoundingBox;
 import geometries.Cylinder;
 import geometries.Geometry;
 import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
 import geometries.Triangle;
+import geometries.TriangleMesh;
 import geometries.Tube;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
@@ -391,13 +393,28 @@ public final class XmlSceneReader {
             } catch (FileSource.RefusedFileException refused) {
                 throw new ObjFormatException(obj.toString(), 0, refused.reason());
             }
-            return ObjReader.read(new InputStreamReader(new ByteArrayInputStream(bytes), StandardCharsets.UTF_8),
+            TriangleMesh mesh = ObjReader.read(new InputStreamReader(new ByteArrayInputStream(bytes), StandardCharsets.UTF_8),
                     obj.toString());
+            requireWithinRange(mesh.getBoundingBox(), obj);
+            return mesh;
         } catch (ObjFormatException ex) {
             throw e.errorAt("file", e.quote("file") + ": " + ex.getMessage() + " (expected " + expected + ")", ex);
         } catch (IOException ex) {
             throw e.errorAt("file", e.quote("file") + ": cannot read " + obj + ": " + Messages.reason(ex) + " (expected " + expected + ")", ex);
         }
+    }
+
+    /**
+     * A mesh's vertices are held to the scene file's number range ({@link Limits#MAX_MAGNITUDE}),
+     * as its own coordinates are: the OBJ reader takes any finite number, and a vertex at 1e300
+     * would overflow the squared lengths of shading and fail the render instead of the load.
+     */
+    private static void requireWithinRange(BoundingBox box, Path obj) throws ObjFormatException {
+        double extent = Math.max(Math.max(Math.max(-box.getMinX(), box.getMaxX()), Math.max(-box.getMinY(), box.getMaxY())),
+                Math.max(-box.getMinZ(), box.getMaxZ()));
+        if (extent > Limits.MAX_MAGNITUDE)
+            throw new ObjFormatException(obj.toString(), 0, "a vertex coordinate of magnitude " + extent
+                    + ", larger than " + ValueType.format(Limits.MAX_MAGNITUDE) + " (the limit of a scene's numbers)");
     }
 
     /** Required attributes p0 … p(n-1). */

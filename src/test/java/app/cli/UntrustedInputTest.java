@@ -131,6 +131,15 @@ class UntrustedInputTest {
         }
 
         @Test
+        @DisplayName("an OBJ vertex beyond the scene's number range: refused at load, not while rendering")
+        void hugeVertex() throws IOException {
+            write("far.obj", "v 1e20 0 0\nv 1e20 1e20 0\nv 1e20 0 1e20\nf 1 2 3\n");
+            Path file = write("scene.xml", scene("<geometries><mesh file=\"far.obj\"/></geometries>"));
+            assertRefused(render(file), file, ":2:19", "far.obj:0: a vertex coordinate of magnitude 1.0E20, larger than"
+                    + " 1000000000 (the limit of a scene's numbers)");
+        }
+
+        @Test
         @DisplayName("an OBJ file larger than the limit: refused before reading (a sparse file, no disk used)")
         void largeFile() throws IOException {
             try (RandomAccessFile obj = new RandomAccessFile(dir.resolve("large.obj").toFile(), "rw")) {
