@@ -34,27 +34,13 @@ class RenderCommandSparkTest {
     /** A small scene: a sphere's edge, a glossy floor and a soft shadow, so that sampling shows. */
     private Path scene(String name, int seed) throws IOException {
         Path file = dir.resolve(name + ".xml");
-        Files.writeString(file, """
-                <scene name="%s" background-color="20 30 40">
-                    <ambient-light color="255 255 255" ka="0.1"/>
-                    <geometries>
-                        <sphere center="0 0 -50" radius="12" emission="200 60 30">
-                            <material kd="0.5" ks="0.5" shininess="30"/>
-                        </sphere>
-                        <plane point="0 -12 0" normal="0 1 0" emission="30 30 30">
-                            <material kd="0.3" kr="0.5" reflection-spread="0.2"/>
-                        </plane>
-                    </geometries>
-                    <lights>
-                        <point-light color="300 300 300" position="20 30 0" radius="3"/>
-                    </lights>
-                    <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="40 20" vp-distance="25"/>
-                    <image name="spark-test-%s" width="70" height="35"/>
-                    <render threads="1" beam-size="3" shadow-samples="3" seed="%d">
-                        <anti-aliasing mode="random" grid="2 3"/>
-                    </render>
-                </scene>
-                """.formatted(name, name, seed));
+        // The command line tests' small scene, with its own name, a larger image, a seed and a grid.
+        Files.writeString(file, Cli.SMALL.replace("<scene name=\"small\"", "<scene name=\"" + name + "\"")
+                .replace("<image name=\"small\" width=\"40\" height=\"20\"/>",
+                        "<image name=\"" + PREFIX + name + "\" width=\"70\" height=\"35\"/>")
+                .replace("<render threads=\"1\" beam-size=\"3\" shadow-samples=\"3\"/>",
+                        "<render threads=\"1\" beam-size=\"3\" shadow-samples=\"3\" seed=\"" + seed + "\">"
+                                + "<anti-aliasing mode=\"random\" grid=\"2 3\"/></render>"));
         return file;
     }
 

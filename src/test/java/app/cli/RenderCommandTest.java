@@ -42,29 +42,8 @@ class RenderCommandTest {
     @TempDir
     Path dir;
 
-    /**
-     * A small lit scene, 40×20 pixels, with a sphere edge against the background and a glossy
-     * floor, so that anti-aliasing, seeds and beams all change pixels.
-     */
-    private static final String SMALL = """
-            <scene name="small" background-color="20 30 40">
-                <ambient-light color="255 255 255" ka="0.1"/>
-                <geometries>
-                    <sphere center="0 0 -50" radius="12" emission="200 60 30">
-                        <material kd="0.5" ks="0.5" shininess="30"/>
-                    </sphere>
-                    <plane point="0 -12 0" normal="0 1 0" emission="30 30 30">
-                        <material kd="0.3" kr="0.5" reflection-spread="0.2"/>
-                    </plane>
-                </geometries>
-                <lights>
-                    <point-light color="300 300 300" position="20 30 0" radius="3"/>
-                </lights>
-                <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="40 20" vp-distance="25"/>
-                <image name="small" width="40" height="20"/>
-                <render threads="1" beam-size="3" shadow-samples="3"/>
-            </scene>
-            """;
+    /** The shared small scene ({@link Cli#SMALL}). */
+    private static final String SMALL = Cli.SMALL;
 
     private Path write(String name, String xml) throws IOException {
         Path file = dir.resolve(name);
