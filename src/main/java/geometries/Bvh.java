@@ -33,6 +33,8 @@ public final class Bvh extends Intersectable {
      * worth a task (about 0.1 ms of work).
      */
     private static final int FORK_ABOVE = 4096;
+    /** The builder's bounds of a range: box min xyz, max xyz, then centroid min xyz, max xyz. */
+    private static final int BOUNDS = 12;
 
     /** The leaves this tree indexes, as collected: what it contributes to a tree built around it. */
     private final Intersectable[] leaves;
@@ -40,11 +42,16 @@ public final class Bvh extends Intersectable {
     // Per primitive, in leaf order: its owner and its index within the owner.
     private final Intersectable[] owner;
     private final int[] prim;
-    // Per node, depth-first, one packed record of NODE doubles = 64 bytes, one cache line: the box
-    // (min xyz, max xyz), then for a leaf its first primitive and its primitive count (> 0), for an
-    // inner node its right child (the left child is the next node) and 0.
+    // Per node, depth-first, one packed record of NODE floats = 32 bytes, two nodes per cache line
+    // (a node and its left child, which follows it, often share one): the box (min xyz, max xyz)
+    // rounded outward to floats, so that it contains the exact box and no hit is lost, then, as
+    // raw int bits, for a leaf its first primitive and its primitive count (> 0), for an inner
+    // node its right child (the left child is the next node) and 0. Floats halve the bytes a walk
+    // touches, which is what a ray costs in a scene far larger than the caches.
     private static final int NODE = 8;
-    private final double[] node;
+    private final float[] node;
+    /** The exact (double) box of the root, or null when nothing is bounded. */
+    private final BoundingBox rootBox;
     // The first node after each node's subtree: the any-hit walk's skip links.
     private final int[] skip;
     private final int nodeCount;
@@ -87,16 +94,21 @@ public final class Bvh extends Intersectable {
         geometries.collectLeaves(leaves);
         List<Intersectable> free = new ArrayList<>();
         int total = 0;
-        for (Intersectable leaf : leaves) {
-            if (leaf.getBoundingBox() == null) free.add(leaf);
-            else total += leaf.primitiveCount();
+        // A shape may compute its box on every call (a polygon does): ask each leaf once.
+        boolean[] bounded = new boolean[leaves.size()];
+        for (int l = 0; l < bounded.length; ++l) {
+            Intersectable leaf = leaves.get(l);
+            bounded[l] = leaf.getBoundingBox() != null;
+            if (bounded[l]) total += leaf.primitiveCount();
+            else free.add(leaf);
         }
         this.leaves = leaves.toArray(new Intersectable[0]);
         unbounded = free.toArray(new Intersectable[0]);
 
         Builder b = new Builder(total, parallelism, forkAbove);
-        for (Intersectable leaf : leaves) {
-            if (leaf.getBoundingBox() == null) continue;
+        for (int l = 0; l < bounded.length; ++l) {
+            if (!bounded[l]) continue;
+            Intersectable leaf = this.leaves[l];
             for (int i = 0, n = leaf.primitiveCount(); i < n; ++i) b.addPrimitive(leaf, i, leaf.primitiveBounds(i));
         }
         b.build();
@@ -104,6 +116,7 @@ public final class Bvh extends Intersectable {
         prim = b.orderedPrim;
         nodeCount = b.nodes;
         node = b.node;
+        rootBox = b.rootBox;
         skip = b.skip;
         depth = b.maxDepth + 1;
     }
@@ -151,7 +164,9 @@ public final class Bvh extends Intersectable {
      */
     private double entry(int n, double ox, double oy, double oz, double ix, double iy, double iz, double tMax) {
         int o = n * NODE;
-        double[] bx = node;
+        float[] bx = node;
+        // Computed in doubles from the widened float box: every hit of the exact box stays a hit,
+        // and the entry distance can only come out lower, so skipping a node by it stays safe.
         double t0 = 0, t1 = tMax;
         double a = (bx[o] - ox) * ix, b = (bx[o + 3] - ox) * ix;
         if (a > b) { double s = a; a = b; b = s; }
@@ -191,17 +206,17 @@ public final class Bvh extends Intersectable {
         }
         int[] stack = hit.stack;
         double[] stackT = hit.stackT;
-        double[] nd = node;
+        float[] nd = node;
         int top = 0;
         int n = 0;
         while (true) {
             int o = n * NODE;
-            int count = (int) nd[o + 7];
+            int count = Float.floatToRawIntBits(nd[o + 7]);
             if (count > 0) {
-                for (int k = (int) nd[o + 6], end = k + count; k < end; ++k)
+                for (int k = Float.floatToRawIntBits(nd[o + 6]), end = k + count; k < end; ++k)
                     found |= owner[k].closestHit(prim[k], ray, hit);
             } else {
-                int left = n + 1, right = (int) nd[o + 6];
+                int left = n + 1, right = Float.floatToRawIntBits(nd[o + 6]);
                 double tl = entry(left, ox, oy, oz, ix, iy, iz, hit.t);
                 double tr = entry(right, ox, oy, oz, ix, iy, iz, hit.t);
                 boolean hitLeft = tl < hit.t, hitRight = tr < hit.t;
@@ -241,17 +256,17 @@ public final class Bvh extends Intersectable {
         double ix = BoundingBox.inverse(d.getX()), iy = BoundingBox.inverse(d.getY()), iz = BoundingBox.inverse(d.getZ());
         // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
-        double[] nd = node;
+        float[] nd = node;
         int n = 0;
         while (n < nodeCount) {
             if (entry(n, ox, oy, oz, ix, iy, iz, limit) != Double.POSITIVE_INFINITY) {
                 int o = n * NODE;
-                int count = (int) nd[o + 7];
+                int count = Float.floatToRawIntBits(nd[o + 7]);
                 if (count == 0) {
                     ++n;
                     continue;
                 }
-                for (int k = (int) nd[o + 6], end = k + count; k < end; ++k)
+                for (int k = Float.floatToRawIntBits(nd[o + 6]), end = k + count; k < end; ++k)
                     if (!owner[k].visitHits(prim[k], ray, maxDistance, visitor)) return false;
             }
             n = skip[n];
@@ -278,8 +293,19 @@ public final class Bvh extends Intersectable {
 
     @Override
     public BoundingBox getBoundingBox() {
-        if (unbounded.length > 0 || nodeCount == 0) return null;
-        return new BoundingBox(node[0], node[1], node[2], node[3], node[4], node[5]);
+        return unbounded.length > 0 ? null : rootBox;
+    }
+
+    /** The largest float not above {@code d} (−∞ below the float range): a box's lower bound rounded outward. */
+    static float floatBelow(double d) {
+        float f = (float) d;
+        return f > d ? Math.nextDown(f) : f;
+    }
+
+    /** The smallest float not below {@code d} (+∞ above the float range): a box's upper bound rounded outward. */
+    static float floatAbove(double d) {
+        float f = (float) d;
+        return f < d ? Math.nextUp(f) : f;
     }
 
     /**
@@ -320,7 +346,8 @@ public final class Bvh extends Intersectable {
 
         Intersectable[] orderedOwner;
         int[] orderedPrim;
-        double[] node;
+        float[] node;
+        BoundingBox rootBox;
         int[] skip;
         int nodes;
         int maxDepth;
@@ -365,7 +392,10 @@ public final class Bvh extends Intersectable {
             slotFirstOrLeft = new int[capacity];
             slotSize = new int[capacity];
             if (n > 0) {
-                Subtree root = new Subtree(0, n, 0, 0);
+                double[] rootBounds = new double[BOUNDS];
+                resetBounds(rootBounds, 0);
+                for (int i = 0; i < n; ++i) growBounds(rootBounds, 0, bounds, centroid, i);
+                Subtree root = new Subtree(0, n, 0, 0, rootBounds);
                 if (parallelism > 1 && n > forkAbove) {
                     ForkJoinPool pool = new ForkJoinPool(parallelism);
                     try {
@@ -396,26 +426,33 @@ public final class Bvh extends Intersectable {
         /** Renumbers the reserved slots depth-first (left child next) into the packed node records. */
         private void flatten(int n) {
             nodes = n == 0 ? 0 : slotSize[0];
-            node = new double[nodes * NODE];
+            node = new float[nodes * NODE];
             skip = new int[nodes];
             if (n == 0) return;
+            rootBox = new BoundingBox(slotBox[0], slotBox[1], slotBox[2], slotBox[3], slotBox[4], slotBox[5]);
             int[] stack = new int[2 * (maxDepth + 2)];
             int top = 0;
             stack[top++] = 0; // slot
             stack[top++] = 0; // its depth-first index
             while (top > 0) {
                 int f = stack[--top], s = stack[--top];
-                System.arraycopy(slotBox, s * 6, node, f * NODE, 6);
+                int o = f * NODE;
+                for (int a = 0; a < 3; ++a) {
+                    node[o + a] = Bvh.floatBelow(slotBox[s * 6 + a]);
+                    node[o + a + 3] = Bvh.floatAbove(slotBox[s * 6 + a + 3]);
+                }
                 int count = slotCount[s];
                 skip[f] = f + slotSize[s];
+                // Non-negative ints below 0x7F800000 are never NaN patterns, so the bits survive
+                // the round trip through float unchanged.
                 if (count > 0) {
-                    node[f * NODE + 6] = slotFirstOrLeft[s];
-                    node[f * NODE + 7] = count;
+                    node[o + 6] = Float.intBitsToFloat(slotFirstOrLeft[s]);
+                    node[o + 7] = Float.intBitsToFloat(count);
                 } else {
                     int left = s + 1, right = s + 2 * slotFirstOrLeft[s];
                     int rightIndex = f + 1 + slotSize[left];
-                    node[f * NODE + 6] = rightIndex;
-                    node[f * NODE + 7] = 0;
+                    node[o + 6] = Float.intBitsToFloat(rightIndex);
+                    node[o + 7] = Float.intBitsToFloat(0);
                     stack[top++] = right;
                     stack[top++] = rightIndex;
                     stack[top++] = left;
@@ -431,30 +468,38 @@ public final class Bvh extends Intersectable {
             private final int end;
             private final int level;
             private final int slot;
+            /** The subtree's box and centroid bounds, as its parent's partition found them. */
+            private final double[] own;
             /** The deepest level reached in this subtree, once computed. */
             int maxLevel;
 
-            Subtree(int start, int end, int level, int slot) {
+            Subtree(int start, int end, int level, int slot, double[] own) {
                 this.start = start;
                 this.end = end;
                 this.level = level;
                 this.slot = slot;
+                this.own = own;
             }
 
             @Override
             protected void compute() {
                 Binner binner = new Binner();
+                int ownAt = binner.place(level, 0);
+                System.arraycopy(own, 0, binner.levels, ownAt, BOUNDS);
                 if (end - start <= forkAbove || parallelism <= 1) {
-                    maxLevel = buildNode(binner, start, end, level, slot);
+                    maxLevel = buildNode(binner, start, end, level, slot, ownAt);
                     return;
                 }
-                int mid = split(binner, start, end, slot);
+                int mid = split(binner, start, end, level, slot, ownAt);
                 if (mid < 0) {
                     maxLevel = level;
                     return;
                 }
-                Subtree left = new Subtree(start, mid, level + 1, slot + 1);
-                Subtree right = new Subtree(mid, end, level + 1, slot + 2 * (mid - start));
+                int at = binner.place(level + 1, 0);
+                double[] lb = java.util.Arrays.copyOfRange(binner.levels, at, at + BOUNDS);
+                double[] rb = java.util.Arrays.copyOfRange(binner.levels, at + BOUNDS, at + 2 * BOUNDS);
+                Subtree left = new Subtree(start, mid, level + 1, slot + 1, lb);
+                Subtree right = new Subtree(mid, end, level + 1, slot + 2 * (mid - start), rb);
                 invokeAll(left, right);
                 slotSize[slot] = 1 + slotSize[left.slot] + slotSize[right.slot];
                 maxLevel = Math.max(left.maxLevel, right.maxLevel);
@@ -466,39 +511,32 @@ public final class Bvh extends Intersectable {
          *
          * @return the deepest level reached
          */
-        private int buildNode(Binner binner, int start, int end, int level, int slot) {
-            int mid = split(binner, start, end, slot);
+        private int buildNode(Binner binner, int start, int end, int level, int slot, int ownAt) {
+            int mid = split(binner, start, end, level, slot, ownAt);
             if (mid < 0) return level;
             int right = slot + 2 * (mid - start);
-            int deepest = Math.max(buildNode(binner, start, mid, level + 1, slot + 1),
-                    buildNode(binner, mid, end, level + 1, right));
+            // The children's bounds sit at level + 1; the left subtree writes only deeper levels,
+            // so the right child's are intact when its turn comes.
+            int leftDeepest = buildNode(binner, start, mid, level + 1, slot + 1, binner.place(level + 1, 0));
+            int deepest = Math.max(leftDeepest, buildNode(binner, mid, end, level + 1, right, binner.place(level + 1, 1)));
             slotSize[slot] = 1 + slotSize[slot + 1] + slotSize[right];
             return deepest;
         }
 
         /**
          * Writes node {@code slot}'s box and decides it: a leaf (recorded here, size 1; returns −1)
-         * or a split, whose partition of [start, end) it performs and whose middle it returns.
+         * or a split, whose partition of [start, end) it performs and whose middle it returns; the
+         * partition then leaves the two children's bounds at {@code binner.place(level + 1, 0|1)}.
+         *
+         * @param ownAt where in {@code binner.levels} this node's box and centroid bounds are
          */
-        private int split(Binner binner, int start, int end, int slot) {
-            double bx0 = Double.POSITIVE_INFINITY, by0 = bx0, bz0 = bx0, bx1 = Double.NEGATIVE_INFINITY, by1 = bx1, bz1 = bx1;
-            double cx0 = bx0, cy0 = bx0, cz0 = bx0, cx1 = bx1, cy1 = bx1, cz1 = bx1;
+        private int split(Binner binner, int start, int end, int level, int slot, int ownAt) {
+            double[] own = binner.levels;
+            double bx0 = own[ownAt], by0 = own[ownAt + 1], bz0 = own[ownAt + 2];
+            double bx1 = own[ownAt + 3], by1 = own[ownAt + 4], bz1 = own[ownAt + 5];
+            double cx0 = own[ownAt + 6], cy0 = own[ownAt + 7], cz0 = own[ownAt + 8];
+            double cx1 = own[ownAt + 9], cy1 = own[ownAt + 10], cz1 = own[ownAt + 11];
             double[] bounds = this.bounds, centroid = this.centroid;
-            for (int i = start; i < end; ++i) {
-                int o = i * 6, c = i * 3;
-                if (bounds[o] < bx0) bx0 = bounds[o];
-                if (bounds[o + 1] < by0) by0 = bounds[o + 1];
-                if (bounds[o + 2] < bz0) bz0 = bounds[o + 2];
-                if (bounds[o + 3] > bx1) bx1 = bounds[o + 3];
-                if (bounds[o + 4] > by1) by1 = bounds[o + 4];
-                if (bounds[o + 5] > bz1) bz1 = bounds[o + 5];
-                if (centroid[c] < cx0) cx0 = centroid[c];
-                if (centroid[c + 1] < cy0) cy0 = centroid[c + 1];
-                if (centroid[c + 2] < cz0) cz0 = centroid[c + 2];
-                if (centroid[c] > cx1) cx1 = centroid[c];
-                if (centroid[c + 1] > cy1) cy1 = centroid[c + 1];
-                if (centroid[c + 2] > cz1) cz1 = centroid[c + 2];
-            }
             int o = slot * 6;
             slotBox[o] = bx0;
             slotBox[o + 1] = by0;
@@ -558,9 +596,17 @@ public final class Bvh extends Intersectable {
             }
             int mid = -1;
             if (bestBin >= 0 && (bestCost < n || n > MAX_LEAF))
-                mid = partition(start, end, bestAxis, lowOf[bestAxis], BINS / extentOf[bestAxis], bestBin);
+                mid = partition(start, end, bestAxis, lowOf[bestAxis], BINS / extentOf[bestAxis], bestBin,
+                        binner.levels(level + 1), binner.place(level + 1, 0));
             // All centroids coincide: split the range in half to bound the leaf size.
-            if (mid < 0 && n > MAX_LEAF) mid = start + n / 2;
+            if (mid < 0 && n > MAX_LEAF) {
+                mid = start + n / 2;
+                double[] children = binner.levels(level + 1);
+                int at = binner.place(level + 1, 0);
+                resetBounds(children, at);
+                resetBounds(children, at + BOUNDS);
+                for (int i = start; i < end; ++i) growBounds(children, i < mid ? at : at + BOUNDS, bounds, centroid, i);
+            }
             if (mid < 0) {
                 slotCount[slot] = n;
                 slotFirstOrLeft[slot] = start;
@@ -575,18 +621,35 @@ public final class Bvh extends Intersectable {
         /**
          * Stable partition of slots [start, end): the primitives whose centroid falls in a bin
          * up to {@code lastLeftBin} along {@code axis} first, each moved with its bounds and
-         * centroid. The right part goes through the scratch buffers' slots [start, end).
+         * centroid. The right part goes through the scratch buffers' slots [start, end). The same
+         * pass gathers both parts' box and centroid bounds into {@code children} at the next
+         * level's places, so that no child reads its range again for them.
          *
          * @return the first slot of the right part
          */
-        private int partition(int start, int end, int axis, double lo, double scale, int lastLeftBin) {
+        private int partition(int start, int end, int axis, double lo, double scale, int lastLeftBin,
+                              double[] children, int at) {
+            resetBounds(children, at);
+            resetBounds(children, at + BOUNDS);
+            double[] bounds = this.bounds, centroid = this.centroid, sBounds = scratchBounds, sCentroid = scratchCentroid;
             int l = start, r = start;
             for (int i = start; i < end; ++i) {
-                if (bin(centroid[i * 3 + axis], lo, scale) <= lastLeftBin) {
-                    if (l != i) moveSlot(order, bounds, centroid, i, order, bounds, centroid, l);
+                int o = i * 6, c = i * 3;
+                if (bin(centroid[c + axis], lo, scale) <= lastLeftBin) {
+                    growBounds(children, at, bounds, centroid, i);
+                    if (l != i) {
+                        int lo6 = l * 6, lc = l * 3;
+                        order[l] = order[i];
+                        for (int k = 0; k < 6; ++k) bounds[lo6 + k] = bounds[o + k];
+                        for (int k = 0; k < 3; ++k) centroid[lc + k] = centroid[c + k];
+                    }
                     ++l;
                 } else {
-                    moveSlot(order, bounds, centroid, i, scratchOrder, scratchBounds, scratchCentroid, r++);
+                    growBounds(children, at + BOUNDS, bounds, centroid, i);
+                    int ro = r * 6, rc = r * 3;
+                    scratchOrder[r++] = order[i];
+                    for (int k = 0; k < 6; ++k) sBounds[ro + k] = bounds[o + k];
+                    for (int k = 0; k < 3; ++k) sCentroid[rc + k] = centroid[c + k];
                 }
             }
             int right = r - start;
@@ -596,11 +659,23 @@ public final class Bvh extends Intersectable {
             return l;
         }
 
-        private static void moveSlot(int[] fromOrder, double[] fromBounds, double[] fromCentroid, int from,
-                                     int[] toOrder, double[] toBounds, double[] toCentroid, int to) {
-            toOrder[to] = fromOrder[from];
-            System.arraycopy(fromBounds, from * 6, toBounds, to * 6, 6);
-            System.arraycopy(fromCentroid, from * 3, toCentroid, to * 3, 3);
+        /** Makes the bounds at {@code at} empty: a box and a centroid box that any point grows. */
+        private static void resetBounds(double[] b, int at) {
+            for (int a = 0; a < 3; ++a) {
+                b[at + a] = b[at + 6 + a] = Double.POSITIVE_INFINITY;
+                b[at + 3 + a] = b[at + 9 + a] = Double.NEGATIVE_INFINITY;
+            }
+        }
+
+        /** Grows the bounds at {@code at} by slot {@code i}'s box and centroid. */
+        private static void growBounds(double[] b, int at, double[] bounds, double[] centroid, int i) {
+            int o = i * 6, c = i * 3;
+            for (int a = 0; a < 3; ++a) {
+                if (bounds[o + a] < b[at + a]) b[at + a] = bounds[o + a];
+                if (bounds[o + 3 + a] > b[at + 3 + a]) b[at + 3 + a] = bounds[o + 3 + a];
+                if (centroid[c + a] < b[at + 6 + a]) b[at + 6 + a] = centroid[c + a];
+                if (centroid[c + a] > b[at + 9 + a]) b[at + 9 + a] = centroid[c + a];
+            }
         }
 
         /** One task's bins: per searched axis, BINS counts and boxes, filled in one pass over a range. */
@@ -610,23 +685,48 @@ public final class Bvh extends Intersectable {
             final double[] binBox = new double[3 * BINS * 6];
             final double[] rightArea = new double[BINS];
             final double[] acc = new double[6];
+            /**
+             * Per level of this task's recursion, the box and centroid bounds of the two children
+             * split there ({@link #BOUNDS} doubles each, left then right); grown on demand.
+             */
+            double[] levels = new double[16 * 2 * BOUNDS];
+
+            /** @return where the bounds of the {@code side} (0 left, 1 right) child at {@code level} are */
+            int place(int level, int side) {
+                int at = (2 * level + side) * BOUNDS;
+                if (at + BOUNDS > levels.length) levels = java.util.Arrays.copyOf(levels, Math.max(2 * levels.length, at + 2 * BOUNDS));
+                return at;
+            }
+
+            /** @return {@link #levels}, with room for both children at {@code level} */
+            double[] levels(int level) {
+                place(level, 1);
+                return levels;
+            }
 
             Binner() {
                 for (int k = 0; k < 3 * BINS; ++k) resetBox(binBox, k);
             }
 
-            /** Fills the searched axes' bins, which are empty, from slots [start, end). */
+            /**
+             * Fills the searched axes' bins, which are empty, from slots [start, end), in one pass
+             * over the range (each slot's bounds are read once for all axes).
+             */
             void bin(double[] bounds, double[] centroid, int start, int end, double[] lowOf, double[] extentOf) {
-                for (int a = 0; a < 3; ++a) {
-                    if (!searched[a]) continue;
-                    double lo = lowOf[a], scale = BINS / extentOf[a];
-                    int base = a * BINS;
-                    for (int i = start; i < end; ++i) {
-                        int k = base + Bvh.Builder.bin(centroid[i * 3 + a], lo, scale);
-                        binCount[k]++;
-                        growBox(binBox, k, bounds, i);
-                    }
+                boolean sx = searched[0], sy = searched[1], sz = searched[2];
+                double lx = lowOf[0], ly = lowOf[1], lz = lowOf[2];
+                double kx = BINS / extentOf[0], ky = BINS / extentOf[1], kz = BINS / extentOf[2];
+                for (int i = start; i < end; ++i) {
+                    int c = i * 3;
+                    if (sx) add(Bvh.Builder.bin(centroid[c], lx, kx), bounds, i);
+                    if (sy) add(BINS + Bvh.Builder.bin(centroid[c + 1], ly, ky), bounds, i);
+                    if (sz) add(2 * BINS + Bvh.Builder.bin(centroid[c + 2], lz, kz), bounds, i);
                 }
+            }
+
+            private void add(int k, double[] bounds, int i) {
+                binCount[k]++;
+                growBox(binBox, k, bounds, i);
             }
 
             /** Empties axis {@code a}'s bins again (only the used ones need it). */

@@ -417,6 +417,90 @@ class BvhTest {
         }
     }
 
+    static Stream<Arguments> awkwardScenes() {
+        return Stream.of(
+                Arguments.of(scene("far from the origin (floats 0.001 apart there)", 11, new Point(1.1e4, -7.3e3, 3.1e3), 10, 1)),
+                Arguments.of(scene("beyond the float range (boxes of infinite float bounds)", 12, new Point(1e39, -2e39, 5e38), 1e37, 1e36)),
+                Arguments.of(scene("tiny shapes, almost point boxes", 13, new Point(0.1, 0.2, 0.3), 1e-3, 1e-4)),
+                Arguments.of(scene("huge shapes around small ones", 14, new Point(-0.3, 0.7, 0.1), 1e4, 3e3)));
+    }
+
+    private static Scene scene(String name, long seed, Point centre, double half, double size) {
+        Geometries g = new Geometries();
+        for (Geometry shape : RandomScenes.boundedShapes(new Random(seed), 300, centre, half, size)) g.add(shape);
+        return new Scene(name, g, centre, half);
+    }
+
+    @Nested
+    @DisplayName("float nodes: boxes rounded outward, so no hit is lost and none is gained")
+    class FloatNodes {
+        @ParameterizedTest(name = "{0}")
+        @org.junit.jupiter.params.provider.ValueSource(doubles = { 0, -0.0, 0.1, -0.1, 1 / 3.0, -1e-300, 4.9e-324, 1e-45,
+                16777217, -16777217, 3.4028235677973366e38, 1e39, -1e39, 1e300, -1e300 })
+        @DisplayName("a bound becomes the nearest float on its outer side")
+        void roundedOutward(double d) {
+            float below = Bvh.floatBelow(d), above = Bvh.floatAbove(d);
+            assertThat((double) below).as("lower bound of %s", d).isLessThanOrEqualTo(d);
+            assertThat((double) Math.nextUp(below)).as("the float above the lower bound of %s", d).isGreaterThan(d);
+            assertThat((double) above).as("upper bound of %s", d).isGreaterThanOrEqualTo(d);
+            assertThat((double) Math.nextDown(above)).as("the float below the upper bound of %s", d).isLessThan(d);
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#awkwardScenes")
+        @DisplayName("closest hit: same geometry and same t as the flat list")
+        void closestHit(Scene scene) {
+            assertSameClosestHits(Bvh.build(scene.geometries()), scene.geometries(),
+                    RandomScenes.rays(new Random(700), RAYS, scene.centre(), scene.half()));
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#awkwardScenes")
+        @DisplayName("visitHits: the same multiset of (geometry, t) as the flat list")
+        void visitHits(Scene scene) {
+            Bvh tree = Bvh.build(scene.geometries());
+            Random rnd = new Random(701);
+            for (Ray ray : RandomScenes.rays(new Random(702), RAYS, scene.centre(), scene.half())) {
+                double max = rnd.nextBoolean() ? Double.POSITIVE_INFINITY : 3 * scene.half() * rnd.nextDouble();
+                Hits.assertSameVisits(Hits.visited(tree, ray, max), Hits.visited(scene.geometries(), ray, max), 0,
+                        "tree vs flat walk within " + max + " for " + ray);
+            }
+        }
+
+        @Test
+        @DisplayName("flat boxes at coordinates no float can hold, hit by axis-parallel rays")
+        void flatBoxesBetweenFloats() {
+            Geometries flat = new Geometries();
+            for (int i = 0; i < 10; ++i)
+                for (int j = 0; j < 10; ++j) {
+                    double x = 0.1 * i + 0.01, y = 0.1 * j + 0.01, z = 0.1 * ((i + j) % 3) + 0.1;
+                    flat.add(new Polygon(new Point(x, y, z), new Point(x + 0.1, y, z), new Point(x + 0.1, y + 0.1, z), new Point(x, y + 0.1, z)));
+                }
+            Bvh tree = Bvh.build(flat);
+            List<Ray> axial = new ArrayList<>();
+            Random rnd = new Random(703);
+            for (int k = 0; k < 500; ++k) {
+                double x = 0.01 + rnd.nextDouble(), y = 0.01 + rnd.nextDouble();
+                axial.add(new Ray(new Point(x, y, 5), new Vector(0, 0, -1)));
+                axial.add(new Ray(new Point(x, y, -1), new Vector(0, 0, -1).scale(-1)));
+                // Grazing: in the plane of a row of polygons.
+                axial.add(new Ray(new Point(-1, y, 0.1 * rnd.nextInt(3) + 0.1), new Vector(1, 0, 0)));
+            }
+            assertSameClosestHits(tree, flat, axial);
+            for (Ray ray : axial)
+                Hits.assertSameVisits(Hits.visited(tree, ray, 6), Hits.visited(flat, ray, 6), 0, "walk for " + ray);
+        }
+
+        @Test
+        @DisplayName("the tree's box is the exact double box, not the widened float one")
+        void exactRootBox() {
+            BoundingBox b = Bvh.build(new Geometries(new Sphere(new Point(0.1, 0.2, 0.3), 0.7))).getBoundingBox();
+            BoundingBox exact = new Sphere(new Point(0.1, 0.2, 0.3), 0.7).getBoundingBox().padded();
+            assertThat(new double[] { b.getMinX(), b.getMinY(), b.getMinZ(), b.getMaxX(), b.getMaxY(), b.getMaxZ() })
+                    .containsExactly(exact.getMinX(), exact.getMinY(), exact.getMinZ(), exact.getMaxX(), exact.getMaxY(), exact.getMaxZ());
+        }
+    }
+
     @Nested
     @DisplayName("contract: a tree of bounded shapes")
     class BoundedContract extends ContractScenes.SceneContract {
