@@ -127,6 +127,25 @@ final class RenderLoop {
         if (interrupted) Thread.currentThread().interrupt();
     }
 
+    /**
+     * Samples every pixel of tile {@code t}. A method of its own so that the JIT compiles it as
+     * an ordinary call, the same code for every render, instead of replacing the worker's long
+     * loop on the stack (OSR) again in each render's new worker.
+     *
+     * @return the number of pixels rendered
+     */
+    private long renderTile(int t, PixelSampler sampler, TraceContext ctx) {
+        int tx0 = x0 + (t % tilesX) * tile, ty0 = y0 + (t / tilesX) * tile;
+        int tx1 = Math.min(x1, tx0 + tile), ty1 = Math.min(y1, ty0 + tile);
+        sampler.beginTile(tx0, ty0, tx1, ty1);
+        for (int y = ty0; y < ty1; ++y)
+            for (int x = tx0; x < tx1; ++x) {
+                Color c = sampler.sample(x, y, ctx);
+                image.writePixel(x, y, c);
+            }
+        return (long) (tx1 - tx0) * (ty1 - ty0);
+    }
+
     private Runnable worker(Progress progress) {
         return () -> {
             PixelSampler sampler = camera.newSampler();
@@ -137,15 +156,7 @@ final class RenderLoop {
                         cancelled.set(true);
                         throw new CancellationException("render of " + image.getImageName() + " was interrupted");
                     }
-                    int tx0 = x0 + (t % tilesX) * tile, ty0 = y0 + (t / tilesX) * tile;
-                    int tx1 = Math.min(x1, tx0 + tile), ty1 = Math.min(y1, ty0 + tile);
-                    sampler.beginTile(tx0, ty0, tx1, ty1);
-                    for (int y = ty0; y < ty1; ++y)
-                        for (int x = tx0; x < tx1; ++x) {
-                            Color c = sampler.sample(x, y, ctx);
-                            image.writePixel(x, y, c);
-                        }
-                    progress.advance((long) (tx1 - tx0) * (ty1 - ty0));
+                    progress.advance(renderTile(t, sampler, ctx));
                 }
             } catch (CancellationException e) {
                 throw e;
