@@ -46,14 +46,20 @@ public final class Bvh extends Intersectable {
     // (a node and its left child, which follows it, often share one): the box (min xyz, max xyz)
     // rounded outward to floats, so that it contains the exact box and no hit is lost, then, as
     // raw int bits, for a leaf its first primitive and its primitive count (> 0), for an inner
-    // node its right child (the left child is the next node) and 0. Floats halve the bytes a walk
-    // touches, which is what a ray costs in a scene far larger than the caches.
+    // node its right child (the left child is the next node) and INNER | its skip link (the first
+    // node after its subtree, where the any-hit walk goes when the box is missed; a leaf's is the
+    // next node). Floats halve the bytes a walk touches, and the skip link in the record spares
+    // the any-hit walk a second array, which is what a ray costs in a scene far larger than the
+    // caches.
     private static final int NODE = 8;
     private final float[] node;
     /** The exact (double) box of the root, or null when nothing is bounded. */
     private final BoundingBox rootBox;
-    // The first node after each node's subtree: the any-hit walk's skip links.
-    private final int[] skip;
+    /**
+     * Marks an inner node's last field (a negative int; with fewer than 0x7F800000 nodes the bits
+     * are never a NaN pattern, so they survive the round trip through float).
+     */
+    private static final int INNER = Integer.MIN_VALUE;
     private final int nodeCount;
     private final int depth;
 
@@ -117,7 +123,6 @@ public final class Bvh extends Intersectable {
         nodeCount = b.nodes;
         node = b.node;
         rootBox = b.rootBox;
-        skip = b.skip;
         depth = b.maxDepth + 1;
     }
 
@@ -126,7 +131,7 @@ public final class Bvh extends Intersectable {
      * over the same primitives in the same leaf order. For the tests of the build's determinism.
      */
     boolean sameTreeAs(Bvh other) {
-        if (!java.util.Arrays.equals(node, other.node) || !java.util.Arrays.equals(skip, other.skip)
+        if (!java.util.Arrays.equals(node, other.node)
                 || !java.util.Arrays.equals(prim, other.prim) || owner.length != other.owner.length
                 || unbounded.length != other.unbounded.length || depth != other.depth)
             return false;
@@ -259,17 +264,16 @@ public final class Bvh extends Intersectable {
         float[] nd = node;
         int n = 0;
         while (n < nodeCount) {
-            if (entry(n, ox, oy, oz, ix, iy, iz, limit) != Double.POSITIVE_INFINITY) {
-                int o = n * NODE;
-                int count = Float.floatToRawIntBits(nd[o + 7]);
-                if (count == 0) {
-                    ++n;
-                    continue;
-                }
-                for (int k = Float.floatToRawIntBits(nd[o + 6]), end = k + count; k < end; ++k)
+            int last = Float.floatToRawIntBits(nd[n * NODE + 7]);
+            if (entry(n, ox, oy, oz, ix, iy, iz, limit) == Double.POSITIVE_INFINITY) {
+                n = last > 0 ? n + 1 : last & ~INNER;
+                continue;
+            }
+            if (last > 0) {
+                for (int k = Float.floatToRawIntBits(nd[n * NODE + 6]), end = k + last; k < end; ++k)
                     if (!owner[k].visitHits(prim[k], ray, maxDistance, visitor)) return false;
             }
-            n = skip[n];
+            ++n; // into an inner node's left child, or past a leaf
         }
         return true;
     }
@@ -348,7 +352,6 @@ public final class Bvh extends Intersectable {
         int[] orderedPrim;
         float[] node;
         BoundingBox rootBox;
-        int[] skip;
         int nodes;
         int maxDepth;
 
@@ -427,7 +430,6 @@ public final class Bvh extends Intersectable {
         private void flatten(int n) {
             nodes = n == 0 ? 0 : slotSize[0];
             node = new float[nodes * NODE];
-            skip = new int[nodes];
             if (n == 0) return;
             rootBox = new BoundingBox(slotBox[0], slotBox[1], slotBox[2], slotBox[3], slotBox[4], slotBox[5]);
             int[] stack = new int[2 * (maxDepth + 2)];
@@ -442,7 +444,6 @@ public final class Bvh extends Intersectable {
                     node[o + a + 3] = Bvh.floatAbove(slotBox[s * 6 + a + 3]);
                 }
                 int count = slotCount[s];
-                skip[f] = f + slotSize[s];
                 // Non-negative ints below 0x7F800000 are never NaN patterns, so the bits survive
                 // the round trip through float unchanged.
                 if (count > 0) {
@@ -452,7 +453,7 @@ public final class Bvh extends Intersectable {
                     int left = s + 1, right = s + 2 * slotFirstOrLeft[s];
                     int rightIndex = f + 1 + slotSize[left];
                     node[o + 6] = Float.intBitsToFloat(rightIndex);
-                    node[o + 7] = Float.intBitsToFloat(0);
+                    node[o + 7] = Float.intBitsToFloat(INNER | (f + slotSize[s]));
                     stack[top++] = right;
                     stack[top++] = rightIndex;
                     stack[top++] = left;
