@@ -235,12 +235,12 @@ public class TriangleMesh extends Geometry {
     }
 
     /** @return the distance to triangle {@code k} along the ray (see {@code Triangle.intersect}), or NaN */
-    private double intersect(int k, Ray ray) {
+    private double intersect(int k, Hit query) {
         double[] p = positions;
         int a = 3 * indices[3 * k], b = 3 * indices[3 * k + 1], c = 3 * indices[3 * k + 2];
         double ax = p[a], ay = p[a + 1], az = p[a + 2];
         // The same subtractions Triangle makes in its constructor, so the kernel sees the same bits.
-        return Triangle.intersect(ray, ax, ay, az, p[b] - ax, p[b + 1] - ay, p[b + 2] - az,
+        return Triangle.intersect(query, ax, ay, az, p[b] - ax, p[b + 1] - ay, p[b + 2] - az,
                 p[c] - ax, p[c + 1] - ay, p[c + 2] - az);
     }
 
@@ -259,49 +259,58 @@ public class TriangleMesh extends Geometry {
     }
 
     @Override
-    boolean closestHit(int prim, Ray ray, Hit hit) {
-        double t = intersect(prim, ray);
+    boolean closestHit(int prim, Hit hit) {
+        double t = intersect(prim, hit);
         if (!inRange(t, hit.t)) return false;
         hit.set(t, this, prim);
         return true;
     }
 
     @Override
-    boolean visitHits(int prim, Ray ray, double maxDistance, HitVisitor visitor) {
-        double t = intersect(prim, ray);
+    boolean visitHits(int prim, Hit query, double maxDistance, HitVisitor visitor) {
+        double t = intersect(prim, query);
         return !within(t, maxDistance) || visitor.visit(this, t);
     }
 
     /** The early-out of the whole-mesh queries: false when the ray cannot reach the mesh before {@code tMax}. */
-    private boolean mayHit(Ray ray, double tMax) {
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        return paddedBounds.intersects(h.getX(), h.getY(), h.getZ(), 1 / d.getX(), 1 / d.getY(), 1 / d.getZ(), tMax);
+    private boolean mayHit(Hit query, double tMax) {
+        return paddedBounds.intersects(query.ox, query.oy, query.oz, 1 / query.dx, 1 / query.dy, 1 / query.dz, tMax);
     }
 
     /** Tests the triangles in index order, as a list of the same {@link Triangle}s would be. */
     @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        if (!mayHit(ray, hit.t)) return false;
+    public boolean closestHit(Hit hit) {
+        if (!mayHit(hit, hit.t)) return false;
         boolean found = false;
-        for (int k = 0, n = triangleCount(); k < n; ++k) found |= closestHit(k, ray, hit);
+        for (int k = 0, n = triangleCount(); k < n; ++k) found |= closestHit(k, hit);
         return found;
     }
 
     @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        if (!mayHit(ray, Double.POSITIVE_INFINITY)) return true;
+    public boolean closestHit(Ray ray, Hit hit) {
+        return closestHit(hit.setRay(ray));
+    }
+
+    @Override
+    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        if (!mayHit(query, Double.POSITIVE_INFINITY)) return true;
         for (int k = 0, n = triangleCount(); k < n; ++k)
-            if (!visitHits(k, ray, maxDistance, visitor)) return false;
+            if (!visitHits(k, query, maxDistance, visitor)) return false;
         return true;
     }
 
     @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        return visitHits(Hit.of(ray), maxDistance, visitor);
+    }
+
+    @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        if (!mayHit(ray, Double.POSITIVE_INFINITY)) return null;
+        Hit query = Hit.of(ray);
+        if (!mayHit(query, Double.POSITIVE_INFINITY)) return null;
         List<GeoPoint> result = null;
         for (int k = 0, n = triangleCount(); k < n; ++k) {
-            double t = intersect(k, ray);
+            double t = intersect(k, query);
             if (within(t, maxDistance)) {
                 if (result == null) result = new ArrayList<>(2);
                 result.add(new GeoPoint(this, ray.getPoint(t)));

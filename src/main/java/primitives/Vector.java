@@ -140,16 +140,44 @@ public class Vector extends Point {
      *         are divided by their largest component first.
      */
     public Vector normalize() {
-        double len2 = lengthSquared();
-        if (Util.isZero(len2 - 1)) return this;
+        double[] unit = new double[3]; // scalar-replaced by the JIT once normalize is inlined
+        return normalize(x, y, z, unit) ? new Vector(unit[0], unit[1], unit[2], true) : this;
+    }
+
+    /**
+     * The arithmetic of {@link #normalize()} on raw components, for a tracer that keeps its
+     * vectors in doubles: the one implementation of normalization, so both forms give the same
+     * bits.
+     *
+     * @param x   the x component of a non-zero, finite vector (not checked)
+     * @param y   the y component
+     * @param z   the z component
+     * @param out receives the unit vector's components in {@code out[0..2]}
+     * @return false when (x, y, z) already has unit length within the zero tolerance: {@code out}
+     *         then holds it unchanged
+     */
+    public static boolean normalize(double x, double y, double z, double[] out) {
+        double len2 = x * x + y * y + z * z;
+        if (Util.isZero(len2 - 1)) {
+            out[0] = x;
+            out[1] = y;
+            out[2] = z;
+            return false;
+        }
         if (len2 > SAFE_MIN && len2 < SAFE_MAX) {
             double inv = 1.0 / Math.sqrt(len2);
-            return new Vector(x * inv, y * inv, z * inv, true);
+            out[0] = x * inv;
+            out[1] = y * inv;
+            out[2] = z * inv;
+            return true;
         }
-        double m = maxAbs();
+        double m = Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
         double sx = x / m, sy = y / m, sz = z / m; // the largest is ±1: the squares are safe
         double inv = 1.0 / Math.sqrt(sx * sx + sy * sy + sz * sz);
-        return new Vector(sx * inv, sy * inv, sz * inv, true);
+        out[0] = sx * inv;
+        out[1] = sy * inv;
+        out[2] = sz * inv;
+        return true;
     }
 
     /** @return this vector scaled by −1 (never zero, so unchecked) */

@@ -243,7 +243,9 @@ public class RayTracerBasic extends RayTracerBase {
         Transmittance tr = ctx.transmittance;
         if (radius == 0) {
             ctx.shadowRays++;
-            w.visitHits(new Ray(p, l.negate(), n), light.getDistance(p), tr.reset());
+            Hit shadow = ctx.shadow.setRay(p.getX(), p.getY(), p.getZ(), -l.getX(), -l.getY(), -l.getZ(), n.getX(),
+                    n.getY(), n.getZ());
+            w.visitHits(shadow, light.getDistance(p), tr.reset());
             return tr.r == 1 && tr.g == 1 && tr.b == 1 ? Double3.ONE : new Double3(tr.r, tr.g, tr.b);
         }
         // Soft shadow: stratified points on the disk of the light facing p.
@@ -266,7 +268,8 @@ public class RayTracerBasic extends RayTracerBase {
             // A point of the disk below the surface's horizon sends no light to p.
             if (dist == 0 || (dx * n.getX() + dy * n.getY() + dz * n.getZ()) * side <= 0) continue;
             ctx.shadowRays++;
-            w.visitHits(new Ray(p, new Vector(dx, dy, dz), n), dist, tr.reset());
+            w.visitHits(ctx.shadow.setRay(p.getX(), p.getY(), p.getZ(), dx, dy, dz, n.getX(), n.getY(), n.getZ()), dist,
+                    tr.reset());
             sr += tr.r;
             sg += tr.g;
             sb += tr.b;

@@ -13,6 +13,8 @@ final class TraceContext {
     /** Scratch for one point of a disk (soft-shadow light disks, glossy aim disks). */
     final double[] disk = new double[2];
     private final Hit[] hits;
+    /** The query record of shadow rays: only its ray is used (an any-hit walk records no hit). */
+    final Hit shadow = new Hit();
     long cameraRays;
     long shadowRays;
     long secondaryRays;
