@@ -2,6 +2,7 @@ package geometries;
 
 import primitives.Point;
 import primitives.Ray;
+import primitives.Util;
 import primitives.Vector;
 
 /**
@@ -24,7 +25,7 @@ public final class Hit {
     double t = Double.POSITIVE_INFINITY;
     Geometry geometry;
     /**
-     * Which part of the geometry was hit, for {@link Geometry#normalAt}: a mesh's triangle index,
+     * Which part of the geometry was hit, for {@code Geometry.normalAt}: a mesh's triangle index,
      * a tube's or cylinder's surface; 0 for simple shapes.
      */
     int primitive;
@@ -34,6 +35,10 @@ public final class Hit {
     double dx, dy, dz;
     /** Scratch for the normalization of a direction. */
     private final double[] unit = new double[3];
+    /** The hit point, set by {@link #computeSurface()}. */
+    double px, py, pz;
+    /** The unit surface normal at the hit point, set by {@link #computeSurface()}. */
+    final double[] normal = new double[3];
     /**
      * The BVH walk's node stack, owned by the thread that owns this record; grown by the first
      * walk that needs it (records used only for shadow queries never need one).
@@ -193,6 +198,57 @@ public final class Hit {
     }
 
     /**
+     * Computes the hit point on the query ray (the doubles {@code ray.getPoint(getT())} would
+     * hold) and the unit surface normal there, for {@link #pointX()} … {@link #normalZ()}: the
+     * shading inputs, without objects. Call it after a query that found something.
+     *
+     * @return this record
+     */
+    public Hit computeSurface() {
+        if (Util.isZero(t)) { // Ray.getPoint's rule: t ≈ 0 is the head itself
+            px = ox;
+            py = oy;
+            pz = oz;
+        } else {
+            px = ox + dx * t;
+            py = oy + dy * t;
+            pz = oz + dz * t;
+        }
+        geometry.normalAt(this);
+        return this;
+    }
+
+    /** @return the x coordinate of the hit point, from {@link #computeSurface()} */
+    public double pointX() {
+        return px;
+    }
+
+    /** @return the y coordinate of the hit point, from {@link #computeSurface()} */
+    public double pointY() {
+        return py;
+    }
+
+    /** @return the z coordinate of the hit point, from {@link #computeSurface()} */
+    public double pointZ() {
+        return pz;
+    }
+
+    /** @return the x component of the unit surface normal, from {@link #computeSurface()} */
+    public double normalX() {
+        return normal[0];
+    }
+
+    /** @return the y component of the unit surface normal, from {@link #computeSurface()} */
+    public double normalY() {
+        return normal[1];
+    }
+
+    /** @return the z component of the unit surface normal, from {@link #computeSurface()} */
+    public double normalZ() {
+        return normal[2];
+    }
+
+    /**
      * @param ray the ray the query was made with (the record keeps only its distance)
      * @return the hit point on {@code ray}
      */
@@ -205,6 +261,10 @@ public final class Hit {
      * @return the unit surface normal at {@code point}; a mesh's smooth normal when it has vertex normals
      */
     public Vector normal(Point point) {
-        return geometry.normalAt(point, this);
+        px = point.getX();
+        py = point.getY();
+        pz = point.getZ();
+        geometry.normalAt(this);
+        return new Vector(normal[0], normal[1], normal[2]);
     }
 }

@@ -72,6 +72,13 @@ public class Plane extends SingleHitGeometry {
         return normal;
     }
 
+    @Override
+    void normalAt(Hit hit) {
+        hit.normal[0] = normal.getX();
+        hit.normal[1] = normal.getY();
+        hit.normal[2] = normal.getZ();
+    }
+
     /** NaN when the ray is parallel to the plane or starts on it. */
     @Override
     double distanceTo(Hit query) {

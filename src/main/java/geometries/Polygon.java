@@ -112,6 +112,11 @@ public class Polygon extends SingleHitGeometry {
         return plane.getNormal();
     }
 
+    @Override
+    void normalAt(Hit hit) {
+        plane.normalAt(hit);
+    }
+
     /** NaN when the ray misses the polygon or grazes its boundary. */
     @Override
     double distanceTo(Hit query) {

@@ -58,8 +58,19 @@ public class Sphere extends Geometry {
     public Vector getNormal(Point point) {
         // Divided by the radius first: for a point on the surface that is already unit length
         // within the zero tolerance, so normalize() returns it without a second allocation.
-        return new Vector((point.getX() - center.getX()) / radius, (point.getY() - center.getY()) / radius,
-                (point.getZ() - center.getZ()) / radius).normalize();
+        double[] n = new double[3];
+        normal(point.getX(), point.getY(), point.getZ(), n);
+        return new Vector(n[0], n[1], n[2]);
+    }
+
+    /** The normal at (x, y, z) into {@code out[0..2]}: the one computation of both forms. */
+    private void normal(double x, double y, double z, double[] out) {
+        Vector.normalize((x - center.getX()) / radius, (y - center.getY()) / radius, (z - center.getZ()) / radius, out);
+    }
+
+    @Override
+    void normalAt(Hit hit) {
+        normal(hit.px, hit.py, hit.pz, hit.normal);
     }
 
     /** Distance along the ray to the point nearest the centre: the middle of the two roots. */

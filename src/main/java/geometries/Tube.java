@@ -54,7 +54,11 @@ public class Tube extends Geometry {
 
     /** @return the signed distance of {@code p}'s projection along the axis from the axis head */
     double axial(Point p) {
-        return (p.getX() - px) * vx + (p.getY() - py) * vy + (p.getZ() - pz) * vz;
+        return axial(p.getX(), p.getY(), p.getZ());
+    }
+
+    private double axial(double x, double y, double z) {
+        return (x - px) * vx + (y - py) * vy + (z - pz) * vz;
     }
 
     @Override
@@ -64,19 +68,34 @@ public class Tube extends Geometry {
 
     /** The shell's normal: from the point's foot on the axis to the point, unit length. */
     final Vector radialNormal(Point point) {
-        double s = axial(point);
-        return new Vector(point.getX() - (px + vx * s), point.getY() - (py + vy * s), point.getZ() - (pz + vz * s))
-                .normalize();
+        double[] n = new double[3];
+        radialNormal(point.getX(), point.getY(), point.getZ(), n);
+        return new Vector(n[0], n[1], n[2]);
+    }
+
+    /** The shell's normal at (x, y, z) into {@code out[0..2]}: the one computation of both forms. */
+    private void radialNormal(double x, double y, double z, double[] out) {
+        double s = axial(x, y, z);
+        Vector.normalize(x - (px + vx * s), y - (py + vy * s), z - (pz + vz * s), out);
     }
 
     /** The normal of the surface recorded by the closest-hit query: no guessing from the point. */
     @Override
-    Vector normalAt(Point point, Hit hit) {
-        return switch (hit.primitive) {
-        case BOTTOM -> axis.getDirection().negate();
-        case TOP -> axis.getDirection();
-        default -> radialNormal(point);
-        };
+    void normalAt(Hit hit) {
+        double[] n = hit.normal;
+        switch (hit.primitive) {
+        case BOTTOM -> { // the axis direction, negated
+            n[0] = -vx;
+            n[1] = -vy;
+            n[2] = -vz;
+        }
+        case TOP -> {
+            n[0] = vx;
+            n[1] = vy;
+            n[2] = vz;
+        }
+        default -> radialNormal(hit.px, hit.py, hit.pz, n);
+        }
     }
 
     /**

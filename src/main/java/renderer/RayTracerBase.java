@@ -2,8 +2,11 @@ package renderer;
 
 import java.util.Objects;
 
+import geometries.Hit;
 import primitives.Color;
+import primitives.Point;
 import primitives.Ray;
+import primitives.Vector;
 import scene.Scene;
 
 /** Computes the colour a ray sees in a scene. */
@@ -30,11 +33,18 @@ public abstract class RayTracerBase {
     }
 
     /**
-     * The render loop's entry: like {@link #traceRay(Ray)}, with the worker's scratch state and
-     * the sample's random stream. Tracers outside this package simply get {@link #traceRay(Ray)}.
+     * The render loop's entry: traces the camera ray held in {@link TraceContext#cameraRay()}
+     * (as doubles) and leaves the colour seen in {@code ctx.r, ctx.g, ctx.b}, using the worker's
+     * scratch state and the sample's random stream. Tracers outside this package simply get
+     * {@link #traceRay(Ray)}, with the ray as an object.
      */
-    Color traceRay(Ray ray, TraceContext context) {
-        return traceRay(ray);
+    void traceRay(TraceContext ctx) {
+        Hit h = ctx.cameraRay();
+        Color c = traceRay(new Ray(new Point(h.headX(), h.headY(), h.headZ()),
+                new Vector(h.directionX(), h.directionY(), h.directionZ())));
+        ctx.r = c.getR();
+        ctx.g = c.getG();
+        ctx.b = c.getB();
     }
 
     /** A short description of the tracer's settings for the render summary. */
