@@ -18,7 +18,10 @@ import primitives.Vector;
  * tests, returning {@code null} when nothing is hit;</li>
  * <li>the renderer's lean path: {@link #closestHit(Ray, Hit)} with a shrinking {@code tMax} and
  * the any-hit walk {@link #visitHits(Ray, double, HitVisitor)} for shadow rays, neither of which
- * builds a list.</li>
+ * builds a list; and the same two queries of a ray held in a {@link Hit} as doubles
+ * ({@link #closestHit(Hit)}, {@link #visitHits(Hit, double, HitVisitor)}), which is how the
+ * renderer calls them, without a {@link Ray} object per ray. The library's shapes implement the
+ * doubles form once; their {@code Ray} forms load the ray into a record and call it.</li>
  * </ul>
  * Both faces accept a hit at distance {@code t} when {@code alignZero(t) > 0}, so the two always
  * agree. A subclass written by a user only needs one of the three course years' hooks
@@ -295,7 +298,12 @@ public abstract class Intersectable {
      * @return true when {@code hit} was updated
      */
     public boolean closestHit(Hit hit) {
-        return closestHit(hit.ray(), hit);
+        Ray ray = hit.ray();
+        boolean found = closestHit(ray, hit);
+        // A user's closestHit(Ray, Hit) may have asked other shapes with this record and another
+        // ray (a transformed one, say), which loads that ray into it: the caller's ray is put back.
+        hit.setRay(ray);
+        return found;
     }
 
     /**
