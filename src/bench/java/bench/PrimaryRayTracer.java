@@ -30,4 +30,10 @@ final class PrimaryRayTracer extends RayTracerBase {
     public Color traceRay(Ray ray) {
         return bvh.closestHit(ray, hits.get().reset(Double.POSITIVE_INFINITY)) ? WHITE : Color.BLACK;
     }
+
+    /** The render loop's form: the camera's record goes straight to the walk, no ray object. */
+    @Override
+    protected Color traceRay(Hit ray) {
+        return bvh.closestHit(ray.reset(Double.POSITIVE_INFINITY)) ? WHITE : Color.BLACK;
+    }
 }

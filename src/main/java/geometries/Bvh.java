@@ -5,9 +5,7 @@ import java.util.List;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveAction;
 
-import primitives.Point;
 import primitives.Ray;
-import primitives.Vector;
 
 /**
  * A bounding volume hierarchy: just another {@link Intersectable}. Built once from the leaves of
@@ -196,14 +194,12 @@ public final class Bvh extends Intersectable {
      * when popped it is skipped if a hit nearer than its box was found meanwhile.
      */
     @Override
-    public boolean closestHit(Ray ray, Hit hit) {
+    public boolean closestHit(Hit hit) {
         boolean found = false;
-        for (Intersectable u : unbounded) found |= u.closestHit(ray, hit);
+        for (Intersectable u : unbounded) found |= u.closestHit(hit);
         if (nodeCount == 0) return found;
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        double ox = h.getX(), oy = h.getY(), oz = h.getZ();
-        double ix = BoundingBox.inverse(d.getX()), iy = BoundingBox.inverse(d.getY()), iz = BoundingBox.inverse(d.getZ());
+        double ox = hit.ox, oy = hit.oy, oz = hit.oz;
+        double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
         if (!(entry(0, ox, oy, oz, ix, iy, iz, hit.t) < hit.t)) return found;
         if (hit.stack.length < depth) {
             hit.stack = new int[depth];
@@ -219,7 +215,7 @@ public final class Bvh extends Intersectable {
             int count = Float.floatToRawIntBits(nd[o + 7]);
             if (count > 0) {
                 for (int k = Float.floatToRawIntBits(nd[o + 6]), end = k + count; k < end; ++k)
-                    found |= owner[k].closestHit(prim[k], ray, hit);
+                    found |= owner[k].closestHit(prim[k], hit);
             } else {
                 int left = n + 1, right = Float.floatToRawIntBits(nd[o + 6]);
                 double tl = entry(left, ox, oy, oz, ix, iy, iz, hit.t);
@@ -250,15 +246,18 @@ public final class Bvh extends Intersectable {
         }
     }
 
+    @Override
+    public boolean closestHit(Ray ray, Hit hit) {
+        return closestHit(hit.setRay(ray));
+    }
+
     /** The stackless walk: order does not matter for an any-hit query, so skip links suffice. */
     @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         for (Intersectable u : unbounded)
-            if (!u.visitHits(ray, maxDistance, visitor)) return false;
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        double ox = h.getX(), oy = h.getY(), oz = h.getZ();
-        double ix = BoundingBox.inverse(d.getX()), iy = BoundingBox.inverse(d.getY()), iz = BoundingBox.inverse(d.getZ());
+            if (!u.visitHits(query, maxDistance, visitor)) return false;
+        double ox = query.ox, oy = query.oy, oz = query.oz;
+        double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
         // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
         float[] nd = node;
@@ -271,11 +270,16 @@ public final class Bvh extends Intersectable {
             }
             if (last > 0) {
                 for (int k = Float.floatToRawIntBits(nd[n * NODE + 6]), end = k + last; k < end; ++k)
-                    if (!owner[k].visitHits(prim[k], ray, maxDistance, visitor)) return false;
+                    if (!owner[k].visitHits(prim[k], query, maxDistance, visitor)) return false;
             }
             ++n; // into an inner node's left child, or past a leaf
         }
         return true;
+    }
+
+    @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        return visitHits(Hit.of(ray), maxDistance, visitor);
     }
 
     @Override

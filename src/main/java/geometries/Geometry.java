@@ -53,10 +53,15 @@ public abstract class Geometry extends Intersectable {
     public abstract Vector getNormal(Point point);
 
     /**
-     * The unit normal at a closest-hit point; meshes override it to use the triangle and
-     * barycentric coordinates recorded in {@code hit}.
+     * Writes the unit normal at the hit point of {@code hit} (its {@code px, py, pz}) into
+     * {@code hit.normal}. The library's shapes override it with their normal in doubles (a mesh
+     * and a tube use the triangle or surface the hit recorded); the default, for users' own
+     * shapes, asks {@link #getNormal(Point)}.
      */
-    Vector normalAt(Point point, Hit hit) {
-        return getNormal(point);
+    void normalAt(Hit hit) {
+        Vector n = getNormal(new Point(hit.px, hit.py, hit.pz));
+        hit.normal[0] = n.getX();
+        hit.normal[1] = n.getY();
+        hit.normal[2] = n.getZ();
     }
 }

@@ -18,7 +18,10 @@ import primitives.Vector;
  * tests, returning {@code null} when nothing is hit;</li>
  * <li>the renderer's lean path: {@link #closestHit(Ray, Hit)} with a shrinking {@code tMax} and
  * the any-hit walk {@link #visitHits(Ray, double, HitVisitor)} for shadow rays, neither of which
- * builds a list.</li>
+ * builds a list; and the same two queries of a ray held in a {@link Hit} as doubles
+ * ({@link #closestHit(Hit)}, {@link #visitHits(Hit, double, HitVisitor)}), which is how the
+ * renderer calls them, without a {@link Ray} object per ray. The library's shapes implement the
+ * doubles form once; their {@code Ray} forms load the ray into a record and call it.</li>
  * </ul>
  * Both faces accept a hit at distance {@code t} when {@code alignZero(t) > 0}, so the two always
  * agree. A subclass written by a user only needs one of the three course years' hooks
@@ -260,7 +263,9 @@ public abstract class Intersectable {
 
     /**
      * The lean closest-hit query. {@code hit.t} is the current upper bound: a hit nearer than it
-     * (and with {@code alignZero(t) > 0}) replaces the record.
+     * (and with {@code alignZero(t) > 0}) replaces the record. The library's shapes answer it with
+     * {@link #closestHit(Hit)} (the ray loaded into the record); by default, for users' own
+     * shapes, it takes the nearest of {@link #findGeoIntersectionsHelper}'s list.
      *
      * @param ray the ray to intersect
      * @param hit the record to update; its {@code t} is the upper bound
@@ -282,6 +287,26 @@ public abstract class Intersectable {
     }
 
     /**
+     * The closest-hit query of the ray {@code hit} carries (see
+     * {@link Hit#setRay(double, double, double, double, double, double)}), without any ray
+     * object: the renderer's form. Same contract as {@link #closestHit(Ray, Hit)}; the library's
+     * shapes implement this one, and their {@link #closestHit(Ray, Hit)} loads the ray and calls
+     * it. The default, for users' own shapes, builds the {@link Ray} and calls
+     * {@link #closestHit(Ray, Hit)}.
+     *
+     * @param hit the record holding the query ray; its {@code t} is the upper bound
+     * @return true when {@code hit} was updated
+     */
+    public boolean closestHit(Hit hit) {
+        Ray ray = hit.ray();
+        boolean found = closestHit(ray, hit);
+        // A user's closestHit(Ray, Hit) may have asked other shapes with this record and another
+        // ray (a transformed one, say), which loads that ray into it: the caller's ray is put back.
+        hit.setRay(ray);
+        return found;
+    }
+
+    /**
      * The any-hit walk: calls {@code visitor} for every intersection with {@code alignZero(t) > 0}
      * and {@code alignZero(t - maxDistance) <= 0}, in no particular order, until it returns false.
      *
@@ -297,6 +322,21 @@ public abstract class Intersectable {
         for (GeoPoint gp : list)
             if (!visitor.visit(gp.geometry, gp.point.distance(head))) return false;
         return true;
+    }
+
+    /**
+     * The any-hit walk of the ray {@code query} carries, without any ray object: the renderer's
+     * form of {@link #visitHits(Ray, double, HitVisitor)}, with the same contract. Only the ray
+     * of {@code query} is read; its hit fields are left alone. The default, for users' own
+     * shapes, builds the {@link Ray} and calls {@link #visitHits(Ray, double, HitVisitor)}.
+     *
+     * @param query       the record holding the query ray
+     * @param maxDistance the largest distance from the ray head that counts
+     * @param visitor     called with each hit's geometry and distance
+     * @return false when the visitor stopped the walk
+     */
+    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        return visitHits(query.ray(), maxDistance, visitor);
     }
 
     /** @return the axis-aligned box enclosing this shape, or null when it is unbounded */
@@ -322,14 +362,24 @@ public abstract class Intersectable {
         return getBoundingBox();
     }
 
-    /** {@link #closestHit(Ray, Hit)} restricted to primitive {@code prim}. */
-    boolean closestHit(int prim, Ray ray, Hit hit) {
-        return closestHit(ray, hit);
+    /** {@link #closestHit(Hit)} restricted to primitive {@code prim}. */
+    boolean closestHit(int prim, Hit hit) {
+        return closestHit(hit);
     }
 
-    /** {@link #visitHits(Ray, double, HitVisitor)} restricted to primitive {@code prim}. */
-    boolean visitHits(int prim, Ray ray, double maxDistance, HitVisitor visitor) {
-        return visitHits(ray, maxDistance, visitor);
+    /** {@link #visitHits(Hit, double, HitVisitor)} restricted to primitive {@code prim}. */
+    boolean visitHits(int prim, Hit query, double maxDistance, HitVisitor visitor) {
+        return visitHits(query, maxDistance, visitor);
+    }
+
+    /** {@link #closestHit(int, Hit)} with the ray as an object (for tests). */
+    final boolean closestHit(int prim, Ray ray, Hit hit) {
+        return closestHit(prim, hit.setRay(ray));
+    }
+
+    /** {@link #visitHits(int, Hit, double, HitVisitor)} with the ray as an object (for tests). */
+    final boolean visitHits(int prim, Ray ray, double maxDistance, HitVisitor visitor) {
+        return visitHits(prim, Hit.of(ray), maxDistance, visitor);
     }
 
     /** @return true when {@code t} is a valid hit distance below the strict bound {@code tMax} */

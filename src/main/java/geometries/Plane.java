@@ -3,7 +3,6 @@ package geometries;
 import java.util.Objects;
 
 import primitives.Point;
-import primitives.Ray;
 import primitives.Util;
 import primitives.Vector;
 
@@ -73,15 +72,20 @@ public class Plane extends SingleHitGeometry {
         return normal;
     }
 
+    @Override
+    void normalAt(Hit hit) {
+        hit.normal[0] = normal.getX();
+        hit.normal[1] = normal.getY();
+        hit.normal[2] = normal.getZ();
+    }
+
     /** NaN when the ray is parallel to the plane or starts on it. */
     @Override
-    double distanceTo(Ray ray) {
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        double nd = Util.alignZero(normal.getX() * d.getX() + normal.getY() * d.getY() + normal.getZ() * d.getZ());
+    double distanceTo(Hit query) {
+        double nd = Util.alignZero(normal.getX() * query.dx + normal.getY() * query.dy + normal.getZ() * query.dz);
         if (nd == 0) return Double.NaN;
-        double nqh = Util.alignZero(normal.getX() * (q.getX() - h.getX()) + normal.getY() * (q.getY() - h.getY())
-                + normal.getZ() * (q.getZ() - h.getZ()));
+        double nqh = Util.alignZero(normal.getX() * (q.getX() - query.ox) + normal.getY() * (q.getY() - query.oy)
+                + normal.getZ() * (q.getZ() - query.oz));
         if (nqh == 0) return Double.NaN;
         return nqh / nd;
     }

@@ -4,7 +4,6 @@ import java.util.List;
 import java.util.Objects;
 
 import primitives.Point;
-import primitives.Ray;
 import primitives.Util;
 import primitives.Vector;
 
@@ -113,14 +112,17 @@ public class Polygon extends SingleHitGeometry {
         return plane.getNormal();
     }
 
+    @Override
+    void normalAt(Hit hit) {
+        plane.normalAt(hit);
+    }
+
     /** NaN when the ray misses the polygon or grazes its boundary. */
     @Override
-    double distanceTo(Ray ray) {
-        double t = plane.distanceTo(ray);
+    double distanceTo(Hit query) {
+        double t = plane.distanceTo(query);
         if (!(t > 0)) return Double.NaN;
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        double px = h.getX() + d.getX() * t, py = h.getY() + d.getY() * t, pz = h.getZ() + d.getZ() * t;
+        double px = query.ox + query.dx * t, py = query.oy + query.dy * t, pz = query.oz + query.dz * t;
         // Inside when P is strictly on the inner side of every edge: (edge × (P − vertex)) · n > 0.
         for (int i = 0; i < size; ++i) {
             double wx = px - vx[i], wy = py - vy[i], wz = pz - vz[i];

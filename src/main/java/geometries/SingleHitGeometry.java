@@ -5,34 +5,44 @@ import java.util.List;
 import primitives.Ray;
 
 /**
- * A flat shape that a ray's line crosses at most once (a plane, a convex polygon): its three
- * queries all reduce to one distance, so they are written once here around
- * {@link #distanceTo(Ray)}.
+ * A flat shape that a ray's line crosses at most once (a plane, a convex polygon): its queries
+ * all reduce to one distance, so they are written once here around {@link #distanceTo(Hit)}.
  */
 abstract class SingleHitGeometry extends Geometry {
     /**
+     * @param query the record holding the ray
      * @return the distance along the ray to its hit, or NaN when it misses; the callers apply the
      *         range rules, so a non-positive distance may be returned as is
      */
-    abstract double distanceTo(Ray ray);
+    abstract double distanceTo(Hit query);
 
     @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        double t = distanceTo(ray);
+    public boolean closestHit(Hit hit) {
+        double t = distanceTo(hit);
         if (!inRange(t, hit.t)) return false;
         hit.set(t, this, 0);
         return true;
     }
 
     @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        double t = distanceTo(ray);
+    public boolean closestHit(Ray ray, Hit hit) {
+        return closestHit(hit.setRay(ray));
+    }
+
+    @Override
+    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        double t = distanceTo(query);
         return !within(t, maxDistance) || visitor.visit(this, t);
     }
 
     @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        return visitHits(Hit.of(ray), maxDistance, visitor);
+    }
+
+    @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        double t = distanceTo(ray);
+        double t = distanceTo(Hit.of(ray));
         return within(t, maxDistance) ? List.of(new GeoPoint(this, ray.getPoint(t))) : null;
     }
 }

@@ -58,16 +58,24 @@ public class Sphere extends Geometry {
     public Vector getNormal(Point point) {
         // Divided by the radius first: for a point on the surface that is already unit length
         // within the zero tolerance, so normalize() returns it without a second allocation.
-        return new Vector((point.getX() - center.getX()) / radius, (point.getY() - center.getY()) / radius,
-                (point.getZ() - center.getZ()) / radius).normalize();
+        double[] n = new double[3];
+        normal(point.getX(), point.getY(), point.getZ(), n);
+        return new Vector(n[0], n[1], n[2]);
+    }
+
+    /** The normal at (x, y, z) into {@code out[0..2]}: the one computation of both forms. */
+    private void normal(double x, double y, double z, double[] out) {
+        Vector.normalize((x - center.getX()) / radius, (y - center.getY()) / radius, (z - center.getZ()) / radius, out);
+    }
+
+    @Override
+    void normalAt(Hit hit) {
+        normal(hit.px, hit.py, hit.pz, hit.normal);
     }
 
     /** Distance along the ray to the point nearest the centre: the middle of the two roots. */
-    private double projection(Ray ray) {
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        return (center.getX() - h.getX()) * d.getX() + (center.getY() - h.getY()) * d.getY()
-                + (center.getZ() - h.getZ()) * d.getZ();
+    private double projection(Hit q) {
+        return (center.getX() - q.ox) * q.dx + (center.getY() - q.oy) * q.dy + (center.getZ() - q.oz) * q.dz;
     }
 
     /**
@@ -80,20 +88,23 @@ public class Sphere extends Geometry {
      *
      * @return th, or NaN when the ray misses or only touches the sphere (a tangent is no hit)
      */
-    private double halfChord(Ray ray, double tm) {
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        double px = center.getX() - h.getX() - tm * d.getX();
-        double py = center.getY() - h.getY() - tm * d.getY();
-        double pz = center.getZ() - h.getZ() - tm * d.getZ();
+    private double halfChord(Hit q, double tm) {
+        double px = center.getX() - q.ox - tm * q.dx;
+        double py = center.getY() - q.oy - tm * q.dy;
+        double pz = center.getZ() - q.oz - tm * q.dz;
         double th2 = radiusSquared - (px * px + py * py + pz * pz);
         return Util.alignZero(th2) <= 0 ? Double.NaN : Math.sqrt(th2);
     }
 
     @Override
     public boolean closestHit(Ray ray, Hit hit) {
-        double tm = projection(ray);
-        double th = halfChord(ray, tm);
+        return closestHit(hit.setRay(ray));
+    }
+
+    @Override
+    public boolean closestHit(Hit hit) {
+        double tm = projection(hit);
+        double th = halfChord(hit, tm);
         if (Double.isNaN(th)) return false;
         double t = tm - th;
         if (!(Util.alignZero(t) > 0)) t = tm + th;
@@ -104,8 +115,13 @@ public class Sphere extends Geometry {
 
     @Override
     public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        double tm = projection(ray);
-        double th = halfChord(ray, tm);
+        return visitHits(Hit.of(ray), maxDistance, visitor);
+    }
+
+    @Override
+    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        double tm = projection(query);
+        double th = halfChord(query, tm);
         if (Double.isNaN(th)) return true;
         if (within(tm - th, maxDistance) && !visitor.visit(this, tm - th)) return false;
         return !within(tm + th, maxDistance) || visitor.visit(this, tm + th);
@@ -113,8 +129,9 @@ public class Sphere extends Geometry {
 
     @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        double tm = projection(ray);
-        double th = halfChord(ray, tm);
+        Hit query = Hit.of(ray);
+        double tm = projection(query);
+        double th = halfChord(query, tm);
         if (Double.isNaN(th)) return null;
         List<GeoPoint> result = new ArrayList<>(2);
         if (within(tm - th, maxDistance)) result.add(new GeoPoint(this, ray.getPoint(tm - th)));

@@ -1,9 +1,7 @@
 package geometries;
 
 import primitives.Point;
-import primitives.Ray;
 import primitives.Util;
-import primitives.Vector;
 
 /**
  * A triangle: a polygon of three vertices, intersected with the Möller–Trumbore kernel that
@@ -37,16 +35,14 @@ public class Triangle extends Polygon {
      *
      * @return the hit distance (possibly ≤ 0: the caller checks the range), or NaN on a miss
      */
-    static double intersect(Ray ray, double ax, double ay, double az,
+    static double intersect(Hit query, double ax, double ay, double az,
                             double e1x, double e1y, double e1z, double e2x, double e2y, double e2z) {
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        double dx = d.getX(), dy = d.getY(), dz = d.getZ();
+        double dx = query.dx, dy = query.dy, dz = query.dz;
         double px = dy * e2z - dz * e2y, py = dz * e2x - dx * e2z, pz = dx * e2y - dy * e2x;
         double det = e1x * px + e1y * py + e1z * pz;
         if (Util.isZero(det)) return Double.NaN;
         double inv = 1.0 / det;
-        double tx = h.getX() - ax, ty = h.getY() - ay, tz = h.getZ() - az;
+        double tx = query.ox - ax, ty = query.oy - ay, tz = query.oz - az;
         double u = (tx * px + ty * py + tz * pz) * inv;
         if (Util.alignZero(u) <= 0 || Util.alignZero(u - 1) >= 0) return Double.NaN;
         double qx = ty * e1z - tz * e1y, qy = tz * e1x - tx * e1z, qz = tx * e1y - ty * e1x;
@@ -57,7 +53,7 @@ public class Triangle extends Polygon {
 
     /** Möller–Trumbore instead of the polygon's plane-then-edges test. */
     @Override
-    double distanceTo(Ray ray) {
-        return intersect(ray, ax, ay, az, e1x, e1y, e1z, e2x, e2y, e2z);
+    double distanceTo(Hit query) {
+        return intersect(query, ax, ay, az, e1x, e1y, e1z, e2x, e2y, e2z);
     }
 }

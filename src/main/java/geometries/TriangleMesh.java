@@ -235,12 +235,12 @@ public class TriangleMesh extends Geometry {
     }
 
     /** @return the distance to triangle {@code k} along the ray (see {@code Triangle.intersect}), or NaN */
-    private double intersect(int k, Ray ray) {
+    private double intersect(int k, Hit query) {
         double[] p = positions;
         int a = 3 * indices[3 * k], b = 3 * indices[3 * k + 1], c = 3 * indices[3 * k + 2];
         double ax = p[a], ay = p[a + 1], az = p[a + 2];
         // The same subtractions Triangle makes in its constructor, so the kernel sees the same bits.
-        return Triangle.intersect(ray, ax, ay, az, p[b] - ax, p[b + 1] - ay, p[b + 2] - az,
+        return Triangle.intersect(query, ax, ay, az, p[b] - ax, p[b + 1] - ay, p[b + 2] - az,
                 p[c] - ax, p[c + 1] - ay, p[c + 2] - az);
     }
 
@@ -259,49 +259,58 @@ public class TriangleMesh extends Geometry {
     }
 
     @Override
-    boolean closestHit(int prim, Ray ray, Hit hit) {
-        double t = intersect(prim, ray);
+    boolean closestHit(int prim, Hit hit) {
+        double t = intersect(prim, hit);
         if (!inRange(t, hit.t)) return false;
         hit.set(t, this, prim);
         return true;
     }
 
     @Override
-    boolean visitHits(int prim, Ray ray, double maxDistance, HitVisitor visitor) {
-        double t = intersect(prim, ray);
+    boolean visitHits(int prim, Hit query, double maxDistance, HitVisitor visitor) {
+        double t = intersect(prim, query);
         return !within(t, maxDistance) || visitor.visit(this, t);
     }
 
     /** The early-out of the whole-mesh queries: false when the ray cannot reach the mesh before {@code tMax}. */
-    private boolean mayHit(Ray ray, double tMax) {
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        return paddedBounds.intersects(h.getX(), h.getY(), h.getZ(), 1 / d.getX(), 1 / d.getY(), 1 / d.getZ(), tMax);
+    private boolean mayHit(Hit query, double tMax) {
+        return paddedBounds.intersects(query.ox, query.oy, query.oz, 1 / query.dx, 1 / query.dy, 1 / query.dz, tMax);
     }
 
     /** Tests the triangles in index order, as a list of the same {@link Triangle}s would be. */
     @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        if (!mayHit(ray, hit.t)) return false;
+    public boolean closestHit(Hit hit) {
+        if (!mayHit(hit, hit.t)) return false;
         boolean found = false;
-        for (int k = 0, n = triangleCount(); k < n; ++k) found |= closestHit(k, ray, hit);
+        for (int k = 0, n = triangleCount(); k < n; ++k) found |= closestHit(k, hit);
         return found;
     }
 
     @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        if (!mayHit(ray, Double.POSITIVE_INFINITY)) return true;
+    public boolean closestHit(Ray ray, Hit hit) {
+        return closestHit(hit.setRay(ray));
+    }
+
+    @Override
+    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        if (!mayHit(query, Double.POSITIVE_INFINITY)) return true;
         for (int k = 0, n = triangleCount(); k < n; ++k)
-            if (!visitHits(k, ray, maxDistance, visitor)) return false;
+            if (!visitHits(k, query, maxDistance, visitor)) return false;
         return true;
     }
 
     @Override
+    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        return visitHits(Hit.of(ray), maxDistance, visitor);
+    }
+
+    @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        if (!mayHit(ray, Double.POSITIVE_INFINITY)) return null;
+        Hit query = Hit.of(ray);
+        if (!mayHit(query, Double.POSITIVE_INFINITY)) return null;
         List<GeoPoint> result = null;
         for (int k = 0, n = triangleCount(); k < n; ++k) {
-            double t = intersect(k, ray);
+            double t = intersect(k, query);
             if (within(t, maxDistance)) {
                 if (result == null) result = new ArrayList<>(2);
                 result.add(new GeoPoint(this, ray.getPoint(t)));
@@ -317,8 +326,8 @@ public class TriangleMesh extends Geometry {
 
     /** The normal of the recorded triangle at the hit point: interpolated, or the face normal. */
     @Override
-    Vector normalAt(Point point, Hit hit) {
-        return normalOf(hit.primitive, point);
+    void normalAt(Hit hit) {
+        normalOf(hit.primitive, hit.px, hit.py, hit.pz, hit.normal);
     }
 
     /**
@@ -343,16 +352,24 @@ public class TriangleMesh extends Geometry {
     }
 
     private Vector normalOf(int k, Point point) {
-        return normals == null ? faceNormal(k) : smoothNormal(k, point);
+        double[] n = new double[3];
+        normalOf(k, point.getX(), point.getY(), point.getZ(), n);
+        return new Vector(n[0], n[1], n[2]);
+    }
+
+    /** The normal of triangle k at (x, y, z) into {@code out[0..2]}: the one computation of both forms. */
+    private void normalOf(int k, double x, double y, double z, double[] out) {
+        if (normals == null) faceNormal(k, out);
+        else smoothNormal(k, x, y, z, out);
     }
 
     /** (v1 − v0) × (v2 − v0), normalized: the arithmetic of {@code Plane.normalOf}, the normal of a {@link Triangle}. */
-    private Vector faceNormal(int k) {
+    private void faceNormal(int k, double[] out) {
         double[] p = positions;
         int a = 3 * indices[3 * k], b = 3 * indices[3 * k + 1], c = 3 * indices[3 * k + 2];
         double v1x = p[b] - p[a], v1y = p[b + 1] - p[a + 1], v1z = p[b + 2] - p[a + 2];
         double v2x = p[c] - p[a], v2y = p[c + 1] - p[a + 1], v2z = p[c + 2] - p[a + 2];
-        return new Vector(v1y * v2z - v1z * v2y, v1z * v2x - v1x * v2z, v1x * v2y - v1y * v2x).normalize();
+        Vector.normalize(v1y * v2z - v1z * v2y, v1z * v2x - v1x * v2z, v1x * v2y - v1y * v2x, out);
     }
 
     /**
@@ -360,13 +377,13 @@ public class TriangleMesh extends Geometry {
      * (projected onto the triangle's plane and clamped into the triangle), normalized; the face
      * normal where the blend cancels out.
      */
-    private Vector smoothNormal(int k, Point point) {
+    private void smoothNormal(int k, double x, double y, double z, double[] out) {
         double[] p = positions;
         int ia = indices[3 * k], ib = indices[3 * k + 1], ic = indices[3 * k + 2];
         int a = 3 * ia, b = 3 * ib, c = 3 * ic;
         double e1x = p[b] - p[a], e1y = p[b + 1] - p[a + 1], e1z = p[b + 2] - p[a + 2];
         double e2x = p[c] - p[a], e2y = p[c + 1] - p[a + 1], e2z = p[c + 2] - p[a + 2];
-        double wx = point.getX() - p[a], wy = point.getY() - p[a + 1], wz = point.getZ() - p[a + 2];
+        double wx = x - p[a], wy = y - p[a + 1], wz = z - p[a + 2];
         double d11 = e1x * e1x + e1y * e1y + e1z * e1z, d12 = e1x * e2x + e1y * e2y + e1z * e2z;
         double d22 = e2x * e2x + e2y * e2y + e2z * e2z;
         double dw1 = wx * e1x + wy * e1y + wz * e1z, dw2 = wx * e2x + wy * e2y + wz * e2z;
@@ -383,8 +400,8 @@ public class TriangleMesh extends Geometry {
         double nx = w * n[a] + u * n[b] + v * n[c];
         double ny = w * n[a + 1] + u * n[b + 1] + v * n[c + 1];
         double nz = w * n[a + 2] + u * n[b + 2] + v * n[c + 2];
-        if (Util.isZero(nx) && Util.isZero(ny) && Util.isZero(nz)) return faceNormal(k);
-        return new Vector(nx, ny, nz).normalize();
+        if (Util.isZero(nx) && Util.isZero(ny) && Util.isZero(nz)) faceNormal(k, out);
+        else Vector.normalize(nx, ny, nz, out);
     }
 
     /** The squared distance from (px, py, pz) to triangle k (Ericson, Real-Time Collision Detection, 5.1.5). */

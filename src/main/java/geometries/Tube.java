@@ -54,7 +54,11 @@ public class Tube extends Geometry {
 
     /** @return the signed distance of {@code p}'s projection along the axis from the axis head */
     double axial(Point p) {
-        return (p.getX() - px) * vx + (p.getY() - py) * vy + (p.getZ() - pz) * vz;
+        return axial(p.getX(), p.getY(), p.getZ());
+    }
+
+    private double axial(double x, double y, double z) {
+        return (x - px) * vx + (y - py) * vy + (z - pz) * vz;
     }
 
     @Override
@@ -64,19 +68,34 @@ public class Tube extends Geometry {
 
     /** The shell's normal: from the point's foot on the axis to the point, unit length. */
     final Vector radialNormal(Point point) {
-        double s = axial(point);
-        return new Vector(point.getX() - (px + vx * s), point.getY() - (py + vy * s), point.getZ() - (pz + vz * s))
-                .normalize();
+        double[] n = new double[3];
+        radialNormal(point.getX(), point.getY(), point.getZ(), n);
+        return new Vector(n[0], n[1], n[2]);
+    }
+
+    /** The shell's normal at (x, y, z) into {@code out[0..2]}: the one computation of both forms. */
+    private void radialNormal(double x, double y, double z, double[] out) {
+        double s = axial(x, y, z);
+        Vector.normalize(x - (px + vx * s), y - (py + vy * s), z - (pz + vz * s), out);
     }
 
     /** The normal of the surface recorded by the closest-hit query: no guessing from the point. */
     @Override
-    Vector normalAt(Point point, Hit hit) {
-        return switch (hit.primitive) {
-        case BOTTOM -> axis.getDirection().negate();
-        case TOP -> axis.getDirection();
-        default -> radialNormal(point);
-        };
+    void normalAt(Hit hit) {
+        double[] n = hit.normal;
+        switch (hit.primitive) {
+        case BOTTOM -> { // the axis direction, negated
+            n[0] = -vx;
+            n[1] = -vy;
+            n[2] = -vz;
+        }
+        case TOP -> {
+            n[0] = vx;
+            n[1] = vy;
+            n[2] = vz;
+        }
+        default -> radialNormal(hit.px, hit.py, hit.pz, n);
+        }
     }
 
     /**
@@ -88,20 +107,18 @@ public class Tube extends Geometry {
     }
 
     /**
-     * The one intersection routine behind {@link #closestHit(Ray, Hit)} and
-     * {@link #visitHits(Ray, double, HitVisitor)}: the shell's quadratic is solved once, and the
+     * The one intersection routine behind {@link #closestHit(Hit)} and
+     * {@link #visitHits(Hit, double, HitVisitor)}: the shell's quadratic is solved once, and the
      * caps are tested with the same per-ray quantities (the axial coordinate along the ray is
-     * {@code wv + t·dv}, the radial vector is {@code b + t·a}). Exactly one of {@code hit} and
-     * {@code visitor} is non-null: with {@code hit} it is a closest-hit query bounded by
-     * {@code hit.t}, with {@code visitor} an any-hit walk bounded by {@code maxDistance}.
+     * {@code wv + t·dv}, the radial vector is {@code b + t·a}). The ray is {@code query}'s. With
+     * {@code visitor} null it is a closest-hit query updating {@code query}, bounded by its
+     * {@code t}; otherwise an any-hit walk bounded by {@code maxDistance}.
      *
      * @return closest-hit: whether {@code hit} was updated; any-hit: false when the visitor stopped
      */
-    private boolean intersect(Ray ray, Hit hit, double maxDistance, HitVisitor visitor) {
-        Point h = ray.getHead();
-        Vector d = ray.getDirection();
-        double dx = d.getX(), dy = d.getY(), dz = d.getZ();
-        double wx = h.getX() - px, wy = h.getY() - py, wz = h.getZ() - pz;
+    private boolean intersect(Hit query, double maxDistance, HitVisitor visitor) {
+        double dx = query.dx, dy = query.dy, dz = query.dz;
+        double wx = query.ox - px, wy = query.oy - py, wz = query.oz - pz;
         double dv = dx * vx + dy * vy + dz * vz;
         double wv = wx * vx + wy * vy + wz * vz;
         // The ray's direction and head relative to the axis head, without their axial parts.
@@ -130,9 +147,10 @@ public class Tube extends Geometry {
             top = insideRim((height - wv) / dv, ax, ay, az, bx, by, bz);
         }
 
-        if (hit == null)
+        if (visitor != null)
             return offer(visitor, maxDistance, near) && offer(visitor, maxDistance, far)
                     && offer(visitor, maxDistance, bottom) && offer(visitor, maxDistance, top);
+        Hit hit = query;
         double best = hit.t;
         int surface = -1;
         if (inRange(near, best)) {
@@ -175,20 +193,30 @@ public class Tube extends Geometry {
     }
 
     @Override
+    public boolean closestHit(Hit hit) {
+        return intersect(hit, 0, null);
+    }
+
+    @Override
     public boolean closestHit(Ray ray, Hit hit) {
-        return intersect(ray, hit, 0, null);
+        return closestHit(hit.setRay(ray));
+    }
+
+    @Override
+    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        return intersect(query, maxDistance, Objects.requireNonNull(visitor, "visitor"));
     }
 
     @Override
     public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        return intersect(ray, null, maxDistance, visitor);
+        return visitHits(Hit.of(ray), maxDistance, visitor);
     }
 
     @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         double[] ts = new double[4];
         int[] n = { 0 };
-        intersect(ray, null, maxDistance, (g, t) -> {
+        intersect(Hit.of(ray), maxDistance, (g, t) -> {
             ts[n[0]++] = t;
             return true;
         });

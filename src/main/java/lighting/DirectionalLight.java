@@ -36,4 +36,23 @@ public class DirectionalLight extends Light implements LightSource {
     public double getDistance(Point p) {
         return Double.POSITIVE_INFINITY;
     }
+
+    @Override
+    public void getIntensity(double x, double y, double z, double[] out) {
+        out[0] = intensity.getR();
+        out[1] = intensity.getG();
+        out[2] = intensity.getB();
+    }
+
+    @Override
+    public void getL(double x, double y, double z, double[] out) {
+        out[0] = direction.getX();
+        out[1] = direction.getY();
+        out[2] = direction.getZ();
+    }
+
+    @Override
+    public double getDistance(double x, double y, double z) {
+        return Double.POSITIVE_INFINITY;
+    }
 }

@@ -25,6 +25,55 @@ public interface LightSource {
      */
     double getDistance(Point p);
 
+    /*
+     * The same three questions about a point given as doubles, for a renderer that keeps its
+     * shading state in doubles (no object per shaded point). The library's lights answer them
+     * directly, and their object forms above call them; the defaults, for users' own lights,
+     * ask the object forms.
+     */
+
+    /**
+     * {@link #getIntensity(Point)} of the point (x, y, z).
+     *
+     * @param x   the shaded point's x coordinate
+     * @param y   its y coordinate
+     * @param z   its z coordinate
+     * @param out receives the intensity's red, green and blue in {@code out[0..2]}
+     */
+    default void getIntensity(double x, double y, double z, double[] out) {
+        Color c = getIntensity(new Point(x, y, z));
+        out[0] = c.getR();
+        out[1] = c.getG();
+        out[2] = c.getB();
+    }
+
+    /**
+     * {@link #getL(Point)} of the point (x, y, z).
+     *
+     * @param x   the shaded point's x coordinate
+     * @param y   its y coordinate
+     * @param z   its z coordinate
+     * @param out receives the unit direction from the light to the point in {@code out[0..2]}
+     */
+    default void getL(double x, double y, double z, double[] out) {
+        Vector l = getL(new Point(x, y, z));
+        out[0] = l.getX();
+        out[1] = l.getY();
+        out[2] = l.getZ();
+    }
+
+    /**
+     * {@link #getDistance(Point)} of the point (x, y, z).
+     *
+     * @param x the shaded point's x coordinate
+     * @param y its y coordinate
+     * @param z its z coordinate
+     * @return the distance from the light to the point; +∞ for a light at infinity
+     */
+    default double getDistance(double x, double y, double z) {
+        return getDistance(new Point(x, y, z));
+    }
+
     /**
      * The radius of the light's disk, for soft shadows; 0 is a point (hard shadows).
      * Lights at infinity have none.

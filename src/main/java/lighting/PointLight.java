@@ -131,30 +131,72 @@ public class PointLight extends Light implements LightSource {
      *         which {@link #validate()} rejects before a render)
      */
     protected double attenuation(Point p) {
-        double d2 = p.distanceSquared(position);
+        return attenuation(p.getX(), p.getY(), p.getZ());
+    }
+
+    /** {@link #attenuation(Point)} of the point (x, y, z): the one computation. */
+    final double attenuation(double x, double y, double z) {
+        double d2 = distanceSquared(x, y, z);
         double denominator = kC + kL * Math.sqrt(d2) + kQ * d2;
         if (!(denominator > 0))
             throw new IllegalArgumentException("point light attenuation kC + kL·d + kQ·d² must be positive, got "
-                    + denominator + " (kC=" + kC + ", kL=" + kL + ", kQ=" + kQ + ") at " + p);
+                    + denominator + " (kC=" + kC + ", kL=" + kL + ", kQ=" + kQ + ") at " + new Point(x, y, z));
         return 1 / denominator;
+    }
+
+    /** The squared distance from (x, y, z) to the light, in Point.distanceSquared's order of operations. */
+    private double distanceSquared(double x, double y, double z) {
+        double dx = x - position.getX();
+        double dy = y - position.getY();
+        double dz = z - position.getZ();
+        return dx * dx + dy * dy + dz * dz;
+    }
+
+    /**
+     * The factor the light's intensity is multiplied by at (x, y, z): the attenuation here; a
+     * spot light also weighs its beam. The one computation behind both forms of getIntensity.
+     */
+    double intensityFactor(double x, double y, double z) {
+        return attenuation(x, y, z);
     }
 
     @Override
     public Color getIntensity(Point p) {
-        return intensity.scale(attenuation(p));
+        return intensity.scale(intensityFactor(p.getX(), p.getY(), p.getZ()));
+    }
+
+    @Override
+    public void getIntensity(double x, double y, double z, double[] out) {
+        double f = intensityFactor(x, y, z);
+        out[0] = intensity.getR() * f; // Color.scale's arithmetic, without the object
+        out[1] = intensity.getG() * f;
+        out[2] = intensity.getB() * f;
     }
 
     @Override
     public Vector getL(Point p) {
-        // One allocation instead of two (subtract, then normalize): this runs per light per hit.
-        double dx = p.getX() - position.getX(), dy = p.getY() - position.getY(), dz = p.getZ() - position.getZ();
+        double[] l = new double[3];
+        getL(p.getX(), p.getY(), p.getZ(), l);
+        return new Vector(l[0], l[1], l[2]);
+    }
+
+    @Override
+    public void getL(double x, double y, double z, double[] out) {
+        double dx = x - position.getX(), dy = y - position.getY(), dz = z - position.getZ();
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        if (len == 0) throw new IllegalArgumentException("point " + p + " is at the light's position");
-        return new Vector(dx / len, dy / len, dz / len);
+        if (len == 0) throw new IllegalArgumentException("point " + new Point(x, y, z) + " is at the light's position");
+        out[0] = dx / len;
+        out[1] = dy / len;
+        out[2] = dz / len;
     }
 
     @Override
     public double getDistance(Point p) {
-        return p.distance(position);
+        return getDistance(p.getX(), p.getY(), p.getZ());
+    }
+
+    @Override
+    public double getDistance(double x, double y, double z) {
+        return Math.sqrt(distanceSquared(x, y, z));
     }
 }

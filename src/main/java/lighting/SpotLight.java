@@ -89,15 +89,15 @@ public class SpotLight extends PointLight {
         return this;
     }
 
+    /** The attenuation times the beam's weight max(0, cos θ)^narrowBeam; 0 outside the beam. */
     @Override
-    public Color getIntensity(Point p) {
-        // cos of the angle between the beam axis and the light-to-point direction, in doubles
-        // (this runs once per light per shaded point).
-        double dx = p.getX() - position.getX(), dy = p.getY() - position.getY(), dz = p.getZ() - position.getZ();
+    double intensityFactor(double x, double y, double z) {
+        // cos of the angle between the beam axis and the light-to-point direction
+        double dx = x - position.getX(), dy = y - position.getY(), dz = z - position.getZ();
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         double cos = Util.alignZero((direction.getX() * dx + direction.getY() * dy + direction.getZ() * dz) / len);
-        if (cos <= 0) return Color.BLACK;
+        if (cos <= 0) return 0;
         double factor = narrowBeam == 1 ? cos : Math.pow(cos, narrowBeam);
-        return intensity.scale(factor * attenuation(p));
+        return factor * attenuation(x, y, z);
     }
 }

@@ -66,6 +66,19 @@ public final class Color implements java.io.Serializable {
 
     /** @return the colour packed as 0xRRGGBB, each channel clamped to 0..255 */
     public int toRgb() {
+        return toRgb(r, g, b);
+    }
+
+    /**
+     * {@link #toRgb()} of a colour kept as three doubles (a renderer's per-thread scratch), so
+     * that a pixel needs no object.
+     *
+     * @param r the red component, 0..255 scale
+     * @param g the green component
+     * @param b the blue component
+     * @return the colour packed as 0xRRGGBB, each channel clamped to 0..255
+     */
+    public static int toRgb(double r, double g, double b) {
         return (clamp(r) << 16) | (clamp(g) << 8) | clamp(b);
     }
 

@@ -42,13 +42,30 @@ public final class Ray {
         Objects.requireNonNull(head, "ray head");
         Objects.requireNonNull(normal, "surface normal");
         this.direction = Objects.requireNonNull(direction, "ray direction").normalize();
-        double nd = Util.alignZero(normal.dotProduct(this.direction));
-        if (nd == 0) {
-            this.head = head;
-        } else {
-            double delta = nd > 0 ? DELTA : -DELTA;
-            this.head = new Point(head.x + normal.x * delta, head.y + normal.y * delta, head.z + normal.z * delta);
-        }
+        Vector d = this.direction;
+        double delta = headOffset(normal.x, normal.y, normal.z, d.x, d.y, d.z);
+        this.head = delta == 0 ? head
+                : new Point(head.x + normal.x * delta, head.y + normal.y * delta, head.z + normal.z * delta);
+    }
+
+    /**
+     * How far a secondary ray's head moves along the surface normal (see
+     * {@link #Ray(Point, Vector, Vector)}): the one rule, shared by that constructor and by tracers
+     * that keep rays in doubles, which move each head coordinate {@code h} to
+     * {@code h + normal·offset} when the offset is not 0.
+     *
+     * @param nx the unit surface normal's x component
+     * @param ny its y component
+     * @param nz its z component
+     * @param dx the ray's unit direction's x component (already normalized)
+     * @param dy its y component
+     * @param dz its z component
+     * @return {@link #DELTA} when the direction leaves on the normal's side, −{@code DELTA} when it
+     *         enters the surface, 0 when it is tangent (within the zero tolerance)
+     */
+    public static double headOffset(double nx, double ny, double nz, double dx, double dy, double dz) {
+        double nd = Util.alignZero(nx * dx + ny * dy + nz * dz);
+        return nd == 0 ? 0 : nd > 0 ? DELTA : -DELTA;
     }
 
     /** @return the point the ray starts from ({@code t = 0}) */

@@ -91,35 +91,63 @@ public class Vector extends Point {
      *                                  range of a double
      */
     public Vector crossProduct(Vector v) {
-        double cx = y * v.z - z * v.y;
-        double cy = z * v.x - x * v.z;
-        double cz = x * v.y - y * v.x;
-        double ab2 = lengthSquared() * v.lengthSquared();
+        double[] c = new double[3]; // scalar-replaced by the JIT once crossProduct is inlined
+        crossProduct(x, y, z, v.x, v.y, v.z, c);
+        return new Vector(c[0], c[1], c[2], true);
+    }
+
+    /**
+     * The arithmetic of {@link #crossProduct(Vector)} on raw components (same checks, same bits),
+     * for a tracer that keeps its vectors in doubles.
+     *
+     * @param ax  the left operand's x component (a non-zero, finite vector; not checked)
+     * @param ay  the left operand's y component
+     * @param az  the left operand's z component
+     * @param bx  the right operand's x component (a non-zero, finite vector; not checked)
+     * @param by  the right operand's y component
+     * @param bz  the right operand's z component
+     * @param out receives a × b in {@code out[0..2]}
+     * @throws IllegalArgumentException when the vectors are parallel, or the product is beyond the
+     *                                  range of a double
+     */
+    public static void crossProduct(double ax, double ay, double az, double bx, double by, double bz, double[] out) {
+        double cx = ay * bz - az * by;
+        double cy = az * bx - ax * bz;
+        double cz = ax * by - ay * bx;
+        double ab2 = (ax * ax + ay * ay + az * az) * (bx * bx + by * by + bz * bz);
         // |a × b|² ≤ |a|²|b|², so in this range no square below overflows or underflows.
         if (ab2 > SAFE_MIN && ab2 < SAFE_MAX) {
-            if (cx * cx + cy * cy + cz * cz <= PARALLEL_SIN2 * ab2) throw parallel(v);
-            return new Vector(cx, cy, cz, true);
+            if (cx * cx + cy * cy + cz * cz <= PARALLEL_SIN2 * ab2) throw parallel(ax, ay, az, bx, by, bz);
+            out[0] = cx;
+            out[1] = cy;
+            out[2] = cz;
+            return;
         }
         // Huge or tiny operands: decide on copies scaled to a largest component of 1, then scale back.
-        double ma = maxAbs(), mb = v.maxAbs();
-        double ax = x / ma, ay = y / ma, az = z / ma, bx = v.x / mb, by = v.y / mb, bz = v.z / mb;
-        double sx = ay * bz - az * by, sy = az * bx - ax * bz, sz = ax * by - ay * bx;
-        if (sx * sx + sy * sy + sz * sz <= PARALLEL_SIN2 * (ax * ax + ay * ay + az * az) * (bx * bx + by * by + bz * bz))
-            throw parallel(v);
+        double ma = maxAbs(ax, ay, az), mb = maxAbs(bx, by, bz);
+        double sax = ax / ma, say = ay / ma, saz = az / ma, sbx = bx / mb, sby = by / mb, sbz = bz / mb;
+        double sx = say * sbz - saz * sby, sy = saz * sbx - sax * sbz, sz = sax * sby - say * sbx;
+        if (sx * sx + sy * sy + sz * sz
+                <= PARALLEL_SIN2 * (sax * sax + say * say + saz * saz) * (sbx * sbx + sby * sby + sbz * sbz))
+            throw parallel(ax, ay, az, bx, by, bz);
         cx = sx * ma * mb;
         cy = sy * ma * mb;
         cz = sz * ma * mb;
         if (!Double.isFinite(cx) || !Double.isFinite(cy) || !Double.isFinite(cz) || cx == 0 && cy == 0 && cz == 0)
-            throw new IllegalArgumentException("cross product of " + this + " and " + v + " is beyond the range of a double");
-        return new Vector(cx, cy, cz, true);
+            throw new IllegalArgumentException("cross product of " + new Vector(ax, ay, az, true) + " and "
+                    + new Vector(bx, by, bz, true) + " is beyond the range of a double");
+        out[0] = cx;
+        out[1] = cy;
+        out[2] = cz;
     }
 
-    private IllegalArgumentException parallel(Vector v) {
-        return new IllegalArgumentException("cross product of parallel vectors " + this + " and " + v);
+    private static IllegalArgumentException parallel(double ax, double ay, double az, double bx, double by, double bz) {
+        return new IllegalArgumentException("cross product of parallel vectors " + new Vector(ax, ay, az, true) + " and "
+                + new Vector(bx, by, bz, true));
     }
 
-    /** The largest absolute component: positive, since a vector is never zero. */
-    private double maxAbs() {
+    /** The largest absolute component: positive for a non-zero vector. */
+    private static double maxAbs(double x, double y, double z) {
         return Math.max(Math.abs(x), Math.max(Math.abs(y), Math.abs(z)));
     }
 
@@ -140,16 +168,44 @@ public class Vector extends Point {
      *         are divided by their largest component first.
      */
     public Vector normalize() {
-        double len2 = lengthSquared();
-        if (Util.isZero(len2 - 1)) return this;
+        double[] unit = new double[3]; // scalar-replaced by the JIT once normalize is inlined
+        return normalize(x, y, z, unit) ? new Vector(unit[0], unit[1], unit[2], true) : this;
+    }
+
+    /**
+     * The arithmetic of {@link #normalize()} on raw components, for a tracer that keeps its
+     * vectors in doubles: the one implementation of normalization, so both forms give the same
+     * bits.
+     *
+     * @param x   the x component of a non-zero, finite vector (not checked)
+     * @param y   the y component
+     * @param z   the z component
+     * @param out receives the unit vector's components in {@code out[0..2]}
+     * @return false when (x, y, z) already has unit length within the zero tolerance: {@code out}
+     *         then holds it unchanged
+     */
+    public static boolean normalize(double x, double y, double z, double[] out) {
+        double len2 = x * x + y * y + z * z;
+        if (Util.isZero(len2 - 1)) {
+            out[0] = x;
+            out[1] = y;
+            out[2] = z;
+            return false;
+        }
         if (len2 > SAFE_MIN && len2 < SAFE_MAX) {
             double inv = 1.0 / Math.sqrt(len2);
-            return new Vector(x * inv, y * inv, z * inv, true);
+            out[0] = x * inv;
+            out[1] = y * inv;
+            out[2] = z * inv;
+            return true;
         }
-        double m = maxAbs();
+        double m = maxAbs(x, y, z);
         double sx = x / m, sy = y / m, sz = z / m; // the largest is ±1: the squares are safe
         double inv = 1.0 / Math.sqrt(sx * sx + sy * sy + sz * sz);
-        return new Vector(sx * inv, sy * inv, sz * inv, true);
+        out[0] = sx * inv;
+        out[1] = sy * inv;
+        out[2] = sz * inv;
+        return true;
     }
 
     /** @return this vector scaled by −1 (never zero, so unchecked) */

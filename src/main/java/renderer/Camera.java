@@ -152,10 +152,17 @@ public final class Camera {
      * the rays of {@link #constructRay}.
      */
     private Ray pinholeRay(double xOffset, double yOffset) {
-        return new Ray(location, viewPlaneDirection(xOffset, yOffset));
+        double[] d = new double[3];
+        viewPlaneDirection(xOffset, yOffset, d);
+        return new Ray(location, new Vector(d[0], d[1], d[2]));
     }
 
-    private Vector viewPlaneDirection(double xOffset, double yOffset) {
+    /**
+     * The unit direction from the location through the view-plane point at (xOffset, yOffset),
+     * written into {@code out[0..2]}: the one computation behind {@link #constructRay} and the
+     * render's camera rays.
+     */
+    private void viewPlaneDirection(double xOffset, double yOffset, double[] out) {
         double px = location.getX() + vTo.getX() * vpDistance;
         double py = location.getY() + vTo.getY() * vpDistance;
         double pz = location.getZ() + vTo.getZ() * vpDistance;
@@ -171,31 +178,42 @@ public final class Camera {
         }
         double dx = px - location.getX(), dy = py - location.getY(), dz = pz - location.getZ();
         double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        return new Vector(dx * inv, dy * inv, dz * inv);
+        out[0] = dx * inv;
+        out[1] = dy * inv;
+        out[2] = dz * inv;
     }
 
     /**
-     * The colour seen through image point (px, py), in pixels from the image's top-left corner
-     * (pixel (x, y)'s centre is (x + 0.5, y + 0.5)). With depth of field, the lens point is drawn
-     * from {@code ctx.random}, which the sampler has positioned for this sample.
+     * Traces the camera ray through image point (px, py), in pixels from the image's top-left
+     * corner (pixel (x, y)'s centre is (x + 0.5, y + 0.5)), and leaves the colour seen in
+     * {@code ctx.r, ctx.g, ctx.b}. The ray is written into {@link TraceContext#cameraRay()} as
+     * doubles: no object per ray. With depth of field, the lens point is drawn from
+     * {@code ctx.random}, which the sampler has positioned for this sample.
      */
-    Color trace(double px, double py, TraceContext ctx) {
+    void trace(double px, double py, TraceContext ctx) {
         int nX = imageWriter.getNx(), nY = imageWriter.getNy();
         double xOffset = (px - nX / 2.0) * (vpWidth / nX);
         double yOffset = -(py - nY / 2.0) * (vpHeight / nY);
         ctx.cameraRays++;
-        if (aperture == 0) return rayTracer.traceRay(pinholeRay(xOffset, yOffset), ctx);
+        double[] d = ctx.vector;
+        viewPlaneDirection(xOffset, yOffset, d);
+        if (aperture == 0) {
+            // new Ray(location, direction): the direction goes through the same normalization.
+            ctx.cameraRay().setRay(location.getX(), location.getY(), location.getZ(), d[0], d[1], d[2]);
+            rayTracer.traceRay(ctx);
+            return;
+        }
         // Thin lens: every ray through the lens meets the pinhole ray where it crosses the focal plane.
-        Vector d = viewPlaneDirection(xOffset, yOffset);
-        double t = focalDistance / d.dotProduct(vTo);
-        double fx = location.getX() + d.getX() * t, fy = location.getY() + d.getY() * t, fz = location.getZ() + d.getZ() * t;
+        double t = focalDistance / (d[0] * vTo.getX() + d[1] * vTo.getY() + d[2] * vTo.getZ());
+        double fx = location.getX() + d[0] * t, fy = location.getY() + d[1] * t, fz = location.getZ() + d[2] * t;
         double r = aperture * Math.sqrt(ctx.random.nextDouble());
         double a = 2 * Math.PI * ctx.random.nextDouble();
         double lu = r * Math.cos(a), lv = r * Math.sin(a);
         double lx = location.getX() + vRight.getX() * lu + vUp.getX() * lv;
         double ly = location.getY() + vRight.getY() * lu + vUp.getY() * lv;
         double lz = location.getZ() + vRight.getZ() * lu + vUp.getZ() * lv;
-        return rayTracer.traceRay(new Ray(new Point(lx, ly, lz), new Vector(fx - lx, fy - ly, fz - lz)), ctx);
+        ctx.cameraRay().setRay(lx, ly, lz, fx - lx, fy - ly, fz - lz);
+        rayTracer.traceRay(ctx);
     }
 
     /** A new sampler (one per worker) for this camera's anti-aliasing settings. */

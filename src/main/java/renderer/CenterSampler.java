@@ -1,7 +1,5 @@
 package renderer;
 
-import primitives.Color;
-
 /**
  * {@link AntiAliasing#NONE}: rays through the pixel centre: one, or with depth of field one per
  * lens sample (each from its own stream).
@@ -16,19 +14,22 @@ final class CenterSampler implements PixelSampler {
     }
 
     @Override
-    public Color sample(int x, int y, TraceContext ctx) {
+    public void sample(int x, int y, TraceContext ctx) {
         if (samples == 1) {
             ctx.random.reset(camera.seed(), x, y, 0);
-            return camera.trace(x + 0.5, y + 0.5, ctx);
+            camera.trace(x + 0.5, y + 0.5, ctx);
+            return;
         }
         double r = 0, g = 0, b = 0;
         for (int s = 0; s < samples; ++s) {
             ctx.random.reset(camera.seed(), x, y, s);
-            Color c = camera.trace(x + 0.5, y + 0.5, ctx);
-            r += c.getR();
-            g += c.getG();
-            b += c.getB();
+            camera.trace(x + 0.5, y + 0.5, ctx);
+            r += ctx.r;
+            g += ctx.g;
+            b += ctx.b;
         }
-        return new Color(r / samples, g / samples, b / samples);
+        ctx.r = r / samples;
+        ctx.g = g / samples;
+        ctx.b = b / samples;
     }
 }

@@ -1,7 +1,5 @@
 package renderer;
 
-import primitives.Color;
-
 /**
  * {@link AntiAliasing#RANDOM}: the pixel cut into columns × rows cells, one ray through a random
  * point of each cell (jittered, so the samples are stratified and never line up).
@@ -18,7 +16,7 @@ final class GridSampler implements PixelSampler {
     }
 
     @Override
-    public Color sample(int x, int y, TraceContext ctx) {
+    public void sample(int x, int y, TraceContext ctx) {
         double r = 0, g = 0, b = 0;
         SampleStream rnd = ctx.random;
         for (int row = 0, s = 0; row < rows; ++row) {
@@ -26,13 +24,15 @@ final class GridSampler implements PixelSampler {
                 rnd.reset(camera.seed(), x, y, s);
                 double px = x + (col + rnd.nextDouble()) / columns;
                 double py = y + (row + rnd.nextDouble()) / rows;
-                Color c = camera.trace(px, py, ctx);
-                r += c.getR();
-                g += c.getG();
-                b += c.getB();
+                camera.trace(px, py, ctx);
+                r += ctx.r;
+                g += ctx.g;
+                b += ctx.b;
             }
         }
         int n = columns * rows;
-        return new Color(r / n, g / n, b / n);
+        ctx.r = r / n;
+        ctx.g = g / n;
+        ctx.b = b / n;
     }
 }

@@ -111,6 +111,11 @@ public class ImageWriter {
         pixels[index(x, y)] = color.toRgb();
     }
 
+    /** {@link #writePixel(int, int, Color)} of a colour kept as three doubles (the render loop's). */
+    void writePixel(int x, int y, double r, double g, double b) {
+        pixels[index(x, y)] = Color.toRgb(r, g, b);
+    }
+
     /**
      * @param x the column, 0 at the left
      * @param y the row, 0 at the top

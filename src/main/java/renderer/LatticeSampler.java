@@ -2,8 +2,6 @@ package renderer;
 
 import java.util.Arrays;
 
-import primitives.Color;
-
 /**
  * {@link AntiAliasing#CORNERS} and {@link AntiAliasing#ADAPTIVE}: samples on a fixed lattice of
  * {@code R} points per pixel side, cached per tile so that a point shared by neighbouring pixels
@@ -93,33 +91,36 @@ final class LatticeSampler implements PixelSampler {
         if (stamp[i] != generation) {
             SampleStream rnd = ctx.random;
             rnd.reset(camera.seed(), gx, gy, -perPixel);
-            Color c;
             if (adaptive) { // jittered within its cell of the lattice: see the class comment
                 double jx = rnd.nextDouble() - 0.5, jy = rnd.nextDouble() - 0.5;
-                c = camera.trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
+                camera.trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
             } else {
-                c = camera.trace((double) gx / perPixel, (double) gy / perPixel, ctx);
+                camera.trace((double) gx / perPixel, (double) gy / perPixel, ctx);
             }
-            cr[i] = c.getR();
-            cg[i] = c.getG();
-            cb[i] = c.getB();
+            cr[i] = ctx.r;
+            cg[i] = ctx.g;
+            cb[i] = ctx.b;
             stamp[i] = generation;
         }
         return i;
     }
 
     @Override
-    public Color sample(int x, int y, TraceContext ctx) {
+    public void sample(int x, int y, TraceContext ctx) {
         int gx = x * perPixel, gy = y * perPixel;
         if (!adaptive) {
             int m = point(gx + 1, gy + 1, ctx);
             int a = point(gx, gy, ctx), b = point(gx + 2, gy, ctx), c = point(gx, gy + 2, ctx), d = point(gx + 2, gy + 2, ctx);
-            return new Color((cr[m] + cr[a] + cr[b] + cr[c] + cr[d]) / 5, (cg[m] + cg[a] + cg[b] + cg[c] + cg[d]) / 5,
-                    (cb[m] + cb[a] + cb[b] + cb[c] + cb[d]) / 5);
+            ctx.r = (cr[m] + cr[a] + cr[b] + cr[c] + cr[d]) / 5;
+            ctx.g = (cg[m] + cg[a] + cg[b] + cg[c] + cg[d]) / 5;
+            ctx.b = (cb[m] + cb[a] + cb[b] + cb[c] + cb[d]) / 5;
+            return;
         }
         sum[0] = sum[1] = sum[2] = 0;
         square(gx, gy, perPixel, 0, 1.0, ctx);
-        return new Color(sum[0], sum[1], sum[2]);
+        ctx.r = sum[0];
+        ctx.g = sum[1];
+        ctx.b = sum[2];
     }
 
     /**

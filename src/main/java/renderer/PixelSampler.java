@@ -1,7 +1,5 @@
 package renderer;
 
-import primitives.Color;
-
 /**
  * A sampling strategy: the colour of one pixel from as many camera samples as it chooses. One
  * instance per worker thread (it may keep scratch state); the render loop calls
@@ -12,6 +10,6 @@ interface PixelSampler {
     default void beginTile(int x0, int y0, int x1, int y1) {
     }
 
-    /** @return the colour of pixel (column x, row y) */
-    Color sample(int x, int y, TraceContext ctx);
+    /** Samples pixel (column x, row y) and leaves its colour in {@code ctx.r, ctx.g, ctx.b}. */
+    void sample(int x, int y, TraceContext ctx);
 }

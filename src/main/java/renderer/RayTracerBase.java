@@ -2,8 +2,11 @@ package renderer;
 
 import java.util.Objects;
 
+import geometries.Hit;
 import primitives.Color;
+import primitives.Point;
 import primitives.Ray;
+import primitives.Vector;
 import scene.Scene;
 
 /** Computes the colour a ray sees in a scene. */
@@ -30,11 +33,33 @@ public abstract class RayTracerBase {
     }
 
     /**
-     * The render loop's entry: like {@link #traceRay(Ray)}, with the worker's scratch state and
-     * the sample's random stream. Tracers outside this package simply get {@link #traceRay(Ray)}.
+     * The colour seen along the camera ray that {@code ray} holds as doubles (see
+     * {@link Hit#setRay(double, double, double, double, double, double)}): how the render loop
+     * calls a tracer of another package, with no {@link Ray} object per ray. By default it builds
+     * the {@link Ray} and calls {@link #traceRay(Ray)}; a tracer that queries the scene itself may
+     * override it and pass the record straight to {@code Intersectable.closestHit(Hit)}. The
+     * record belongs to the calling worker for the duration of the call: its hit fields are free
+     * to use, its ray is the camera's.
+     *
+     * @param ray the record holding the camera ray
+     * @return the colour seen along the ray, on the 0..255 scale, unclamped
      */
-    Color traceRay(Ray ray, TraceContext context) {
-        return traceRay(ray);
+    protected Color traceRay(Hit ray) {
+        return traceRay(new Ray(new Point(ray.headX(), ray.headY(), ray.headZ()),
+                new Vector(ray.directionX(), ray.directionY(), ray.directionZ())));
+    }
+
+    /**
+     * The render loop's entry: traces the camera ray held in {@link TraceContext#cameraRay()}
+     * and leaves the colour seen in {@code ctx.r, ctx.g, ctx.b}, using the worker's scratch
+     * state and the sample's random stream. Tracers outside this package get
+     * {@link #traceRay(Hit)}.
+     */
+    void traceRay(TraceContext ctx) {
+        Color c = traceRay(ctx.cameraRay());
+        ctx.r = c.getR();
+        ctx.g = c.getG();
+        ctx.b = c.getB();
     }
 
     /** A short description of the tracer's settings for the render summary. */

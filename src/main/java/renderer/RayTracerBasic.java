@@ -40,7 +40,6 @@ public class RayTracerBasic extends RayTracerBase {
     public static final int MAX_CALC_COLOR_LEVEL = 10;
     /** Below this accumulated coefficient (in every channel) a contribution is not traced. */
     public static final double MIN_CALC_COLOR_K = 0.001;
-    private static final Double3 INITIAL_K = Double3.ONE;
     /** The golden-ratio conjugate: spreads beam samples evenly in angle (a Fibonacci lattice). */
     private static final double PHI = 0.6180339887498949;
 
@@ -173,186 +172,307 @@ public class RayTracerBasic extends RayTracerBase {
         Vector d = ray.getDirection();
         ctx.random.reset(Double.doubleToLongBits(h.getX()) * 31 + Double.doubleToLongBits(h.getY()),
                 Double.hashCode(h.getZ()), Double.hashCode(d.getX()) * 31 + Double.hashCode(d.getY()), Double.hashCode(d.getZ()));
-        return traceRay(ray, ctx);
+        ctx.cameraRay().setRay(h.getX(), h.getY(), h.getZ(), d.getX(), d.getY(), d.getZ());
+        traceRay(ctx);
+        return new Color(ctx.r, ctx.g, ctx.b);
     }
 
+    /*
+     * The tracing core keeps every ray, point, normal, colour and coefficient in doubles: a ray
+     * lives in its level's Hit record, colours are returned through the context's per-level
+     * slots (red/green/blue[level]), coefficients k are passed as three doubles. The arithmetic
+     * is the object code's, operation for operation (Color.add and scale, Double3.product,
+     * Ray's normalization and head offset through the shared primitives helpers), so images are
+     * bit-identical to what Ray/Point/Vector/Color objects would give; nothing is allocated per
+     * ray for the library's geometries and lights.
+     */
+
     @Override
-    Color traceRay(Ray ray, TraceContext ctx) {
-        Intersectable w = world;
-        Hit hit = ctx.hit(MAX_CALC_COLOR_LEVEL, Double.POSITIVE_INFINITY);
-        if (!w.closestHit(ray, hit)) return scene.background;
+    void traceRay(TraceContext ctx) {
+        Hit hit = ctx.hit(MAX_CALC_COLOR_LEVEL, Double.POSITIVE_INFINITY); // the camera ray's record
+        if (!world.closestHit(hit)) {
+            Color bg = scene.background;
+            ctx.r = bg.getR();
+            ctx.g = bg.getG();
+            ctx.b = bg.getB();
+            return;
+        }
         Double3 kA = hit.getGeometry().getMaterial().kA; // ambient = I_A·kA(light)·kA(material)
-        return calcColor(hit, ray, MAX_CALC_COLOR_LEVEL, INITIAL_K, beamSize, ctx)
-                .add(scene.ambientLight.getIntensity().scale(kA));
+        calcColor(hit, MAX_CALC_COLOR_LEVEL, 1, 1, 1, beamSize, ctx);
+        Color ambient = scene.ambientLight.getIntensity();
+        int top = MAX_CALC_COLOR_LEVEL;
+        ctx.r = ctx.red[top] + ambient.getR() * kA.getD1();
+        ctx.g = ctx.green[top] + ambient.getG() * kA.getD2();
+        ctx.b = ctx.blue[top] + ambient.getB() * kA.getD3();
     }
 
     /**
+     * The colour at the hit of {@code hit} (found by a closest-hit query of its ray), into slot
+     * {@code level}.
+     *
+     * @param kr     the accumulated coefficient's red (with kg, kb: the path's product of kR/kT)
      * @param budget rays a glossy beam below this point may use (see {@link #setBeamSize(int)})
      */
-    private Color calcColor(Hit hit, Ray ray, int level, Double3 k, int budget, TraceContext ctx) {
+    private void calcColor(Hit hit, int level, double kr, double kg, double kb, int budget, TraceContext ctx) {
         Geometry geometry = hit.getGeometry();
-        Point p = hit.point(ray);
-        Vector n = hit.normal(p);
-        Vector v = ray.getDirection();
-        double nv = Util.alignZero(n.dotProduct(v));
+        hit.computeSurface();
+        double nv = Util.alignZero(hit.normalX() * hit.directionX() + hit.normalY() * hit.directionY()
+                + hit.normalZ() * hit.directionZ());
         Material material = geometry.getMaterial();
-        Color color = geometry.getEmission();
-        if (nv != 0) color = color.add(localEffects(p, n, v, nv, material, k, ctx));
-        if (level == 1) return color;
-        return color.add(globalEffects(p, n, v, nv, material, level, k, budget, ctx));
+        Color emission = geometry.getEmission();
+        double r = emission.getR(), g = emission.getG(), b = emission.getB();
+        if (nv != 0) {
+            localEffects(hit, nv, material, kr, kg, kb, ctx);
+            double[] local = ctx.local;
+            r = r + local[0];
+            g = g + local[1];
+            b = b + local[2];
+        }
+        if (level != 1) {
+            globalEffects(hit, nv, material, level, kr, kg, kb, budget, ctx);
+            r = r + ctx.red[level];
+            g = g + ctx.green[level];
+            b = b + ctx.blue[level];
+        }
+        ctx.red[level] = r;
+        ctx.green[level] = g;
+        ctx.blue[level] = b;
     }
 
-    private Color localEffects(Point p, Vector n, Vector v, double nv, Material material, Double3 k,
-                               TraceContext ctx) {
+    /** Emission aside, the light arriving directly: Phong per light, times its shadow transparency; into ctx.local. */
+    private void localEffects(Hit hit, double nv, Material material, double kr, double kg, double kb,
+                              TraceContext ctx) {
         // Accumulated in doubles: this runs once per light per hit, the hottest shading code.
         double cr = 0, cg = 0, cb = 0;
         Double3 kd = material.kD, ks = material.kS;
+        double px = hit.pointX(), py = hit.pointY(), pz = hit.pointZ();
+        double nx = hit.normalX(), ny = hit.normalY(), nz = hit.normalZ();
+        double vx = hit.directionX(), vy = hit.directionY(), vz = hit.directionZ();
+        double[] l = ctx.light, iL = ctx.intensity, ktr = ctx.transparency;
         for (LightSource light : lights) {
-            Vector l = light.getL(p);
-            double nl = Util.alignZero(n.dotProduct(l));
+            light.getL(px, py, pz, l);
+            double lx = l[0], ly = l[1], lz = l[2];
+            double nl = Util.alignZero(nx * lx + ny * ly + nz * lz);
             if (nl * nv <= 0) continue; // the light is on the other side of the surface from the viewer
             // Phong: kD·|n·l| + kS·max(0, −r·v)^shininess, with r = l − 2(n·l)n.
-            double rx = l.getX() - 2 * nl * n.getX(), ry = l.getY() - 2 * nl * n.getY(), rz = l.getZ() - 2 * nl * n.getZ();
-            double minusVR = -Util.alignZero(rx * v.getX() + ry * v.getY() + rz * v.getZ());
+            double rx = lx - 2 * nl * nx, ry = ly - 2 * nl * ny, rz = lz - 2 * nl * nz;
+            double minusVR = -Util.alignZero(rx * vx + ry * vy + rz * vz);
             double spec = minusVR <= 0 ? 0 : Math.pow(minusVR, material.nShininess);
             double absNl = Math.abs(nl);
-            Color iL = light.getIntensity(p);
+            light.getIntensity(px, py, pz, iL);
+            double ir = iL[0], ig = iL[1], ib = iL[2];
             double fr = kd.getD1() * absNl + ks.getD1() * spec;
             double fg = kd.getD2() * absNl + ks.getD2() * spec;
             double fb = kd.getD3() * absNl + ks.getD3() * spec;
             // Nothing to shadow (a spot light turned away, a material with kD = kS = 0): the term
             // is exactly zero whatever the occluders, so the shadow walk is not traced.
-            if (iL.getR() * fr == 0 && iL.getG() * fg == 0 && iL.getB() * fb == 0) continue;
-            Double3 ktr = transparency(p, light, l, n, ctx);
-            if (ktr.getD1() * k.getD1() < MIN_CALC_COLOR_K && ktr.getD2() * k.getD2() < MIN_CALC_COLOR_K
-                    && ktr.getD3() * k.getD3() < MIN_CALC_COLOR_K) continue;
-            cr += iL.getR() * ktr.getD1() * fr;
-            cg += iL.getG() * ktr.getD2() * fg;
-            cb += iL.getB() * ktr.getD3() * fb;
+            if (ir * fr == 0 && ig * fg == 0 && ib * fb == 0) continue;
+            transparency(hit, light, lx, ly, lz, ctx);
+            if (ktr[0] * kr < MIN_CALC_COLOR_K && ktr[1] * kg < MIN_CALC_COLOR_K
+                    && ktr[2] * kb < MIN_CALC_COLOR_K) continue;
+            cr += ir * ktr[0] * fr;
+            cg += ig * ktr[1] * fg;
+            cb += ib * ktr[2] * fb;
         }
-        return new Color(cr, cg, cb);
+        double[] local = ctx.local;
+        local[0] = cr;
+        local[1] = cg;
+        local[2] = cb;
     }
 
     /**
-     * The product of kT of the occluders between {@code p} and the light: the course's hard
-     * shadow for a point light, or the average over {@link #shadowSamples} points of its disk.
+     * The product of kT of the occluders between the hit point and the light (whose unit
+     * direction toward the point is l), into ctx.transparency: the course's hard shadow for a
+     * point light, or the average over {@link #shadowSamples} points of its disk.
      */
-    private Double3 transparency(Point p, LightSource light, Vector l, Vector n, TraceContext ctx) {
+    private void transparency(Hit hit, LightSource light, double lx, double ly, double lz, TraceContext ctx) {
         double radius = light.getRadius();
         Intersectable w = world;
         Transmittance tr = ctx.transmittance;
+        double px = hit.pointX(), py = hit.pointY(), pz = hit.pointZ();
+        double nx = hit.normalX(), ny = hit.normalY(), nz = hit.normalZ();
+        double[] ktr = ctx.transparency;
         if (radius == 0) {
             ctx.shadowRays++;
-            w.visitHits(new Ray(p, l.negate(), n), light.getDistance(p), tr.reset());
-            return tr.r == 1 && tr.g == 1 && tr.b == 1 ? Double3.ONE : new Double3(tr.r, tr.g, tr.b);
+            w.visitHits(ctx.shadow.setRay(px, py, pz, -lx, -ly, -lz, nx, ny, nz), light.getDistance(px, py, pz),
+                    tr.reset());
+            ktr[0] = tr.r;
+            ktr[1] = tr.g;
+            ktr[2] = tr.b;
+            return;
         }
         // Soft shadow: stratified points on the disk of the light facing p.
         Point c = light.getPosition();
-        Vector toLight = l.negate();
-        Vector a = perpendicular(toLight);
-        Vector b = toLight.crossProduct(a);
-        double side = n.dotProduct(toLight);
+        double tx = -lx, ty = -ly, tz = -lz; // toward the light
+        double[] basis = ctx.vector;
+        perpendicular(tx, ty, tz, basis);
+        double ax = basis[0], ay = basis[1], az = basis[2];
+        Vector.crossProduct(tx, ty, tz, ax, ay, az, basis);
+        double bx = basis[0], by = basis[1], bz = basis[2];
+        double side = nx * tx + ny * ty + nz * tz;
         double sr = 0, sg = 0, sb = 0;
         SampleStream rnd = ctx.random;
         double offset = rnd.nextDouble();
         double[] disk = ctx.disk;
         for (int i = 0; i < shadowSamples; ++i) {
             diskPoint(i, shadowSamples, offset, rnd, radius, disk);
-            double sx = c.getX() + disk[0] * a.getX() + disk[1] * b.getX();
-            double sy = c.getY() + disk[0] * a.getY() + disk[1] * b.getY();
-            double sz = c.getZ() + disk[0] * a.getZ() + disk[1] * b.getZ();
-            double dx = sx - p.getX(), dy = sy - p.getY(), dz = sz - p.getZ();
+            double sx = c.getX() + disk[0] * ax + disk[1] * bx;
+            double sy = c.getY() + disk[0] * ay + disk[1] * by;
+            double sz = c.getZ() + disk[0] * az + disk[1] * bz;
+            double dx = sx - px, dy = sy - py, dz = sz - pz;
             double dist = Math.sqrt(dx * dx + dy * dy + dz * dz);
             // A point of the disk below the surface's horizon sends no light to p.
-            if (dist == 0 || (dx * n.getX() + dy * n.getY() + dz * n.getZ()) * side <= 0) continue;
+            if (dist == 0 || (dx * nx + dy * ny + dz * nz) * side <= 0) continue;
             ctx.shadowRays++;
-            w.visitHits(new Ray(p, new Vector(dx, dy, dz), n), dist, tr.reset());
+            w.visitHits(ctx.shadow.setRay(px, py, pz, dx, dy, dz, nx, ny, nz), dist, tr.reset());
             sr += tr.r;
             sg += tr.g;
             sb += tr.b;
         }
-        return new Double3(sr / shadowSamples, sg / shadowSamples, sb / shadowSamples);
+        ktr[0] = sr / shadowSamples;
+        ktr[1] = sg / shadowSamples;
+        ktr[2] = sb / shadowSamples;
     }
 
-    private Color globalEffects(Point p, Vector n, Vector v, double nv, Material material, int level, Double3 k,
-                                int budget, TraceContext ctx) {
-        if (material.ior != 1 && !material.kT.isZero()) return refraction(p, n, v, nv, material, level, k, budget, ctx);
-        Color color = Color.BLACK;
-        if (!material.kR.isZero()) { // most materials neither reflect nor transmit: no products then
-            Double3 kkr = k.product(material.kR);
-            if (!kkr.lowerThan(MIN_CALC_COLOR_K))
-                color = color.add(beam(p, n, mirror(v, n, nv), material.reflectionSpread, material.kR, kkr, level, budget, ctx));
+    /** Reflection and transmission, into slot {@code level}. */
+    private void globalEffects(Hit hit, double nv, Material material, int level, double kr, double kg, double kb,
+                               int budget, TraceContext ctx) {
+        if (material.ior != 1 && !material.kT.isZero()) {
+            refraction(hit, nv, material, level, kr, kg, kb, budget, ctx);
+            return;
         }
-        if (!material.kT.isZero()) {
-            Double3 kkt = k.product(material.kT);
-            if (!kkt.lowerThan(MIN_CALC_COLOR_K))
-                color = color.add(beam(p, n, v, material.transmissionSpread, material.kT, kkt, level, budget, ctx));
+        double r = 0, g = 0, b = 0; // Color.BLACK, added to as the object code did
+        Double3 kR = material.kR, kT = material.kT;
+        if (!kR.isZero()) { // most materials neither reflect nor transmit: no products then
+            double kkr = kr * kR.getD1(), kkg = kg * kR.getD2(), kkb = kb * kR.getD3();
+            if (!lowerThanMin(kkr, kkg, kkb)) {
+                mirrorBeam(hit, nv, material.reflectionSpread, kR.getD1(), kR.getD2(), kR.getD3(), kkr, kkg, kkb,
+                        level, budget, ctx);
+                r = r + ctx.red[level];
+                g = g + ctx.green[level];
+                b = b + ctx.blue[level];
+            }
         }
-        return color;
+        if (!kT.isZero()) {
+            double kkr = kr * kT.getD1(), kkg = kg * kT.getD2(), kkb = kb * kT.getD3();
+            if (!lowerThanMin(kkr, kkg, kkb)) {
+                beam(hit, hit.directionX(), hit.directionY(), hit.directionZ(), material.transmissionSpread,
+                        kT.getD1(), kT.getD2(), kT.getD3(), kkr, kkg, kkb, level, budget, ctx);
+                r = r + ctx.red[level];
+                g = g + ctx.green[level];
+                b = b + ctx.blue[level];
+            }
+        }
+        ctx.red[level] = r;
+        ctx.green[level] = g;
+        ctx.blue[level] = b;
     }
 
-    /** The mirror direction r = v − 2(v·n)n, in one allocation. */
-    private static Vector mirror(Vector v, Vector n, double nv) {
-        return nv == 0 ? v : new Vector(v.getX() - 2 * nv * n.getX(), v.getY() - 2 * nv * n.getY(), v.getZ() - 2 * nv * n.getZ());
+    /** Double3.lowerThan(MIN_CALC_COLOR_K) of (r, g, b). */
+    private static boolean lowerThanMin(double r, double g, double b) {
+        return r < MIN_CALC_COLOR_K && g < MIN_CALC_COLOR_K && b < MIN_CALC_COLOR_K;
+    }
+
+    /** {@link #beam} along the mirror direction r = v − 2(v·n)n of the hit's ray. */
+    private void mirrorBeam(Hit hit, double nv, double spread, double kxr, double kxg, double kxb, double kkr,
+                            double kkg, double kkb, int level, int budget, TraceContext ctx) {
+        double vx = hit.directionX(), vy = hit.directionY(), vz = hit.directionZ();
+        if (nv != 0) {
+            vx = vx - 2 * nv * hit.normalX();
+            vy = vy - 2 * nv * hit.normalY();
+            vz = vz - 2 * nv * hit.normalZ();
+        }
+        beam(hit, vx, vy, vz, spread, kxr, kxg, kxb, kkr, kkg, kkb, level, budget, ctx);
     }
 
     /**
      * Reflection and transmission of a material with an index of refraction ({@link Material#ior}
-     * ≠ 1). Inside and outside are told by the normal: a ray against the normal ({@code v·n < 0})
-     * enters the material (from index 1 to {@code ior}), a ray along it leaves (from {@code ior}
-     * to 1); there is no stack of media, so a refracting body sits in air and is closed, its
-     * normals pointing out. The transmitted ray follows Snell's law; beyond the critical angle it
-     * is reflected instead (total internal reflection, with weight kT); when the material reflects
-     * (kR &gt; 0) the Fresnel reflectance F (Schlick's approximation, with the cosine on the side of
-     * the lower index) moves F·kT from the transmission to the reflection. Reflected light spreads
-     * by the reflection spread, transmitted light by the transmission spread.
+     * ≠ 1), into slot {@code level}. Inside and outside are told by the normal: a ray against the
+     * normal ({@code v·n < 0}) enters the material (from index 1 to {@code ior}), a ray along it
+     * leaves (from {@code ior} to 1); there is no stack of media, so a refracting body sits in air
+     * and is closed, its normals pointing out. The transmitted ray follows Snell's law; beyond the
+     * critical angle it is reflected instead (total internal reflection, with weight kT); when the
+     * material reflects (kR &gt; 0) the Fresnel reflectance F (Schlick's approximation, with the
+     * cosine on the side of the lower index) moves F·kT from the transmission to the reflection.
+     * Reflected light spreads by the reflection spread, transmitted light by the transmission spread.
      */
-    private Color refraction(Point p, Vector n, Vector v, double nv, Material material, int level, Double3 k,
-                             int budget, TraceContext ctx) {
+    private void refraction(Hit hit, double nv, Material material, int level, double kr, double kg, double kb,
+                            int budget, TraceContext ctx) {
         double eta = nv < 0 ? 1 / material.ior : material.ior; // n₁ / n₂
         double cosI = Math.abs(nv);
         double cos2T = 1 - eta * eta * (1 - cosI * cosI);
-        Double3 kr = material.kR, kt = material.kT;
-        Vector t = null;
+        double rr = material.kR.getD1(), rg = material.kR.getD2(), rb = material.kR.getD3();
+        double tr = material.kT.getD1(), tg = material.kT.getD2(), tb = material.kT.getD3();
+        boolean transmits = false;
+        double tx = 0, ty = 0, tz = 0;
         if (cos2T <= 0) { // total internal reflection: all the transmitted light is reflected
-            kr = kr.add(kt);
-            kt = Double3.ZERO;
+            rr = rr + tr;
+            rg = rg + tg;
+            rb = rb + tb;
+            tr = tg = tb = 0;
         } else {
             double cosT = Math.sqrt(cos2T);
             // t = η·v + (η·cosI − cosT)·n', with n' the normal on the incoming side (−sign(v·n)·n).
             double a = (eta * cosI - cosT) * (nv < 0 ? 1 : -1);
-            t = new Vector(eta * v.getX() + a * n.getX(), eta * v.getY() + a * n.getY(), eta * v.getZ() + a * n.getZ());
-            if (!kr.isZero()) {
+            tx = eta * hit.directionX() + a * hit.normalX();
+            ty = eta * hit.directionY() + a * hit.normalY();
+            tz = eta * hit.directionZ() + a * hit.normalZ();
+            transmits = true;
+            if (!(rr == 0 && rg == 0 && rb == 0)) {
                 double r0 = (material.ior - 1) / (material.ior + 1);
                 r0 *= r0;
                 double c = 1 - (eta <= 1 ? cosI : cosT);
                 double f = r0 + (1 - r0) * c * c * c * c * c;
-                kr = kr.add(kt.scale(f));
-                kt = kt.scale(1 - f);
+                rr = rr + tr * f;
+                rg = rg + tg * f;
+                rb = rb + tb * f;
+                tr = tr * (1 - f);
+                tg = tg * (1 - f);
+                tb = tb * (1 - f);
             }
         }
-        Color color = Color.BLACK;
-        Double3 kkr = k.product(kr);
-        if (!kr.isZero() && !kkr.lowerThan(MIN_CALC_COLOR_K))
-            color = color.add(beam(p, n, mirror(v, n, nv), material.reflectionSpread, kr, kkr, level, budget, ctx));
-        Double3 kkt = k.product(kt);
-        if (t != null && !kt.isZero() && !kkt.lowerThan(MIN_CALC_COLOR_K))
-            color = color.add(beam(p, n, t, material.transmissionSpread, kt, kkt, level, budget, ctx));
-        return color;
+        double r = 0, g = 0, b = 0; // Color.BLACK, added to as the object code did
+        double kkr = kr * rr, kkg = kg * rg, kkb = kb * rb;
+        if (!(rr == 0 && rg == 0 && rb == 0) && !lowerThanMin(kkr, kkg, kkb)) {
+            mirrorBeam(hit, nv, material.reflectionSpread, rr, rg, rb, kkr, kkg, kkb, level, budget, ctx);
+            r = r + ctx.red[level];
+            g = g + ctx.green[level];
+            b = b + ctx.blue[level];
+        }
+        kkr = kr * tr;
+        kkg = kg * tg;
+        kkb = kb * tb;
+        if (transmits && !(tr == 0 && tg == 0 && tb == 0) && !lowerThanMin(kkr, kkg, kkb)) {
+            beam(hit, tx, ty, tz, material.transmissionSpread, tr, tg, tb, kkr, kkg, kkb, level, budget, ctx);
+            r = r + ctx.red[level];
+            g = g + ctx.green[level];
+            b = b + ctx.blue[level];
+        }
+        ctx.red[level] = r;
+        ctx.green[level] = g;
+        ctx.blue[level] = b;
     }
 
     /**
-     * One secondary ray along {@code dir}, or, for a spread surface, the average of a beam of rays
-     * aimed at a disk of radius {@code spread} at unit distance along {@code dir}, stratified
-     * over the disk. A sample that would cross to the wrong side of the surface is mirrored back
-     * across it (keeping its weight, so the average neither gains nor loses energy).
+     * One secondary ray along (dx, dy, dz) from the hit point, or, for a spread surface, the
+     * average of a beam of rays aimed at a disk of radius {@code spread} at unit distance along
+     * that direction, stratified over the disk; into slot {@code level}. A sample that would cross
+     * to the wrong side of the surface is mirrored back across it (keeping its weight, so the
+     * average neither gains nor loses energy).
      */
-    private Color beam(Point p, Vector n, Vector dir, double spread, Double3 kx, Double3 kkx, int level, int budget,
-                       TraceContext ctx) {
-        if (spread == 0) return secondary(new Ray(p, dir, n), level, kx, kkx, budget, ctx);
-        Vector a = perpendicular(dir);
-        Vector b = dir.crossProduct(a);
-        double side = n.dotProduct(dir);
+    private void beam(Hit hit, double dirX, double dirY, double dirZ, double spread, double kxr, double kxg,
+                      double kxb, double kkr, double kkg, double kkb, int level, int budget, TraceContext ctx) {
+        if (spread == 0) {
+            secondary(hit, dirX, dirY, dirZ, kxr, kxg, kxb, kkr, kkg, kkb, level, budget, ctx);
+            return;
+        }
+        double[] basis = ctx.vector;
+        perpendicular(dirX, dirY, dirZ, basis);
+        double ax = basis[0], ay = basis[1], az = basis[2];
+        Vector.crossProduct(dirX, dirY, dirZ, ax, ay, az, basis);
+        double bx = basis[0], by = basis[1], bz = basis[2];
+        double nx = hit.normalX(), ny = hit.normalY(), nz = hit.normalZ();
+        double side = nx * dirX + ny * dirY + nz * dirZ;
         SampleStream rnd = ctx.random;
         double offset = rnd.nextDouble();
         double sr = 0, sg = 0, sb = 0;
@@ -360,28 +480,50 @@ public class RayTracerBasic extends RayTracerBase {
         for (int i = 0; i < budget; ++i) {
             diskPoint(i, budget, offset, rnd, spread, disk);
             double cx = disk[0], cy = disk[1];
-            double dx = dir.getX() + cx * a.getX() + cy * b.getX();
-            double dy = dir.getY() + cx * a.getY() + cy * b.getY();
-            double dz = dir.getZ() + cx * a.getZ() + cy * b.getZ();
-            double dn = dx * n.getX() + dy * n.getY() + dz * n.getZ();
+            double dx = dirX + cx * ax + cy * bx;
+            double dy = dirY + cx * ay + cy * by;
+            double dz = dirZ + cx * az + cy * bz;
+            double dn = dx * nx + dy * ny + dz * nz;
             if (dn * side < 0) {
-                dx -= 2 * dn * n.getX();
-                dy -= 2 * dn * n.getY();
-                dz -= 2 * dn * n.getZ();
+                dx -= 2 * dn * nx;
+                dy -= 2 * dn * ny;
+                dz -= 2 * dn * nz;
             }
-            Color c = secondary(new Ray(p, new Vector(dx, dy, dz), n), level, kx, kkx, 1, ctx);
-            sr += c.getR();
-            sg += c.getG();
-            sb += c.getB();
+            secondary(hit, dx, dy, dz, kxr, kxg, kxb, kkr, kkg, kkb, level, 1, ctx);
+            sr += ctx.red[level];
+            sg += ctx.green[level];
+            sb += ctx.blue[level];
         }
-        return new Color(sr / budget, sg / budget, sb / budget);
+        ctx.red[level] = sr / budget;
+        ctx.green[level] = sg / budget;
+        ctx.blue[level] = sb / budget;
     }
 
-    private Color secondary(Ray ray, int level, Double3 kx, Double3 kkx, int budget, TraceContext ctx) {
+    /**
+     * The colour seen along the secondary ray {@code new Ray(p, direction, n)} from the hit point,
+     * scaled by kx, into slot {@code level}; its hit is shaded one level down with the
+     * coefficient kk.
+     */
+    private void secondary(Hit hit, double dx, double dy, double dz, double kxr, double kxg, double kxb,
+                           double kkr, double kkg, double kkb, int level, int budget, TraceContext ctx) {
         ctx.secondaryRays++;
-        Hit hit = ctx.hit(level - 1, Double.POSITIVE_INFINITY);
-        Color c = world.closestHit(ray, hit) ? calcColor(hit, ray, level - 1, kkx, budget, ctx) : scene.background;
-        return c.scale(kx);
+        Hit next = ctx.hit(level - 1, Double.POSITIVE_INFINITY).setRay(hit.pointX(), hit.pointY(), hit.pointZ(),
+                dx, dy, dz, hit.normalX(), hit.normalY(), hit.normalZ());
+        double r, g, b;
+        if (world.closestHit(next)) {
+            calcColor(next, level - 1, kkr, kkg, kkb, budget, ctx);
+            r = ctx.red[level - 1];
+            g = ctx.green[level - 1];
+            b = ctx.blue[level - 1];
+        } else {
+            Color bg = scene.background;
+            r = bg.getR();
+            g = bg.getG();
+            b = bg.getB();
+        }
+        ctx.red[level] = r * kxr; // Color.scale(Double3)
+        ctx.green[level] = g * kxg;
+        ctx.blue[level] = b * kxb;
     }
 
     /**
@@ -397,10 +539,14 @@ public class RayTracerBasic extends RayTracerBase {
         out[1] = rad * Math.sin(ang);
     }
 
-    /** A unit vector orthogonal to {@code v}. */
-    private static Vector perpendicular(Vector v) {
-        Vector axis = Math.abs(v.getX()) < 0.9 ? Vector.AXIS_X : Vector.AXIS_Y;
-        return v.crossProduct(axis).normalize();
+    /**
+     * A unit vector orthogonal to (x, y, z), into {@code out}: the cross product with the x axis
+     * (the y axis when v is near it), normalized.
+     */
+    private static void perpendicular(double x, double y, double z, double[] out) {
+        Vector axis = Math.abs(x) < 0.9 ? Vector.AXIS_X : Vector.AXIS_Y;
+        Vector.crossProduct(x, y, z, axis.getX(), axis.getY(), axis.getZ(), out);
+        Vector.normalize(out[0], out[1], out[2], out);
     }
 
     private static double frac(double x) {

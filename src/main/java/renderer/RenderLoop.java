@@ -12,8 +12,6 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 
-import primitives.Color;
-
 /**
  * The one render loop. The image is cut into square tiles; workers claim tiles from an atomic
  * counter (no lock per pixel) and sample every pixel of a tile with their own
@@ -140,8 +138,8 @@ final class RenderLoop {
         sampler.beginTile(tx0, ty0, tx1, ty1);
         for (int y = ty0; y < ty1; ++y)
             for (int x = tx0; x < tx1; ++x) {
-                Color c = sampler.sample(x, y, ctx);
-                image.writePixel(x, y, c);
+                sampler.sample(x, y, ctx);
+                image.writePixel(x, y, ctx.r, ctx.g, ctx.b);
             }
         return (long) (tx1 - tx0) * (ty1 - ty0);
     }
