@@ -59,9 +59,45 @@ public abstract class Geometry extends Intersectable {
      * shapes, asks {@link #getNormal(Point)}.
      */
     void normalAt(Hit hit) {
+        courseNormal(hit);
+    }
+
+    /**
+     * The normal the renderer uses: {@link #normalAt(Hit)}, unless a user's subclass of a library
+     * shape redefines {@link #getNormal(Point)} below the class that computes the normal in
+     * doubles; then that override is asked, as it was before the doubles form existed.
+     */
+    final void surfaceNormal(Hit hit) {
+        if (COURSE_NORMAL.get(getClass())) courseNormal(hit);
+        else normalAt(hit);
+    }
+
+    private void courseNormal(Hit hit) {
         Vector n = getNormal(new Point(hit.px, hit.py, hit.pz));
         hit.normal[0] = n.getX();
         hit.normal[1] = n.getY();
         hit.normal[2] = n.getZ();
+    }
+
+    /**
+     * Per class, found once by reflection: whether {@code getNormal(Point)} is declared in a
+     * class strictly below the one that declares {@code normalAt(Hit)} (a library shape's).
+     */
+    private static final ClassValue<Boolean> COURSE_NORMAL = new ClassValue<>() {
+        @Override
+        protected Boolean computeValue(Class<?> type) {
+            Class<?> doubles = declaring(type, "normalAt", Hit.class);
+            Class<?> course = declaring(type, "getNormal", Point.class);
+            return doubles != Geometry.class && course != doubles && doubles.isAssignableFrom(course);
+        }
+    };
+
+    /** The nearest class from {@code type} up to Geometry that declares {@code name(parameter)}. */
+    private static Class<?> declaring(Class<?> type, String name, Class<?> parameter) {
+        for (Class<?> c = type; c != Geometry.class; c = c.getSuperclass())
+            for (java.lang.reflect.Method m : c.getDeclaredMethods())
+                if (m.getName().equals(name) && m.getParameterCount() == 1 && m.getParameterTypes()[0] == parameter)
+                    return c;
+        return Geometry.class;
     }
 }

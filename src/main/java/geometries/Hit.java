@@ -214,7 +214,7 @@ public final class Hit {
             py = oy + dy * t;
             pz = oz + dz * t;
         }
-        geometry.normalAt(this);
+        geometry.surfaceNormal(this);
         return this;
     }
 
@@ -264,7 +264,7 @@ public final class Hit {
         px = point.getX();
         py = point.getY();
         pz = point.getZ();
-        geometry.normalAt(this);
+        geometry.surfaceNormal(this);
         return new Vector(normal[0], normal[1], normal[2]);
     }
 }

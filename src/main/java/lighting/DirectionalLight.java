@@ -11,6 +11,12 @@ public class DirectionalLight extends Light implements LightSource {
     private final Vector direction;
 
     /**
+     * Whether this is exactly a library {@code DirectionalLight}: a user's subclass may override
+     * the object forms, which its doubles forms then ask.
+     */
+    private final boolean library = getClass() == DirectionalLight.class;
+
+    /**
      * A light at infinity (the sun): the same intensity and direction at every point, no attenuation.
      *
      * @param intensity the intensity at every point, non-negative
@@ -39,6 +45,10 @@ public class DirectionalLight extends Light implements LightSource {
 
     @Override
     public void getIntensity(double x, double y, double z, double[] out) {
+        if (!library) {
+            LightSource.super.getIntensity(x, y, z, out);
+            return;
+        }
         out[0] = intensity.getR();
         out[1] = intensity.getG();
         out[2] = intensity.getB();
@@ -46,6 +56,10 @@ public class DirectionalLight extends Light implements LightSource {
 
     @Override
     public void getL(double x, double y, double z, double[] out) {
+        if (!library) {
+            LightSource.super.getL(x, y, z, out);
+            return;
+        }
         out[0] = direction.getX();
         out[1] = direction.getY();
         out[2] = direction.getZ();
@@ -53,6 +67,6 @@ public class DirectionalLight extends Light implements LightSource {
 
     @Override
     public double getDistance(double x, double y, double z) {
-        return Double.POSITIVE_INFINITY;
+        return library ? Double.POSITIVE_INFINITY : LightSource.super.getDistance(x, y, z);
     }
 }

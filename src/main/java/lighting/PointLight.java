@@ -17,6 +17,12 @@ import primitives.Vector;
 public class PointLight extends Light implements LightSource {
     /** Where the light is, in scene coordinates; the centre of its disk when it has a radius. */
     protected final Point position;
+    /**
+     * Whether this is exactly a library light ({@code PointLight} or {@code SpotLight}). A user's
+     * subclass may override the object forms ({@link #getIntensity(Point)}, {@link #getL(Point)},
+     * {@link #getDistance(Point)}, {@link #attenuation(Point)}): its doubles forms then ask them.
+     */
+    private final boolean library = getClass() == PointLight.class || getClass() == SpotLight.class;
     private double kC = 1;
     private double kL = 0;
     private double kQ = 0;
@@ -131,11 +137,16 @@ public class PointLight extends Light implements LightSource {
      *         which {@link #validate()} rejects before a render)
      */
     protected double attenuation(Point p) {
-        return attenuation(p.getX(), p.getY(), p.getZ());
+        return attenuationHere(p.getX(), p.getY(), p.getZ());
     }
 
     /** {@link #attenuation(Point)} of the point (x, y, z): the one computation. */
     final double attenuation(double x, double y, double z) {
+        if (!library) return attenuation(new Point(x, y, z));
+        return attenuationHere(x, y, z);
+    }
+
+    private double attenuationHere(double x, double y, double z) {
         double d2 = distanceSquared(x, y, z);
         double denominator = kC + kL * Math.sqrt(d2) + kQ * d2;
         if (!(denominator > 0))
@@ -167,6 +178,10 @@ public class PointLight extends Light implements LightSource {
 
     @Override
     public void getIntensity(double x, double y, double z, double[] out) {
+        if (!library) {
+            LightSource.super.getIntensity(x, y, z, out);
+            return;
+        }
         double f = intensityFactor(x, y, z);
         out[0] = intensity.getR() * f; // Color.scale's arithmetic, without the object
         out[1] = intensity.getG() * f;
@@ -176,12 +191,20 @@ public class PointLight extends Light implements LightSource {
     @Override
     public Vector getL(Point p) {
         double[] l = new double[3];
-        getL(p.getX(), p.getY(), p.getZ(), l);
+        lHere(p.getX(), p.getY(), p.getZ(), l);
         return new Vector(l[0], l[1], l[2]);
     }
 
     @Override
     public void getL(double x, double y, double z, double[] out) {
+        if (!library) {
+            LightSource.super.getL(x, y, z, out);
+            return;
+        }
+        lHere(x, y, z, out);
+    }
+
+    private void lHere(double x, double y, double z, double[] out) {
         double dx = x - position.getX(), dy = y - position.getY(), dz = z - position.getZ();
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
         if (len == 0) throw new IllegalArgumentException("point " + new Point(x, y, z) + " is at the light's position");
@@ -192,11 +215,12 @@ public class PointLight extends Light implements LightSource {
 
     @Override
     public double getDistance(Point p) {
-        return getDistance(p.getX(), p.getY(), p.getZ());
+        return Math.sqrt(distanceSquared(p.getX(), p.getY(), p.getZ()));
     }
 
     @Override
     public double getDistance(double x, double y, double z) {
+        if (!library) return LightSource.super.getDistance(x, y, z);
         return Math.sqrt(distanceSquared(x, y, z));
     }
 }

@@ -145,4 +145,56 @@ class HitTest {
         }
         assertThat(hits).as("rays that hit the %s", name).isGreaterThan(300);
     }
+
+    /** A user's subclass of a library shape that redefines the normal (pointing inward). */
+    private static final class InsideOut extends Sphere {
+        InsideOut() {
+            super(new Point(1, -2, 0.5), 3);
+        }
+
+        @Override
+        public Vector getNormal(Point point) {
+            return super.getNormal(point).scale(-1);
+        }
+    }
+
+    /** A user's subclass of a library mesh that changes nothing: the mesh's own (smooth) normal stays. */
+    private static final class MyMesh extends TriangleMesh {
+        MyMesh(double[] positions, int[] indices, double[] normals) {
+            super(positions, indices, normals);
+        }
+    }
+
+    @org.junit.jupiter.api.Test
+    @DisplayName("a user's subclass that overrides getNormal(Point) gets its normal used; one that does not keeps the library's")
+    void userSubclassNormals() {
+        double[] pos = { -5, -5, 0, 5, -5, 0.5, 0, 6, -1, 0, 0, 4 };
+        int[] idx = { 0, 1, 2, 0, 1, 3, 1, 2, 3, 2, 0, 3 };
+        double[] nrm = { -1, -1, 0.2, 1, -1, 0.3, 0, 1, -0.2, 0, 0, 1 };
+        Geometry insideOut = new InsideOut(), myMesh = new MyMesh(pos, idx, nrm), mesh = new TriangleMesh(pos, idx, nrm);
+        Random rnd = new Random(SEED + 3);
+        Hit hit = new Hit(), plain = new Hit();
+        int sphereHits = 0, meshHits = 0;
+        for (int i = 0; i < 2000; ++i) {
+            Point from = RandomScenes.point(rnd, Point.ZERO, 15), to = RandomScenes.point(rnd, Point.ZERO, 3);
+            Ray ray = new Ray(from, to.subtract(from));
+            if (insideOut.closestHit(ray, hit.reset(Double.POSITIVE_INFINITY))) {
+                ++sphereHits;
+                hit.computeSurface();
+                Vector n = insideOut.getNormal(new Point(hit.pointX(), hit.pointY(), hit.pointZ()));
+                assertThat(new double[] { hit.normalX(), hit.normalY(), hit.normalZ() }).as("inward normal for %s", ray)
+                        .containsExactly(n.getX(), n.getY(), n.getZ());
+            }
+            if (myMesh.closestHit(ray, hit.reset(Double.POSITIVE_INFINITY))) {
+                ++meshHits;
+                assertThat(mesh.closestHit(ray, plain.reset(Double.POSITIVE_INFINITY))).isTrue();
+                hit.computeSurface();
+                plain.computeSurface();
+                assertThat(new double[] { hit.normalX(), hit.normalY(), hit.normalZ() }).as("smooth normal for %s", ray)
+                        .containsExactly(plain.normalX(), plain.normalY(), plain.normalZ());
+            }
+        }
+        assertThat(sphereHits).isGreaterThan(200);
+        assertThat(meshHits).isGreaterThan(200);
+    }
 }

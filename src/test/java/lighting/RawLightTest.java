@@ -18,7 +18,8 @@ import primitives.Vector;
  * The renderer asks lights about points given as doubles ({@code getL(x, y, z, out)} and so on).
  * Those answers are bit for bit the object methods' for the library's lights (whose object forms
  * call them) and for a user's light that implements only the object methods (the defaults call
- * those).
+ * those), and for a user's subclass of a library light that overrides an object method (the
+ * doubles forms then ask the override).
  */
 class RawLightTest {
     /** A light written by a user: only the course's three methods. */
@@ -41,6 +42,47 @@ class RawLightTest {
         }
     }
 
+    /** A user's subclass of a library light that changes its falloff: both forms must use it. */
+    private static final class Dimmed extends SpotLight {
+        Dimmed() {
+            super(new Color(300, 200, 100), new Point(1, 2, 3), new Vector(0, 0, -1));
+        }
+
+        @Override
+        protected double attenuation(Point p) {
+            return 1 / (1 + 0.5 * p.distance(position));
+        }
+    }
+
+    /** A user's subclass of a library light that redefines its direction and intensity. */
+    private static final class Tilted extends DirectionalLight {
+        Tilted() {
+            super(new Color(10, 20, 30), new Vector(0, 0, -1));
+        }
+
+        @Override
+        public Vector getL(Point p) {
+            return new Vector(1, 1, -1).normalize();
+        }
+
+        @Override
+        public Color getIntensity(Point p) {
+            return new Color(Math.abs(p.getX()), 1, 2);
+        }
+    }
+
+    /** A user's subclass of a point light that only reports another distance. */
+    private static final class FarAway extends PointLight {
+        FarAway() {
+            super(new Color(1, 2, 3), new Point(0, 0, 0));
+        }
+
+        @Override
+        public double getDistance(Point p) {
+            return 2 * super.getDistance(p);
+        }
+    }
+
     static Stream<Arguments> lights() {
         return Stream.of(
                 Arguments.of("point light", new PointLight(new Color(500, 400, 300), new Point(10, 20, 30)).setKl(0.01).setKq(0.001)),
@@ -49,7 +91,10 @@ class RawLightTest {
                 Arguments.of("spot light, plain cosine", new SpotLight(new Color(70, 60, 90), new Point(0, 10, 0),
                         new Vector(0, -1, 0))),
                 Arguments.of("directional light", new DirectionalLight(new Color(240, 240, 240), new Vector(1, -1, -3))),
-                Arguments.of("a user's light (object defaults)", new Lamp()));
+                Arguments.of("a user's light (object defaults)", new Lamp()),
+                Arguments.of("a user's spot light with its own attenuation", new Dimmed()),
+                Arguments.of("a user's directional light with its own direction and intensity", new Tilted()),
+                Arguments.of("a user's point light with its own distance", new FarAway()));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -69,5 +114,19 @@ class RawLightTest {
             assertThat(light.getDistance(p.getX(), p.getY(), p.getZ())).as("getDistance at %s", p)
                     .isEqualTo(light.getDistance(p));
         }
+    }
+
+    @org.junit.jupiter.api.Test
+    @DisplayName("a user's override of a library light's object method is what the doubles forms answer")
+    void overridesAreAsked() {
+        double[] mine = new double[3], plain = new double[3];
+        // Below the spot light, inside its beam: the user's falloff, not the library's kC + kL·d + kQ·d².
+        new Dimmed().getIntensity(1, 2, -7, mine);
+        new SpotLight(new Color(300, 200, 100), new Point(1, 2, 3), new Vector(0, 0, -1)).getIntensity(1, 2, -7, plain);
+        assertThat(mine).containsExactly(plain[0] * (1 / 6.0), plain[1] * (1 / 6.0), plain[2] * (1 / 6.0));
+        new Tilted().getL(5, 5, 5, mine);
+        Vector expected = new Vector(1, 1, -1).normalize();
+        assertThat(mine).containsExactly(expected.getX(), expected.getY(), expected.getZ());
+        assertThat(new FarAway().getDistance(3, 4, 0)).isEqualTo(10);
     }
 }
