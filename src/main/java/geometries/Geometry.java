@@ -14,6 +14,8 @@ import primitives.Vector;
 public abstract class Geometry extends Intersectable {
     private Color emission = Color.BLACK;
     private Material material = new Material();
+    /** Whether {@link #surfaceNormal} asks {@link #getNormal(Point)} (see there); fixed per class. */
+    private final boolean courseNormal = COURSE_NORMAL.get(getClass());
 
     /** @return the light the surface gives off by itself; black by default */
     public Color getEmission() {
@@ -68,7 +70,7 @@ public abstract class Geometry extends Intersectable {
      * doubles; then that override is asked, as it was before the doubles form existed.
      */
     final void surfaceNormal(Hit hit) {
-        if (COURSE_NORMAL.get(getClass())) courseNormal(hit);
+        if (courseNormal) courseNormal(hit);
         else normalAt(hit);
     }
 
