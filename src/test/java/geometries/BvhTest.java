@@ -75,6 +75,20 @@ class BvhTest {
         assertThat(hits).as("rays that hit something (the test must not be vacuous)").isGreaterThan(rays.size() / 10);
     }
 
+    /**
+     * Asserts the tree's any-hit walk visits what the flat list's does (the same multiset of
+     * (geometry, t)) for seeded random rays, each within an unbounded or a random distance.
+     */
+    private static void assertSameVisitsAsFlat(Scene scene, long seed) {
+        Bvh tree = Bvh.build(scene.geometries());
+        Random rnd = new Random(seed);
+        for (Ray ray : RandomScenes.rays(new Random(seed + 1), RAYS, scene.centre(), scene.half())) {
+            double max = rnd.nextBoolean() ? Double.POSITIVE_INFINITY : 3 * scene.half() * rnd.nextDouble();
+            Hits.assertSameVisits(Hits.visited(tree, ray, max), Hits.visited(scene.geometries(), ray, max), 0,
+                    "tree vs flat walk within " + max + " for " + ray);
+        }
+    }
+
     /** The shadow-ray walk: the product of kT of every occluder within maxDistance. */
     private static final class Transparency implements HitVisitor {
         double r = 1, g = 1, b = 1;
@@ -140,13 +154,7 @@ class BvhTest {
         @MethodSource("geometries.BvhTest#randomScenes")
         @DisplayName("visitHits: the same multiset of (geometry, t)")
         void visitHits(Scene scene) {
-            Bvh tree = Bvh.build(scene.geometries());
-            Random rnd = new Random(300);
-            for (Ray ray : RandomScenes.rays(new Random(301), RAYS, scene.centre(), scene.half())) {
-                double max = rnd.nextBoolean() ? Double.POSITIVE_INFINITY : 3 * scene.half() * rnd.nextDouble();
-                Hits.assertSameVisits(Hits.visited(tree, ray, max), Hits.visited(scene.geometries(), ray, max), 0,
-                        "tree vs flat walk within " + max + " for " + ray);
-            }
+            assertSameVisitsAsFlat(scene, 300);
         }
 
         @ParameterizedTest(name = "{0}")
@@ -458,13 +466,7 @@ class BvhTest {
         @MethodSource("geometries.BvhTest#awkwardScenes")
         @DisplayName("visitHits: the same multiset of (geometry, t) as the flat list")
         void visitHits(Scene scene) {
-            Bvh tree = Bvh.build(scene.geometries());
-            Random rnd = new Random(701);
-            for (Ray ray : RandomScenes.rays(new Random(702), RAYS, scene.centre(), scene.half())) {
-                double max = rnd.nextBoolean() ? Double.POSITIVE_INFINITY : 3 * scene.half() * rnd.nextDouble();
-                Hits.assertSameVisits(Hits.visited(tree, ray, max), Hits.visited(scene.geometries(), ray, max), 0,
-                        "tree vs flat walk within " + max + " for " + ray);
-            }
+            assertSameVisitsAsFlat(scene, 701);
         }
 
         @Test
