@@ -56,6 +56,13 @@ public final class Camera {
     private final double debugPrint; // percent between progress lines; 0: none
     private final boolean summary;
     private final PrintStream output;
+    // Per camera ray these are constants: computed once here, by the very operations the ray
+    // used to repeat (so the rays keep their bits), off the path of every camera ray: two of
+    // them are divisions.
+    /** The view plane's centre, location + vTo·vpDistance. */
+    private final double centreX, centreY, centreZ;
+    /** A pixel's width and height on the view plane, and half the image's width and height in pixels. */
+    private final double pixelWidth, pixelHeight, halfNx, halfNy;
 
     private Camera(Builder b, Vector vTo, Vector vUp, ImageWriter imageWriter, RayTracerBase rayTracer) {
         location = b.location;
@@ -80,6 +87,14 @@ public final class Camera {
         debugPrint = b.debugPrint;
         summary = b.summary;
         output = b.output;
+        centreX = location.getX() + vTo.getX() * vpDistance;
+        centreY = location.getY() + vTo.getY() * vpDistance;
+        centreZ = location.getZ() + vTo.getZ() * vpDistance;
+        int nX = imageWriter.getNx(), nY = imageWriter.getNy();
+        pixelWidth = vpWidth / nX;
+        pixelHeight = vpHeight / nY;
+        halfNx = nX / 2.0;
+        halfNy = nY / 2.0;
     }
 
     /**
@@ -163,9 +178,7 @@ public final class Camera {
      * render's camera rays.
      */
     private void viewPlaneDirection(double xOffset, double yOffset, double[] out) {
-        double px = location.getX() + vTo.getX() * vpDistance;
-        double py = location.getY() + vTo.getY() * vpDistance;
-        double pz = location.getZ() + vTo.getZ() * vpDistance;
+        double px = centreX, py = centreY, pz = centreZ;
         if (xOffset != 0) {
             px += vRight.getX() * xOffset;
             py += vRight.getY() * xOffset;
@@ -191,9 +204,8 @@ public final class Camera {
      * {@code ctx.random}, which the sampler has positioned for this sample.
      */
     void trace(double px, double py, TraceContext ctx) {
-        int nX = imageWriter.getNx(), nY = imageWriter.getNy();
-        double xOffset = (px - nX / 2.0) * (vpWidth / nX);
-        double yOffset = -(py - nY / 2.0) * (vpHeight / nY);
+        double xOffset = (px - halfNx) * pixelWidth;
+        double yOffset = -(py - halfNy) * pixelHeight;
         ctx.cameraRays++;
         double[] d = ctx.vector;
         viewPlaneDirection(xOffset, yOffset, d);
