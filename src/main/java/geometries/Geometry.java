@@ -88,18 +88,9 @@ public abstract class Geometry extends Intersectable {
     private static final ClassValue<Boolean> COURSE_NORMAL = new ClassValue<>() {
         @Override
         protected Boolean computeValue(Class<?> type) {
-            Class<?> doubles = declaring(type, "normalAt", Hit.class);
-            Class<?> course = declaring(type, "getNormal", Point.class);
+            Class<?> doubles = HookCheck.declaring(type, Geometry.class, "normalAt", Hit.class);
+            Class<?> course = HookCheck.declaring(type, Geometry.class, "getNormal", Point.class);
             return doubles != Geometry.class && course != doubles && doubles.isAssignableFrom(course);
         }
     };
-
-    /** The nearest class from {@code type} up to Geometry that declares {@code name(parameter)}. */
-    private static Class<?> declaring(Class<?> type, String name, Class<?> parameter) {
-        for (Class<?> c = type; c != Geometry.class; c = c.getSuperclass())
-            for (java.lang.reflect.Method m : c.getDeclaredMethods())
-                if (m.getName().equals(name) && m.getParameterCount() == 1 && m.getParameterTypes()[0] == parameter)
-                    return c;
-        return Geometry.class;
-    }
 }

@@ -1,15 +1,17 @@
 package geometries;
 
 import java.lang.reflect.Method;
+import java.util.Arrays;
 import java.util.Set;
 
 import primitives.Ray;
 
 /**
- * Whether a class of intersectables overrides one of the three course years' intersection hooks
+ * Which methods a user's class overrides, found by reflection once per class. Chiefly: whether a
+ * class of intersectables overrides one of the three course years' intersection hooks
  * ({@link Intersectable#findGeoIntersectionsHelper}, {@link Intersectable#calculateIntersectionsHelper},
- * {@link Intersectable#calcIntersectionsHelper}). The answer is found once per class by
- * reflection and cached with the class, so constructing a million spheres costs one lookup each.
+ * {@link Intersectable#calcIntersectionsHelper}). Each answer is cached with the class, so
+ * constructing a million spheres costs one lookup each.
  */
 final class HookCheck {
     private static final Set<String> HOOKS =
@@ -19,11 +21,8 @@ final class HookCheck {
     private static final ClassValue<Boolean> OVERRIDES = new ClassValue<>() {
         @Override
         protected Boolean computeValue(Class<?> type) {
-            for (Class<?> c = type; c != null && c != Intersectable.class; c = c.getSuperclass())
-                for (Method m : c.getDeclaredMethods())
-                    if (HOOKS.contains(m.getName()) && m.getParameterCount() == 2
-                            && m.getParameterTypes()[0] == Ray.class && m.getParameterTypes()[1] == double.class)
-                        return true;
+            for (String hook : HOOKS)
+                if (declaring(type, Intersectable.class, hook, Ray.class, double.class) != Intersectable.class) return true;
             return false;
         }
     };
@@ -34,5 +33,17 @@ final class HookCheck {
     /** @return true when {@code type} or a superclass below Intersectable declares one of the hooks */
     static boolean overridesAHook(Class<?> type) {
         return OVERRIDES.get(type);
+    }
+
+    /**
+     * The nearest class from {@code type} up to, not including, {@code top} that declares the
+     * method {@code name(parameters)}; {@code top} when none below it does. The one reflection
+     * walk behind the override checks of this package.
+     */
+    static Class<?> declaring(Class<?> type, Class<?> top, String name, Class<?>... parameters) {
+        for (Class<?> c = type; c != null && c != top; c = c.getSuperclass())
+            for (Method m : c.getDeclaredMethods())
+                if (m.getName().equals(name) && Arrays.equals(m.getParameterTypes(), parameters)) return c;
+        return top;
     }
 }

@@ -2,7 +2,6 @@ package geometries;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.util.List;
 import java.util.Random;
 import java.util.stream.Stream;
 
@@ -84,22 +83,6 @@ class HitTest {
         }
     }
 
-    /** A shape as a course student writes it: only the list hook, so the default (object) paths answer. */
-    private static final class Ball extends Geometry {
-        private final Sphere surface = new Sphere(new Point(1, -2, 0.5), 3);
-
-        @Override
-        public Vector getNormal(Point point) {
-            return surface.getNormal(point);
-        }
-
-        @Override
-        protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-            List<GeoPoint> found = surface.findGeoIntersections(ray, maxDistance);
-            return found == null ? null : found.stream().map(gp -> new GeoPoint(this, gp.point)).toList();
-        }
-    }
-
     static Stream<Arguments> shapes() {
         Ray axis = new Ray(new Point(0.5, -1, 0), new Vector(0.2, 1, -0.3));
         return Stream.of(
@@ -115,7 +98,7 @@ class HitTest {
                 Arguments.of("smooth mesh", new TriangleMesh(new double[] { -5, -5, 0, 5, -5, 0.5, 0, 6, -1, 0, 0, 4 },
                         new int[] { 0, 1, 2, 0, 1, 3, 1, 2, 3, 2, 0, 3 },
                         new double[] { -1, -1, 0.2, 1, -1, 0.3, 0, 1, -0.2, 0, 0, 1 })),
-                Arguments.of("a user's shape (object defaults)", new Ball()));
+                Arguments.of("a user's shape (object defaults)", new Course5784Test.Ball()));
     }
 
     @ParameterizedTest(name = "{0}")
@@ -165,7 +148,7 @@ class HitTest {
         }
     }
 
-    @org.junit.jupiter.api.Test
+    @Test
     @DisplayName("a user's subclass that overrides getNormal(Point) gets its normal used; one that does not keeps the library's")
     void userSubclassNormals() {
         double[] pos = { -5, -5, 0, 5, -5, 0.5, 0, 6, -1, 0, 0, 4 };
