@@ -57,9 +57,14 @@ public final class BoundingBox {
      * of a mesh's early-out box: they must agree, or the two paths would disagree at the edges.
      */
     BoundingBox padded() {
-        double eps = 1e-9 * (1 + Math.max(Math.max(Math.abs(minX), Math.abs(maxX)),
-                Math.max(Math.max(Math.abs(minY), Math.abs(maxY)), Math.max(Math.abs(minZ), Math.abs(maxZ)))));
+        double eps = padding();
         return new BoundingBox(minX - eps, minY - eps, minZ - eps, maxX + eps, maxY + eps, maxZ + eps);
+    }
+
+    /** The margin {@link #padded()} adds on every side, in scene units (for builders that write the padded bounds themselves). */
+    double padding() {
+        return 1e-9 * (1 + Math.max(Math.max(Math.abs(minX), Math.abs(maxX)),
+                Math.max(Math.max(Math.abs(minY), Math.abs(maxY)), Math.max(Math.abs(minZ), Math.abs(maxZ)))));
     }
 
     /** Half the surface area (the SAH cost only needs ratios). */

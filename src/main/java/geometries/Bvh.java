@@ -26,6 +26,8 @@ public final class Bvh extends Intersectable {
     private static final double TRAVERSAL_COST = 1.0;
     /** Nodes with more primitives than this are binned along their widest axis only. */
     private static final int FULL_SEARCH_LIMIT = 1 << 16;
+    /** Nodes of at most this many primitives are searched without bins (the same split, found faster). */
+    private static final int FEW = 24;
     /**
      * Subtrees over more primitives than this are built as parallel tasks; smaller ones are not
      * worth a task (about 0.1 ms of work).
@@ -33,6 +35,8 @@ public final class Bvh extends Intersectable {
     private static final int FORK_ABOVE = 4096;
     /** The builder's bounds of a range: box min xyz, max xyz, then centroid min xyz, max xyz. */
     private static final int BOUNDS = 12;
+    /** Leaves or primitives per task in the build's flat loops (about 1 ms of work). */
+    private static final int GRAIN = 1 << 14;
 
     /** The leaves this tree indexes, as collected: what it contributes to a tree built around it. */
     private final Intersectable[] leaves;
@@ -89,39 +93,76 @@ public final class Bvh extends Intersectable {
 
     /** As {@link #build(Geometries, int)}, forking subtrees over more than {@code forkAbove} primitives. */
     static Bvh build(Geometries geometries, int parallelism, int forkAbove) {
-        if (parallelism < 1) throw new IllegalArgumentException("parallelism must be at least 1, got " + parallelism);
-        return new Bvh(geometries, parallelism, Math.max(1, forkAbove));
+        return build(geometries, parallelism, forkAbove, FEW);
     }
 
-    private Bvh(Geometries geometries, int parallelism, int forkAbove) {
-        List<Intersectable> leaves = new ArrayList<>();
-        geometries.collectLeaves(leaves);
-        List<Intersectable> free = new ArrayList<>();
-        int total = 0;
-        // A shape may compute its box on every call (a polygon does): ask each leaf once.
-        boolean[] bounded = new boolean[leaves.size()];
-        for (int l = 0; l < bounded.length; ++l) {
-            Intersectable leaf = leaves.get(l);
-            bounded[l] = leaf.getBoundingBox() != null;
-            if (bounded[l]) total += leaf.primitiveCount();
-            else free.add(leaf);
-        }
-        this.leaves = leaves.toArray(new Intersectable[0]);
-        unbounded = free.toArray(new Intersectable[0]);
+    /**
+     * As {@link #build(Geometries, int, int)}, searching nodes of at most {@code few} primitives
+     * without bins (0: every node with bins; for the tests that both searches agree).
+     */
+    static Bvh build(Geometries geometries, int parallelism, int forkAbove, int few) {
+        if (parallelism < 1) throw new IllegalArgumentException("parallelism must be at least 1, got " + parallelism);
+        return new Bvh(geometries, parallelism, Math.max(1, forkAbove), Math.min(few, FEW));
+    }
 
-        Builder b = new Builder(total, parallelism, forkAbove);
-        for (int l = 0; l < bounded.length; ++l) {
-            if (!bounded[l]) continue;
-            Intersectable leaf = this.leaves[l];
-            for (int i = 0, n = leaf.primitiveCount(); i < n; ++i) b.addPrimitive(leaf, i, leaf.primitiveBounds(i));
+    private Bvh(Geometries geometries, int parallelism, int forkAbove, int few) {
+        List<Intersectable> collected = new ArrayList<>();
+        geometries.collectLeaves(collected);
+        Intersectable[] all = collected.toArray(new Intersectable[0]);
+        leaves = all;
+        int count = all.length;
+        // Threads start on the first task, so an idle pool costs nothing.
+        ForkJoinPool pool = parallelism > 1 ? new ForkJoinPool(parallelism) : null;
+        int grain = Math.min(GRAIN, forkAbove); // the tests' small forkAbove splits small scenes too
+        try {
+            // A shape may compute its box on every call (a polygon does): ask each leaf once. A
+            // bounded leaf's primitives take the slots [first[l], first[l + 1]).
+            BoundingBox[] box = new BoundingBox[count];
+            int[] first = new int[count + 1];
+            Ranges.run(pool, count, grain, (from, to) -> {
+                for (int l = from; l < to; ++l) {
+                    box[l] = all[l].getBoundingBox();
+                    if (box[l] != null) first[l + 1] = all[l].primitiveCount();
+                }
+            });
+            List<Intersectable> free = new ArrayList<>();
+            for (int l = 0; l < count; ++l) {
+                if (box[l] == null) free.add(all[l]);
+                first[l + 1] += first[l];
+            }
+            unbounded = free.toArray(new Intersectable[0]);
+
+            int total = first[count];
+            Builder b = new Builder(total, pool, forkAbove, few);
+            // By slot rather than by leaf, so that the triangles of one big mesh are shared out too.
+            Ranges.run(pool, total, grain, (from, to) -> {
+                int l = leafOfSlot(first, from);
+                for (int s = from; s < to; ++s) {
+                    while (s >= first[l + 1]) ++l;
+                    b.addPrimitive(s, all[l], s - first[l], all[l].primitiveBounds(s - first[l]));
+                }
+            });
+            b.build();
+            owner = b.orderedOwner;
+            prim = b.orderedPrim;
+            nodeCount = b.nodes;
+            node = b.node;
+            rootBox = b.rootBox;
+            depth = b.maxDepth + 1;
+        } finally {
+            if (pool != null) pool.shutdown();
         }
-        b.build();
-        owner = b.orderedOwner;
-        prim = b.orderedPrim;
-        nodeCount = b.nodes;
-        node = b.node;
-        rootBox = b.rootBox;
-        depth = b.maxDepth + 1;
+    }
+
+    /** @return the leaf whose slots [first[l], first[l + 1]) hold {@code slot} (first is non-decreasing) */
+    private static int leafOfSlot(int[] first, int slot) {
+        int lo = 0, hi = first.length - 2; // the answer is in [lo, hi]
+        while (lo < hi) {
+            int mid = (lo + hi + 1) >>> 1;
+            if (first[mid] <= slot) lo = mid;
+            else hi = mid - 1;
+        }
+        return lo;
     }
 
     /**
@@ -326,15 +367,19 @@ public final class Bvh extends Intersectable {
      * its range, the partition is stable, and every subtree writes into node slots reserved for it
      * in advance (a subtree over n primitives has at most 2n − 1 nodes, so the right child of a
      * node whose left child covers nL primitives goes to slot {@code node + 2·nL}). A final
-     * sequential pass renumbers the slots depth-first, the layout the walks expect.
+     * pass renumbers the slots depth-first, the layout the walks expect; it is parallel too, as
+     * each subtree's place follows from the sizes. The primitives' own loops (asking their
+     * bounds, in the constructor) run in chunks on the same pool.
      */
     private static final class Builder {
         private final Intersectable[] owners;
         private final int[] prims;
         private final int total;
-        private final int parallelism;
+        /** The pool subtrees are built in, or null to build on the calling thread. */
+        private final ForkJoinPool pool;
         private final int forkAbove;
-        private int added;
+        /** Nodes of at most this many primitives are searched without bins ({@link Bvh#FEW} but in tests). */
+        private final int few;
         // Per slot, in slot order: the primitive id, its padded bounds (6) and its centroid (3).
         private int[] order;
         private double[] bounds;
@@ -344,10 +389,10 @@ public final class Bvh extends Intersectable {
         private int[] scratchOrder;
         private double[] scratchBounds;
         private double[] scratchCentroid;
-        // Per reserved node slot: the box (6), the primitive count (> 0 for a leaf) and for a leaf
-        // its first slot, for an inner node the primitive count of its left child; the number of
-        // nodes of the subtree rooted there.
-        private double[] slotBox;
+        // Per reserved node slot: the box (6) already rounded outward to floats, the primitive count
+        // (> 0 for a leaf) and for a leaf its first slot, for an inner node the primitive count of
+        // its left child; the number of nodes of the subtree rooted there.
+        private float[] slotBox;
         private int[] slotCount;
         private int[] slotFirstOrLeft;
         private int[] slotSize;
@@ -359,9 +404,10 @@ public final class Bvh extends Intersectable {
         int nodes;
         int maxDepth;
 
-        Builder(int total, int parallelism, int forkAbove) {
+        Builder(int total, ForkJoinPool pool, int forkAbove, int few) {
+            this.few = few;
             this.total = total;
-            this.parallelism = parallelism;
+            this.pool = pool;
             this.forkAbove = forkAbove;
             owners = new Intersectable[total];
             prims = new int[total];
@@ -370,19 +416,19 @@ public final class Bvh extends Intersectable {
             centroid = new double[total * 3];
         }
 
-        void addPrimitive(Intersectable leaf, int index, BoundingBox b) {
-            int i = added++;
+        /** Records primitive {@code index} of {@code leaf}, whose bounds are {@code b}, in slot {@code i}. */
+        void addPrimitive(int i, Intersectable leaf, int index, BoundingBox b) {
             owners[i] = leaf;
             prims[i] = index;
             order[i] = i;
-            BoundingBox p = b.padded();
+            double eps = b.padding(); // b.padded(), without the box
             int o = i * 6;
-            bounds[o] = p.minX;
-            bounds[o + 1] = p.minY;
-            bounds[o + 2] = p.minZ;
-            bounds[o + 3] = p.maxX;
-            bounds[o + 4] = p.maxY;
-            bounds[o + 5] = p.maxZ;
+            bounds[o] = b.minX - eps;
+            bounds[o + 1] = b.minY - eps;
+            bounds[o + 2] = b.minZ - eps;
+            bounds[o + 3] = b.maxX + eps;
+            bounds[o + 4] = b.maxY + eps;
+            bounds[o + 5] = b.maxZ + eps;
             centroid[i * 3] = (b.minX + b.maxX) / 2;
             centroid[i * 3 + 1] = (b.minY + b.maxY) / 2;
             centroid[i * 3 + 2] = (b.minZ + b.maxZ) / 2;
@@ -394,25 +440,21 @@ public final class Bvh extends Intersectable {
             scratchBounds = new double[n * 6];
             scratchCentroid = new double[n * 3];
             int capacity = Math.max(1, 2 * n);
-            slotBox = new double[capacity * 6];
+            slotBox = new float[capacity * 6];
             slotCount = new int[capacity];
             slotFirstOrLeft = new int[capacity];
             slotSize = new int[capacity];
+            // Filled by the leaves as they are made: a leaf's range of slots is final by then.
+            orderedOwner = new Intersectable[n];
+            orderedPrim = new int[n];
             if (n > 0) {
                 double[] rootBounds = new double[BOUNDS];
                 resetBounds(rootBounds, 0);
                 for (int i = 0; i < n; ++i) growBounds(rootBounds, 0, bounds, centroid, i);
+                rootBox = new BoundingBox(rootBounds[0], rootBounds[1], rootBounds[2], rootBounds[3], rootBounds[4], rootBounds[5]);
                 Subtree root = new Subtree(0, n, 0, 0, rootBounds);
-                if (parallelism > 1 && n > forkAbove) {
-                    ForkJoinPool pool = new ForkJoinPool(parallelism);
-                    try {
-                        pool.invoke(root);
-                    } finally {
-                        pool.shutdown();
-                    }
-                } else {
-                    root.compute();
-                }
+                if (pool != null && n > forkAbove) pool.invoke(root);
+                else root.compute();
                 maxDepth = root.maxLevel;
             }
             // The build's buffers are garbage from here on: let them go before the node array is made.
@@ -421,49 +463,77 @@ public final class Bvh extends Intersectable {
             scratchCentroid = null;
             bounds = null;
             centroid = null;
-            flatten(n);
-            orderedOwner = new Intersectable[n];
-            orderedPrim = new int[n];
-            for (int i = 0; i < n; ++i) {
-                orderedOwner[i] = owners[order[i]];
-                orderedPrim[i] = prims[order[i]];
-            }
-        }
-
-        /** Renumbers the reserved slots depth-first (left child next) into the packed node records. */
-        private void flatten(int n) {
             nodes = n == 0 ? 0 : slotSize[0];
             node = new float[nodes * NODE];
             if (n == 0) return;
-            rootBox = new BoundingBox(slotBox[0], slotBox[1], slotBox[2], slotBox[3], slotBox[4], slotBox[5]);
+            Flatten all = new Flatten(0, 0);
+            if (pool != null && nodes > forkAbove) pool.invoke(all);
+            else all.compute();
+        }
+
+        /**
+         * Renumbers the reserved slots of the subtree at {@code slot} depth-first (left child
+         * next) into the packed node records from {@code index} on; big subtrees fork their two
+         * children (their places are known from the sizes), each writing only its own records.
+         */
+        private final class Flatten extends RecursiveAction {
+            private static final long serialVersionUID = 1L;
+            private final int slot;
+            private final int index;
+
+            Flatten(int slot, int index) {
+                this.slot = slot;
+                this.index = index;
+            }
+
+            @Override
+            protected void compute() {
+                if (pool == null || slotSize[slot] <= forkAbove || slotCount[slot] > 0) {
+                    flatten(slot, index);
+                    return;
+                }
+                int right = writeNode(slot, index);
+                invokeAll(new Flatten(slot + 1, index + 1), new Flatten(right, index + 1 + slotSize[slot + 1]));
+            }
+        }
+
+        /** Flattens the subtree at {@code root} into the records from {@code rootIndex} on, on this thread. */
+        private void flatten(int root, int rootIndex) {
             int[] stack = new int[2 * (maxDepth + 2)];
             int top = 0;
-            stack[top++] = 0; // slot
-            stack[top++] = 0; // its depth-first index
+            stack[top++] = root;
+            stack[top++] = rootIndex;
             while (top > 0) {
                 int f = stack[--top], s = stack[--top];
-                int o = f * NODE;
-                for (int a = 0; a < 3; ++a) {
-                    node[o + a] = Bvh.floatBelow(slotBox[s * 6 + a]);
-                    node[o + a + 3] = Bvh.floatAbove(slotBox[s * 6 + a + 3]);
-                }
-                int count = slotCount[s];
-                // Non-negative ints below 0x7F800000 are never NaN patterns, so the bits survive
-                // the round trip through float unchanged.
-                if (count > 0) {
-                    node[o + 6] = Float.intBitsToFloat(slotFirstOrLeft[s]);
-                    node[o + 7] = Float.intBitsToFloat(count);
-                } else {
-                    int left = s + 1, right = s + 2 * slotFirstOrLeft[s];
-                    int rightIndex = f + 1 + slotSize[left];
-                    node[o + 6] = Float.intBitsToFloat(rightIndex);
-                    node[o + 7] = Float.intBitsToFloat(INNER | (f + slotSize[s]));
+                int right = writeNode(s, f);
+                if (right >= 0) {
                     stack[top++] = right;
-                    stack[top++] = rightIndex;
-                    stack[top++] = left;
+                    stack[top++] = f + 1 + slotSize[s + 1];
+                    stack[top++] = s + 1;
                     stack[top++] = f + 1;
                 }
             }
+        }
+
+        /**
+         * Writes slot {@code s} as node record {@code f}.
+         *
+         * @return for an inner node the slot of its right child (its left one is {@code s + 1}); −1 for a leaf
+         */
+        private int writeNode(int s, int f) {
+            int o = f * NODE;
+            System.arraycopy(slotBox, s * 6, node, o, 6);
+            int count = slotCount[s];
+            // Non-negative ints below 0x7F800000 are never NaN patterns, so the bits survive
+            // the round trip through float unchanged.
+            if (count > 0) {
+                node[o + 6] = Float.intBitsToFloat(slotFirstOrLeft[s]);
+                node[o + 7] = Float.intBitsToFloat(count);
+                return -1;
+            }
+            node[o + 6] = Float.intBitsToFloat(f + 1 + slotSize[s + 1]);
+            node[o + 7] = Float.intBitsToFloat(INNER | (f + slotSize[s]));
+            return s + 2 * slotFirstOrLeft[s];
         }
 
         /** The subtree over slots [start, end), rooted at node slot {@code slot}. */
@@ -491,7 +561,7 @@ public final class Bvh extends Intersectable {
                 Binner binner = new Binner();
                 int ownAt = binner.place(level, 0);
                 System.arraycopy(own, 0, binner.levels, ownAt, BOUNDS);
-                if (end - start <= forkAbove || parallelism <= 1) {
+                if (end - start <= forkAbove || pool == null) {
                     maxLevel = buildNode(binner, start, end, level, slot, ownAt);
                     return;
                 }
@@ -543,12 +613,12 @@ public final class Bvh extends Intersectable {
             double cx1 = own[ownAt + 9], cy1 = own[ownAt + 10], cz1 = own[ownAt + 11];
             double[] bounds = this.bounds, centroid = this.centroid;
             int o = slot * 6;
-            slotBox[o] = bx0;
-            slotBox[o + 1] = by0;
-            slotBox[o + 2] = bz0;
-            slotBox[o + 3] = bx1;
-            slotBox[o + 4] = by1;
-            slotBox[o + 5] = bz1;
+            slotBox[o] = Bvh.floatBelow(bx0);
+            slotBox[o + 1] = Bvh.floatBelow(by0);
+            slotBox[o + 2] = Bvh.floatBelow(bz0);
+            slotBox[o + 3] = Bvh.floatAbove(bx1);
+            slotBox[o + 4] = Bvh.floatAbove(by1);
+            slotBox[o + 5] = Bvh.floatAbove(bz1);
             int n = end - start;
             // Binned SAH over every axis whose centroids spread; for very large nodes only along
             // the widest one (as pbrt does), a third of the work for trees of nearly the same
@@ -561,44 +631,12 @@ public final class Bvh extends Intersectable {
             boolean[] searched = binner.searched;
             for (int a = 0; a < 3; ++a)
                 searched[a] = n > 1 && extentOf[a] > 0 && (n <= FULL_SEARCH_LIMIT || a == widest);
-            binner.bin(bounds, centroid, start, end, lowOf, extentOf);
-            double bestCost = Double.POSITIVE_INFINITY;
-            int bestBin = -1, bestAxis = -1;
-            for (int a = 0; a < 3; ++a) {
-                if (!searched[a]) continue;
-                double[] acc = binner.acc, rightArea = binner.rightArea, binBox = binner.binBox;
-                int[] binCount = binner.binCount;
-                int base = a * BINS;
-                // Sweep from the right for the areas of every right part, then from the left. An
-                // empty bin changes neither part's box nor count, so it is skipped: the areas and
-                // costs are the numbers a sweep over every bin computes, and an empty bin's split
-                // costs exactly what its left neighbour's does, which cannot beat it.
-                resetBox(acc, 0);
-                double area = halfArea(acc, 0);
-                for (int k = BINS - 1; k > 0; --k) {
-                    if (binCount[base + k] > 0) {
-                        growBox(acc, 0, binBox, base + k);
-                        area = halfArea(acc, 0);
-                    }
-                    rightArea[k] = area;
-                }
-                resetBox(acc, 0);
-                int leftCount = 0;
-                for (int k = 0; k < BINS - 1; ++k) {
-                    if (binCount[base + k] == 0) continue;
-                    growBox(acc, 0, binBox, base + k);
-                    leftCount += binCount[base + k];
-                    int rightCount = n - leftCount;
-                    if (rightCount == 0) continue;
-                    double cost = TRAVERSAL_COST + (halfArea(acc, 0) * leftCount + rightArea[k + 1] * rightCount) / parentArea;
-                    if (cost < bestCost) {
-                        bestCost = cost;
-                        bestBin = k;
-                        bestAxis = a;
-                    }
-                }
-                binner.clear(a);
-            }
+            // Both searches find the same split (see Binner.searchFew), the direct one without
+            // the fixed cost of 3 × BINS bins, which dominates the many small nodes near the leaves.
+            if (n <= few) binner.searchFew(bounds, centroid, start, end, lowOf, extentOf, parentArea);
+            else binner.searchBinned(bounds, centroid, start, end, lowOf, extentOf, parentArea);
+            double bestCost = binner.bestCost;
+            int bestBin = binner.bestBin, bestAxis = binner.bestAxis;
             int mid = -1;
             if (bestBin >= 0 && (bestCost < n || n > MAX_LEAF))
                 mid = partition(start, end, bestAxis, lowOf[bestAxis], BINS / extentOf[bestAxis], bestBin,
@@ -616,6 +654,10 @@ public final class Bvh extends Intersectable {
                 slotCount[slot] = n;
                 slotFirstOrLeft[slot] = start;
                 slotSize[slot] = 1;
+                for (int k = start; k < end; ++k) {
+                    orderedOwner[k] = owners[order[k]];
+                    orderedPrim[k] = prims[order[k]];
+                }
             } else {
                 slotCount[slot] = 0;
                 slotFirstOrLeft[slot] = mid - start;
@@ -690,11 +732,115 @@ public final class Bvh extends Intersectable {
             final double[] binBox = new double[3 * BINS * 6];
             final double[] rightArea = new double[BINS];
             final double[] acc = new double[6];
+            // searchFew's per-axis scratch: the slots sorted by bin number, and suffix boxes
+            final int[] fewBin = new int[FEW];
+            final int[] fewSlot = new int[FEW];
+            final double[] fewSuffix = new double[(FEW + 1) * 6];
+            /** The cheapest split a search found: its cost, last left bin (−1 for none) and axis. */
+            double bestCost;
+            int bestBin;
+            int bestAxis;
             /**
              * Per level of this task's recursion, the box and centroid bounds of the two children
              * split there ({@link #BOUNDS} doubles each, left then right); grown on demand.
              */
             double[] levels = new double[16 * 2 * BOUNDS];
+
+            /**
+             * The binned SAH over the searched axes of slots [start, end): fills the bins in one pass,
+             * sweeps each axis from both ends, and leaves the cheapest split in {@link #bestCost},
+             * {@link #bestBin} (the last bin of the left part) and {@link #bestAxis}.
+             */
+            void searchBinned(double[] bounds, double[] centroid, int start, int end, double[] lowOf, double[] extentOf,
+                              double parentArea) {
+                bin(bounds, centroid, start, end, lowOf, extentOf);
+                int n = end - start;
+                bestCost = Double.POSITIVE_INFINITY;
+                bestBin = -1;
+                bestAxis = -1;
+                for (int a = 0; a < 3; ++a) {
+                    if (!searched[a]) continue;
+                    int base = a * BINS;
+                    // Sweep from the right for the areas of every right part, then from the left. An
+                    // empty bin changes neither part's box nor count, so it is skipped: the areas and
+                    // costs are the numbers a sweep over every bin computes, and an empty bin's split
+                    // costs exactly what its left neighbour's does, which cannot beat it.
+                    resetBox(acc, 0);
+                    double area = halfArea(acc, 0);
+                    for (int k = BINS - 1; k > 0; --k) {
+                        if (binCount[base + k] > 0) {
+                            growBox(acc, 0, binBox, base + k);
+                            area = halfArea(acc, 0);
+                        }
+                        rightArea[k] = area;
+                    }
+                    resetBox(acc, 0);
+                    int leftCount = 0;
+                    for (int k = 0; k < BINS - 1; ++k) {
+                        if (binCount[base + k] == 0) continue;
+                        growBox(acc, 0, binBox, base + k);
+                        leftCount += binCount[base + k];
+                        int rightCount = n - leftCount;
+                        if (rightCount == 0) continue;
+                        consider(sahCost(halfArea(acc, 0), leftCount, rightArea[k + 1], rightCount, parentArea), k, a);
+                    }
+                    clear(a);
+                }
+            }
+
+            /**
+             * The same search as {@link #searchBinned} for a node of at most {@link #FEW} slots,
+             * without bins: per axis the slots are sorted by bin number, and each bin number in
+             * turn is tried as the last of the left part. Every candidate's parts are the same
+             * sets of primitives as the binned sweep's, their boxes are unions by min and max
+             * (exact, so in any order the same), and their costs come from the same
+             * {@link #sahCost}; candidates are tried in the same order (axis, then bin, a
+             * cheaper one replacing the best only when strictly cheaper), so the split chosen is
+             * the same, bit for bit.
+             */
+            void searchFew(double[] bounds, double[] centroid, int start, int end, double[] lowOf, double[] extentOf,
+                           double parentArea) {
+                int n = end - start;
+                bestCost = Double.POSITIVE_INFINITY;
+                bestBin = -1;
+                bestAxis = -1;
+                int[] key = fewBin, slot = fewSlot;
+                double[] suffix = fewSuffix;
+                for (int a = 0; a < 3; ++a) {
+                    if (!searched[a]) continue;
+                    double lo = lowOf[a], scale = BINS / extentOf[a];
+                    for (int i = 0; i < n; ++i) { // insertion sort by bin number
+                        int k = Bvh.Builder.bin(centroid[(start + i) * 3 + a], lo, scale), j = i;
+                        for (; j > 0 && key[j - 1] > k; --j) {
+                            key[j] = key[j - 1];
+                            slot[j] = slot[j - 1];
+                        }
+                        key[j] = k;
+                        slot[j] = start + i;
+                    }
+                    // suffix box j: the union of the sorted slots j..n-1 (box n is empty)
+                    resetBox(suffix, n);
+                    for (int j = n - 1; j >= 0; --j) {
+                        System.arraycopy(suffix, (j + 1) * 6, suffix, j * 6, 6);
+                        growBox(suffix, j, bounds, slot[j]);
+                    }
+                    resetBox(acc, 0);
+                    for (int j = 0; ; ) {
+                        int k = key[j];
+                        do growBox(acc, 0, bounds, slot[j]); while (++j < n && key[j] == k);
+                        if (j == n) break;
+                        consider(sahCost(halfArea(acc, 0), j, halfArea(suffix, j), n - j, parentArea), k, a);
+                    }
+                }
+            }
+
+            private void consider(double cost, int bin, int axis) {
+                if (cost < bestCost) {
+                    bestCost = cost;
+                    bestBin = bin;
+                    bestAxis = axis;
+                }
+            }
 
             /** @return where the bounds of the {@code side} (0 left, 1 right) child at {@code level} are */
             int place(int level, int side) {
@@ -764,6 +910,11 @@ public final class Bvh extends Intersectable {
                 b[o + a] = Math.min(src[so + a], b[o + a]);
                 b[o + a + 3] = Math.max(src[so + a + 3], b[o + a + 3]);
             }
+        }
+
+        /** The SAH cost of a split, relative to testing the parent's primitives: the one formula of both searches. */
+        private static double sahCost(double leftArea, int leftCount, double rightArea, int rightCount, double parentArea) {
+            return TRAVERSAL_COST + (leftArea * leftCount + rightArea * rightCount) / parentArea;
         }
 
         private static double halfArea(double[] b, int k) {

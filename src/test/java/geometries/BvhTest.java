@@ -1,6 +1,7 @@
 package geometries;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -214,6 +215,40 @@ class BvhTest {
         return Stream.concat(randomScenes(), Stream.of(Arguments.of(degenerateBoxes())));
     }
 
+    /** Scenes with many equal costs for the split searches: lattices of equal shapes, a grid mesh. */
+    static Stream<Arguments> searchScenes() {
+        Geometries lattice = new Geometries();
+        for (int i = 0; i < 12; ++i)
+            for (int j = 0; j < 12; ++j)
+                for (int k = 0; k < 3; ++k)
+                    lattice.add(new Sphere(new Point(2 * i, 2 * j, 2 * k), 0.8));
+        Geometries stacked = new Geometries();
+        for (int i = 0; i < 40; ++i) stacked.add(new Sphere(new Point(i % 5, 0, 0), 1 + i % 3)); // 5 centroids, 8 each
+        int side = 20;
+        double[] pos = new double[(side + 1) * (side + 1) * 3];
+        for (int i = 0, p = 0; i <= side; ++i)
+            for (int j = 0; j <= side; ++j) {
+                pos[p++] = j;
+                pos[p++] = (i * j) % 3;
+                pos[p++] = i;
+            }
+        int[] idx = new int[side * side * 6];
+        for (int i = 0, q = 0; i < side; ++i)
+            for (int j = 0; j < side; ++j) {
+                int a = i * (side + 1) + j, b = a + 1, c = a + side + 1, d = c + 1;
+                idx[q++] = a;
+                idx[q++] = b;
+                idx[q++] = c;
+                idx[q++] = b;
+                idx[q++] = d;
+                idx[q++] = c;
+            }
+        return Stream.concat(parallelScenes(), Stream.of(
+                Arguments.of(new Scene("a 12×12×3 lattice of equal spheres", lattice, new Point(11, 11, 2), 14)),
+                Arguments.of(new Scene("40 spheres on 5 centres", stacked, Point.ZERO, 8)),
+                Arguments.of(new Scene("a 20×20 grid mesh", new Geometries(new TriangleMesh(pos, idx)), new Point(10, 1, 10), 12))));
+    }
+
     @Nested
     @DisplayName("the parallel build: the same tree on any number of threads")
     class ParallelBuild {
@@ -250,6 +285,37 @@ class BvhTest {
                 double max = 3 * scene.half() * rnd.nextDouble();
                 Hits.assertSameVisits(Hits.visited(tree, ray, max), Hits.visited(scene.geometries(), ray, max), 0,
                         "tree vs flat walk within " + max + " for " + ray);
+            }
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("geometries.BvhTest#searchScenes")
+        @DisplayName("small nodes searched without bins get the split the binned search gives them")
+        void fewSearchAgreesWithBins(Scene scene) {
+            Bvh binned = Bvh.build(scene.geometries(), 1, 1, 0);
+            assertThat(Bvh.build(scene.geometries(), 1).sameTreeAs(binned)).as("1 thread").isTrue();
+            assertThat(Bvh.build(scene.geometries(), 2, 1).sameTreeAs(binned)).as("2 threads, a task per node").isTrue();
+        }
+
+        @Test
+        @DisplayName("a shape failing to give its box fails the build with its own exception, the first in scene order")
+        void failingShape() {
+            IllegalStateException first = new IllegalStateException("box of shape 40");
+            IllegalStateException later = new IllegalStateException("box of shape 90");
+            Geometries g = new Geometries();
+            for (int i = 0; i < 120; ++i) {
+                RuntimeException failure = i == 40 ? first : i == 90 ? later : null;
+                g.add(new Sphere(new Point(i, 0, 0), 0.5) {
+                    @Override
+                    public BoundingBox getBoundingBox() {
+                        if (failure != null) throw failure;
+                        return super.getBoundingBox();
+                    }
+                });
+            }
+            for (int threads = 1; threads <= 2; ++threads) {
+                int parallelism = threads;
+                assertThatThrownBy(() -> Bvh.build(g, parallelism, 1)).as(threads + " threads").isSameAs(first);
             }
         }
 
