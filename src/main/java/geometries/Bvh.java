@@ -804,6 +804,10 @@ public final class Bvh extends Intersectable {
                 bestCost = Double.POSITIVE_INFINITY;
                 bestBin = -1;
                 bestAxis = -1;
+                if (n == 2) { // the most common node: see searchPair
+                    searchPair(bounds, centroid, start, lowOf, extentOf, parentArea);
+                    return;
+                }
                 int[] key = fewBin, slot = fewSlot;
                 double[] suffix = fewSuffix;
                 for (int a = 0; a < 3; ++a) {
@@ -831,6 +835,26 @@ public final class Bvh extends Intersectable {
                         if (j == n) break;
                         consider(sahCost(halfArea(acc, 0), j, halfArea(suffix, j), n - j, parentArea), k, a);
                     }
+                }
+            }
+
+            /**
+             * {@link #searchFew} for two primitives: every axis on which their bins differ offers
+             * the same split, one primitive on each side, at the same cost (a sum of two terms
+             * in either order is the same double), so the first such axis is the one chosen.
+             */
+            private void searchPair(double[] bounds, double[] centroid, int start, double[] lowOf, double[] extentOf,
+                                    double parentArea) {
+                for (int a = 0; a < 3; ++a) {
+                    if (!searched[a]) continue;
+                    double scale = BINS / extentOf[a];
+                    int k0 = Bvh.Builder.bin(centroid[start * 3 + a], lowOf[a], scale);
+                    int k1 = Bvh.Builder.bin(centroid[(start + 1) * 3 + a], lowOf[a], scale);
+                    if (k0 == k1) continue;
+                    int lower = k0 < k1 ? start : start + 1;
+                    consider(sahCost(halfArea(bounds, lower), 1, halfArea(bounds, 2 * start + 1 - lower), 1, parentArea),
+                            Math.min(k0, k1), a);
+                    return;
                 }
             }
 
