@@ -109,6 +109,11 @@ public final class RenderBenchmark {
         double spent = 0;
         RenderStats last = null;
         while (runs < options.runs()) {
+            // Each timed render starts from a collected heap: otherwise the previous render's
+            // garbage (at 2×10⁶ primitives, the rebuilt tree's humongous arrays) starts a concurrent
+            // G1 cycle whose marking competes with this render for the two cores, and the row
+            // spreads by a third between runs.
+            System.gc();
             last = render(c, scene, c.width(), c.height(), c.threads(), options.images() && runs == options.runs() - 1);
             prepare[runs] = last.prepareSeconds();
             times[runs++] = last.seconds();
