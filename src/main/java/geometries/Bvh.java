@@ -139,7 +139,7 @@ public final class Bvh extends Intersectable {
                 int l = leafOfSlot(first, from);
                 for (int s = from; s < to; ++s) {
                     while (s >= first[l + 1]) ++l;
-                    b.addPrimitive(s, all[l], s - first[l], all[l].primitiveBounds(s - first[l]));
+                    b.addPrimitive(s, all[l], s - first[l], all[l].primitiveBounds(s - first[l], box[l]));
                 }
             });
             b.build();

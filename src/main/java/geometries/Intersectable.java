@@ -357,9 +357,15 @@ public abstract class Intersectable {
         return 1;
     }
 
-    /** The bounds of primitive {@code prim}; the whole box by default. */
-    BoundingBox primitiveBounds(int prim) {
-        return getBoundingBox();
+    /**
+     * The bounds of primitive {@code prim}.
+     *
+     * @param whole the leaf's whole box, as {@link #getBoundingBox()} just gave it (a shape may
+     *              compute its box on every call: the builder asks once)
+     * @return {@code whole} by default: a leaf is one primitive
+     */
+    BoundingBox primitiveBounds(int prim, BoundingBox whole) {
+        return whole;
     }
 
     /** {@link #closestHit(Hit)} restricted to primitive {@code prim}. */

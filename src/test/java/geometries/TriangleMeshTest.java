@@ -417,7 +417,7 @@ class TriangleMeshTest {
             assertThat(mesh.primitiveCount()).isEqualTo(60);
             BoundingBox all = null;
             for (int k = 0; k < triangles.length; ++k) {
-                BoundingBox expected = triangles[k].getBoundingBox(), actual = mesh.primitiveBounds(k);
+                BoundingBox expected = triangles[k].getBoundingBox(), actual = mesh.primitiveBounds(k, mesh.getBoundingBox());
                 assertThat(actual).usingRecursiveComparison().as("triangle %d", k).isEqualTo(expected);
                 all = all == null ? expected : all.union(expected);
             }
