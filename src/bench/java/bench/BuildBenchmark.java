@@ -56,6 +56,9 @@ final class BuildBenchmark {
     }
 
     private static double time(Geometries g, int threads) {
+        // From a collected heap, as the render timings (RenderBenchmark): the previous build's
+        // garbage would otherwise start a concurrent G1 cycle that competes with this build.
+        System.gc();
         long t0 = System.nanoTime();
         Bvh.build(g, threads);
         return (System.nanoTime() - t0) / 1e9;
