@@ -61,8 +61,13 @@ public final class BoundingBox {
         return new BoundingBox(minX - eps, minY - eps, minZ - eps, maxX + eps, maxY + eps, maxZ + eps);
     }
 
-    /** The margin {@link #padded()} adds on every side, in scene units (for builders that write the padded bounds themselves). */
+    /** The margin {@link #padded()} adds on every side, in scene units. */
     double padding() {
+        return padding(minX, minY, minZ, maxX, maxY, maxZ);
+    }
+
+    /** {@link #padding()} of the box (minX, minY, minZ)–(maxX, maxY, maxZ), for builders that keep boxes as doubles. */
+    static double padding(double minX, double minY, double minZ, double maxX, double maxY, double maxZ) {
         return 1e-9 * (1 + Math.max(Math.max(Math.abs(minX), Math.abs(maxX)),
                 Math.max(Math.max(Math.abs(minY), Math.abs(maxY)), Math.max(Math.abs(minZ), Math.abs(maxZ)))));
     }

@@ -116,18 +116,30 @@ public final class Bvh extends Intersectable {
         int grain = Math.min(GRAIN, forkAbove); // the tests' small forkAbove splits small scenes too
         try {
             // A shape may compute its box on every call (a polygon does): ask each leaf once. A
-            // bounded leaf's primitives take the slots [first[l], first[l + 1]).
-            BoundingBox[] box = new BoundingBox[count];
+            // bounded leaf's primitives take the slots [first[l], first[l + 1]). The boxes are
+            // kept as doubles, not objects: two million of those would survive young collections
+            // and be marked by every concurrent cycle the build's big arrays start.
+            double[] leafBox = new double[count * 6];
+            boolean[] bounded = new boolean[count];
             int[] first = new int[count + 1];
             Ranges.run(pool, count, grain, (from, to) -> {
                 for (int l = from; l < to; ++l) {
-                    box[l] = all[l].getBoundingBox();
-                    if (box[l] != null) first[l + 1] = all[l].primitiveCount();
+                    BoundingBox b = all[l].getBoundingBox();
+                    if (b == null) continue;
+                    bounded[l] = true;
+                    first[l + 1] = all[l].primitiveCount();
+                    int o = l * 6;
+                    leafBox[o] = b.minX;
+                    leafBox[o + 1] = b.minY;
+                    leafBox[o + 2] = b.minZ;
+                    leafBox[o + 3] = b.maxX;
+                    leafBox[o + 4] = b.maxY;
+                    leafBox[o + 5] = b.maxZ;
                 }
             });
             List<Intersectable> free = new ArrayList<>();
             for (int l = 0; l < count; ++l) {
-                if (box[l] == null) free.add(all[l]);
+                if (!bounded[l]) free.add(all[l]);
                 first[l + 1] += first[l];
             }
             unbounded = free.toArray(new Intersectable[0]);
@@ -139,7 +151,13 @@ public final class Bvh extends Intersectable {
                 int l = leafOfSlot(first, from);
                 for (int s = from; s < to; ++s) {
                     while (s >= first[l + 1]) ++l;
-                    b.addPrimitive(s, all[l], s - first[l], all[l].primitiveBounds(s - first[l], box[l]));
+                    if (first[l + 1] - first[l] == 1) {
+                        b.addPrimitive(s, all[l], 0, leafBox, l * 6);
+                    } else {
+                        BoundingBox p = all[l].primitiveBounds(s - first[l]);
+                        double[] box = { p.minX, p.minY, p.minZ, p.maxX, p.maxY, p.maxZ };
+                        b.addPrimitive(s, all[l], s - first[l], box, 0);
+                    }
                 }
             });
             b.build();
@@ -416,22 +434,27 @@ public final class Bvh extends Intersectable {
             centroid = new double[total * 3];
         }
 
-        /** Records primitive {@code index} of {@code leaf}, whose bounds are {@code b}, in slot {@code i}. */
-        void addPrimitive(int i, Intersectable leaf, int index, BoundingBox b) {
+        /**
+         * Records primitive {@code index} of {@code leaf} in slot {@code i}; its bounds are
+         * {@code box[at..at + 6)} (min xyz, max xyz), padded here as {@link BoundingBox#padded()} does.
+         */
+        void addPrimitive(int i, Intersectable leaf, int index, double[] box, int at) {
             owners[i] = leaf;
             prims[i] = index;
             order[i] = i;
-            double eps = b.padding(); // b.padded(), without the box
+            double minX = box[at], minY = box[at + 1], minZ = box[at + 2];
+            double maxX = box[at + 3], maxY = box[at + 4], maxZ = box[at + 5];
+            double eps = BoundingBox.padding(minX, minY, minZ, maxX, maxY, maxZ);
             int o = i * 6;
-            bounds[o] = b.minX - eps;
-            bounds[o + 1] = b.minY - eps;
-            bounds[o + 2] = b.minZ - eps;
-            bounds[o + 3] = b.maxX + eps;
-            bounds[o + 4] = b.maxY + eps;
-            bounds[o + 5] = b.maxZ + eps;
-            centroid[i * 3] = (b.minX + b.maxX) / 2;
-            centroid[i * 3 + 1] = (b.minY + b.maxY) / 2;
-            centroid[i * 3 + 2] = (b.minZ + b.maxZ) / 2;
+            bounds[o] = minX - eps;
+            bounds[o + 1] = minY - eps;
+            bounds[o + 2] = minZ - eps;
+            bounds[o + 3] = maxX + eps;
+            bounds[o + 4] = maxY + eps;
+            bounds[o + 5] = maxZ + eps;
+            centroid[i * 3] = (minX + maxX) / 2;
+            centroid[i * 3 + 1] = (minY + maxY) / 2;
+            centroid[i * 3 + 2] = (minZ + maxZ) / 2;
         }
 
         void build() {

@@ -358,14 +358,13 @@ public abstract class Intersectable {
     }
 
     /**
-     * The bounds of primitive {@code prim}.
-     *
-     * @param whole the leaf's whole box, as {@link #getBoundingBox()} just gave it (a shape may
-     *              compute its box on every call: the builder asks once)
-     * @return {@code whole} by default: a leaf is one primitive
+     * The bounds of primitive {@code prim} of a leaf of several ({@link #primitiveCount()} &gt; 1).
+     * A leaf of one primitive is its own box: the builder uses the {@link #getBoundingBox()} it
+     * has already asked for (a shape may compute its box on every call), which for a mesh of one
+     * triangle is that triangle's box, the same numbers.
      */
-    BoundingBox primitiveBounds(int prim, BoundingBox whole) {
-        return whole;
+    BoundingBox primitiveBounds(int prim) {
+        return getBoundingBox();
     }
 
     /** {@link #closestHit(Hit)} restricted to primitive {@code prim}. */

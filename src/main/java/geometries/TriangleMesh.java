@@ -250,7 +250,7 @@ public class TriangleMesh extends Geometry {
     }
 
     @Override
-    BoundingBox primitiveBounds(int prim, BoundingBox whole) {
+    BoundingBox primitiveBounds(int prim) {
         double[] p = positions;
         int a = 3 * indices[3 * prim], b = 3 * indices[3 * prim + 1], c = 3 * indices[3 * prim + 2];
         return new BoundingBox(Math.min(p[a], Math.min(p[b], p[c])), Math.min(p[a + 1], Math.min(p[b + 1], p[c + 1])),

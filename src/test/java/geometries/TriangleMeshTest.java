@@ -417,11 +417,28 @@ class TriangleMeshTest {
             assertThat(mesh.primitiveCount()).isEqualTo(60);
             BoundingBox all = null;
             for (int k = 0; k < triangles.length; ++k) {
-                BoundingBox expected = triangles[k].getBoundingBox(), actual = mesh.primitiveBounds(k, mesh.getBoundingBox());
+                BoundingBox expected = triangles[k].getBoundingBox(), actual = mesh.primitiveBounds(k);
                 assertThat(actual).usingRecursiveComparison().as("triangle %d", k).isEqualTo(expected);
                 all = all == null ? expected : all.union(expected);
             }
             assertThat(mesh.getBoundingBox()).usingRecursiveComparison().isEqualTo(all);
+        }
+
+        @Test
+        @DisplayName("a mesh of one triangle is bounded like that triangle (the BVH then uses the mesh's box for it)")
+        void oneTriangle() {
+            double[] positions = new double[3 * mesh.vertexCount()]; // all 40 vertices, 3 of them used
+            for (int i = 0; i < mesh.vertexCount(); ++i) {
+                Point p = mesh.getVertex(i);
+                positions[3 * i] = p.getX();
+                positions[3 * i + 1] = p.getY();
+                positions[3 * i + 2] = p.getZ();
+            }
+            for (int k = 0; k < triangles.length; ++k) {
+                TriangleMesh one = new TriangleMesh(positions, mesh.getTriangleIndices(k));
+                assertThat(one.getBoundingBox()).usingRecursiveComparison().as("triangle %d", k)
+                        .isEqualTo(one.primitiveBounds(0)).isEqualTo(triangles[k].getBoundingBox());
+            }
         }
 
         @Test
