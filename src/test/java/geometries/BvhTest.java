@@ -57,6 +57,13 @@ class BvhTest {
 
     private static final int RAYS = 1500;
 
+    /** Asserts the same closest hits, and the same walks within {@code max} of every ray's head. */
+    private static void assertSameAnswers(Intersectable tree, Intersectable flat, List<Ray> rays, double max) {
+        assertSameClosestHits(tree, flat, rays);
+        for (Ray ray : rays)
+            Hits.assertSameVisits(Hits.visited(tree, ray, max), Hits.visited(flat, ray, max), 0, "walk for " + ray);
+    }
+
     /** Asserts the tree and the flat list give the same closest hit: same geometry, bit-identical t. */
     private static void assertSameClosestHits(Intersectable tree, Intersectable flat, List<Ray> rays) {
         int hits = 0;
@@ -362,9 +369,7 @@ class BvhTest {
             assertThat(tree.nodeCount()).isZero();
             assertThat(tree.unboundedCount()).isEqualTo(4);
             assertThat(tree.getBoundingBox()).isNull();
-            assertSameClosestHits(tree, flat, rays);
-            for (Ray ray : rays)
-                Hits.assertSameVisits(Hits.visited(tree, ray, 12), Hits.visited(flat, ray, 12), 0, "walk for " + ray);
+            assertSameAnswers(tree, flat, rays, 12);
         }
 
         @Test
@@ -472,9 +477,7 @@ class BvhTest {
                 axial.add(new Ray(new Point(x, y, -1), new Vector(0, 0, -1).scale(-1)));
                 axial.add(new Ray(new Point(-1, y, 1.5 * rnd.nextDouble()), new Vector(1, 0, 0)));
             }
-            assertSameClosestHits(tree, flat, axial);
-            for (Ray ray : axial)
-                Hits.assertSameVisits(Hits.visited(tree, ray, 4), Hits.visited(flat, ray, 4), 0, "walk for " + ray);
+            assertSameAnswers(tree, flat, axial, 4);
         }
 
         @Test
@@ -554,9 +557,7 @@ class BvhTest {
                 // Grazing: in the plane of a row of polygons.
                 axial.add(new Ray(new Point(-1, y, 0.1 * rnd.nextInt(3) + 0.1), new Vector(1, 0, 0)));
             }
-            assertSameClosestHits(tree, flat, axial);
-            for (Ray ray : axial)
-                Hits.assertSameVisits(Hits.visited(tree, ray, 6), Hits.visited(flat, ray, 6), 0, "walk for " + ray);
+            assertSameAnswers(tree, flat, axial, 6);
         }
 
         @Test
