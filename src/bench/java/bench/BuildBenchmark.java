@@ -48,9 +48,7 @@ final class BuildBenchmark {
         }
         int prims = tree.primitiveTotal();
         double m1 = RenderBenchmark.median(one), m2 = RenderBenchmark.median(two);
-        // The tree keeps 32 bytes a node (the skip link is inside it), and per primitive an owner reference
-        // (4 bytes with compressed pointers) and an index.
-        double kept = (tree.nodeCount() * 32.0 + prims * 8.0) / prims;
+        double kept = tree.indexBytes() / (double) prims;
         s.append(String.format(Locale.ROOT, "| %s | %,d | %d | %.3f | %.3f | %.2f | %.0f | %.0f | %,d | %d |%n", label, prims, runs,
                 m1, m2, m1 / m2, allocated / (double) prims, kept, tree.nodeCount(), tree.depth()));
     }

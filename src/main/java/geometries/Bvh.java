@@ -44,6 +44,11 @@ public final class Bvh extends Intersectable {
     // Per primitive, in leaf order: its owner and its index within the owner.
     private final Intersectable[] owner;
     private final int[] prim;
+    // Per primitive, in leaf order: its packed kind (Intersectable.OWN, SPHERE or TRIANGLE) and
+    // PACKED doubles of intersection data, so that a leaf's library shapes are tested from one
+    // contiguous run of memory instead of one object (and its centre) each, scattered on the heap.
+    private final byte[] kind;
+    private final double[] packed;
     // Per node, depth-first, one packed record of NODE floats = 32 bytes, two nodes per cache line
     // (a node and its left child, which follows it, often share one): the box (min xyz, max xyz)
     // rounded outward to floats, so that it contains the exact box and no hit is lost, then, as
@@ -122,11 +127,14 @@ public final class Bvh extends Intersectable {
             double[] leafBox = new double[count * 6];
             boolean[] bounded = new boolean[count];
             int[] first = new int[count + 1];
+            // Set (never cleared) by any chunk that meets a packed shape; read after the join.
+            boolean[] packs = new boolean[1];
             Ranges.run(pool, count, grain, (from, to) -> {
                 for (int l = from; l < to; ++l) {
                     BoundingBox b = all[l].getBoundingBox();
                     if (b == null) continue;
                     bounded[l] = true;
+                    if (all[l].packedKind() != OWN) packs[0] = true;
                     first[l + 1] = all[l].primitiveCount();
                     int o = l * 6;
                     leafBox[o] = b.minX;
@@ -145,7 +153,7 @@ public final class Bvh extends Intersectable {
             unbounded = free.toArray(new Intersectable[0]);
 
             int total = first[count];
-            Builder b = new Builder(total, pool, forkAbove, few);
+            Builder b = new Builder(total, pool, forkAbove, few, packs[0]);
             // By slot rather than by leaf, so that the triangles of one big mesh are shared out too.
             Ranges.run(pool, total, grain, (from, to) -> {
                 int l = leafOfSlot(first, from);
@@ -163,6 +171,8 @@ public final class Bvh extends Intersectable {
             b.build();
             owner = b.orderedOwner;
             prim = b.orderedPrim;
+            kind = b.orderedKind;
+            packed = b.orderedPacked;
             nodeCount = b.nodes;
             node = b.node;
             rootBox = b.rootBox;
@@ -207,6 +217,17 @@ public final class Bvh extends Intersectable {
     /** @return the number of bounded primitives indexed */
     public int primitiveTotal() {
         return prim.length;
+    }
+
+    /**
+     * The bytes of the arrays the walks read: 32 a node, and per primitive 9 (its owner, counted
+     * as a 4-byte compressed reference, its index and its packed kind) plus {@value #PACKED} doubles
+     * when the tree packs some primitive (a scene with library spheres or triangles).
+     *
+     * @return the tree's size in bytes, without the scene's own objects
+     */
+    public long indexBytes() {
+        return nodeCount * (long) NODE * Float.BYTES + prim.length * 9L + packed.length * (long) Double.BYTES;
     }
 
     /** @return the number of unbounded geometries tested beside the tree */
@@ -273,8 +294,20 @@ public final class Bvh extends Intersectable {
             int o = n * NODE;
             int count = Float.floatToRawIntBits(nd[o + 7]);
             if (count > 0) {
-                for (int k = Float.floatToRawIntBits(nd[o + 6]), end = k + count; k < end; ++k)
-                    found |= owner[k].closestHit(prim[k], hit);
+                for (int k = Float.floatToRawIntBits(nd[o + 6]), end = k + count; k < end; ++k) {
+                    byte kd = kind[k];
+                    if (kd == OWN) {
+                        found |= owner[k].closestHit(prim[k], hit);
+                        continue;
+                    }
+                    int at = k * PACKED;
+                    double t = kd == SPHERE ? Sphere.distance(hit, packed[at], packed[at + 1], packed[at + 2], packed[at + 3])
+                            : Triangle.intersect(hit, packed, at);
+                    if (inRange(t, hit.t)) {
+                        hit.set(t, (Geometry) owner[k], prim[k]);
+                        found = true;
+                    }
+                }
             } else {
                 int left = n + 1, right = Float.floatToRawIntBits(nd[o + 6]);
                 double tl = entry(left, ox, oy, oz, ix, iy, iz, hit.t);
@@ -328,8 +361,19 @@ public final class Bvh extends Intersectable {
                 continue;
             }
             if (last > 0) {
-                for (int k = Float.floatToRawIntBits(nd[n * NODE + 6]), end = k + last; k < end; ++k)
-                    if (!owner[k].visitHits(prim[k], query, maxDistance, visitor)) return false;
+                for (int k = Float.floatToRawIntBits(nd[n * NODE + 6]), end = k + last; k < end; ++k) {
+                    byte kd = kind[k];
+                    int at = k * PACKED;
+                    if (kd == OWN) {
+                        if (!owner[k].visitHits(prim[k], query, maxDistance, visitor)) return false;
+                    } else if (kd == SPHERE) {
+                        if (!Sphere.visitHits((Geometry) owner[k], query, maxDistance, visitor,
+                                packed[at], packed[at + 1], packed[at + 2], packed[at + 3])) return false;
+                    } else {
+                        double t = Triangle.intersect(query, packed, at);
+                        if (within(t, maxDistance) && !visitor.visit((Geometry) owner[k], t)) return false;
+                    }
+                }
             }
             ++n; // into an inner node's left child, or past a leaf
         }
@@ -398,6 +442,8 @@ public final class Bvh extends Intersectable {
         private final int forkAbove;
         /** Nodes of at most this many primitives are searched without bins ({@link Bvh#FEW} but in tests). */
         private final int few;
+        /** Whether some primitive is packed: else the packed numbers take no memory. */
+        private final boolean packs;
         // Per slot, in slot order: the primitive id, its padded bounds (6) and its centroid (3).
         private int[] order;
         private double[] bounds;
@@ -417,13 +463,16 @@ public final class Bvh extends Intersectable {
 
         Intersectable[] orderedOwner;
         int[] orderedPrim;
+        byte[] orderedKind;
+        double[] orderedPacked;
         float[] node;
         BoundingBox rootBox;
         int nodes;
         int maxDepth;
 
-        Builder(int total, ForkJoinPool pool, int forkAbove, int few) {
+        Builder(int total, ForkJoinPool pool, int forkAbove, int few, boolean packs) {
             this.few = few;
+            this.packs = packs;
             this.total = total;
             this.pool = pool;
             this.forkAbove = forkAbove;
@@ -470,6 +519,8 @@ public final class Bvh extends Intersectable {
             // Filled by the leaves as they are made: a leaf's range of slots is final by then.
             orderedOwner = new Intersectable[n];
             orderedPrim = new int[n];
+            orderedKind = new byte[n];
+            orderedPacked = new double[packs ? n * PACKED : 0];
             if (n > 0) {
                 double[] rootBounds = new double[BOUNDS];
                 resetBounds(rootBounds, 0);
@@ -678,8 +729,13 @@ public final class Bvh extends Intersectable {
                 slotFirstOrLeft[slot] = start;
                 slotSize[slot] = 1;
                 for (int k = start; k < end; ++k) {
-                    orderedOwner[k] = owners[order[k]];
-                    orderedPrim[k] = prims[order[k]];
+                    Intersectable leaf = owners[order[k]];
+                    int p = prims[order[k]];
+                    orderedOwner[k] = leaf;
+                    orderedPrim[k] = p;
+                    byte kind = leaf.packedKind();
+                    orderedKind[k] = kind;
+                    if (kind != OWN) leaf.pack(p, orderedPacked, k * PACKED);
                 }
             } else {
                 slotCount[slot] = 0;

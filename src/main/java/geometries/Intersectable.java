@@ -367,6 +367,31 @@ public abstract class Intersectable {
         return getBoundingBox();
     }
 
+    /** {@link #packedKind()}: not packed, a tree calls this leaf's own hooks. */
+    static final byte OWN = 0;
+    /** {@link #packedKind()}: a sphere, packed as its centre (x, y, z) and its radius squared. */
+    static final byte SPHERE = 1;
+    /** {@link #packedKind()}: a triangle, packed as its first vertex and its two edges from it. */
+    static final byte TRIANGLE = 2;
+    /** Doubles per packed primitive. */
+    static final int PACKED = 9;
+
+    /**
+     * How a tree may keep this leaf's primitives: {@link #OWN} (the default: it calls the hooks),
+     * or a kind it tests from {@link #pack packed} numbers with the same arithmetic as the hooks,
+     * so with the same hits, bit for bit, without reaching the object. Only the library's own
+     * scattered objects (a sphere, a triangle) are packed, and never a subclass, which may
+     * override the hooks; a mesh keeps its triangles in arrays already.
+     */
+    byte packedKind() {
+        return OWN;
+    }
+
+    /** Writes primitive {@code prim}'s numbers of its {@link #packedKind()} into {@code out[at..at + PACKED)}. */
+    void pack(int prim, double[] out, int at) {
+        throw new UnsupportedOperationException(getClass().getName() + " is not packed");
+    }
+
     /** {@link #closestHit(Hit)} restricted to primitive {@code prim}. */
     boolean closestHit(int prim, Hit hit) {
         return closestHit(hit);

@@ -75,7 +75,12 @@ public class Sphere extends Geometry {
 
     /** Distance along the ray to the point nearest the centre: the middle of the two roots. */
     private double projection(Hit q) {
-        return (center.getX() - q.ox) * q.dx + (center.getY() - q.oy) * q.dy + (center.getZ() - q.oz) * q.dz;
+        return projection(q, center.getX(), center.getY(), center.getZ());
+    }
+
+    /** {@link #projection(Hit)} of a sphere centred at (cx, cy, cz): the one computation of both forms. */
+    static double projection(Hit q, double cx, double cy, double cz) {
+        return (cx - q.ox) * q.dx + (cy - q.oy) * q.dy + (cz - q.oz) * q.dz;
     }
 
     /**
@@ -89,10 +94,15 @@ public class Sphere extends Geometry {
      * @return th, or NaN when the ray misses or only touches the sphere (a tangent is no hit)
      */
     private double halfChord(Hit q, double tm) {
-        double px = center.getX() - q.ox - tm * q.dx;
-        double py = center.getY() - q.oy - tm * q.dy;
-        double pz = center.getZ() - q.oz - tm * q.dz;
-        double th2 = radiusSquared - (px * px + py * py + pz * pz);
+        return halfChord(q, tm, center.getX(), center.getY(), center.getZ(), radiusSquared);
+    }
+
+    /** {@link #halfChord(Hit, double)} of a sphere centred at (cx, cy, cz) of radius squared {@code r2}. */
+    static double halfChord(Hit q, double tm, double cx, double cy, double cz, double r2) {
+        double px = cx - q.ox - tm * q.dx;
+        double py = cy - q.oy - tm * q.dy;
+        double pz = cz - q.oz - tm * q.dz;
+        double th2 = r2 - (px * px + py * py + pz * pz);
         return Util.alignZero(th2) <= 0 ? Double.NaN : Math.sqrt(th2);
     }
 
@@ -103,14 +113,37 @@ public class Sphere extends Geometry {
 
     @Override
     public boolean closestHit(Hit hit) {
-        double tm = projection(hit);
-        double th = halfChord(hit, tm);
-        if (Double.isNaN(th)) return false;
-        double t = tm - th;
-        if (!(Util.alignZero(t) > 0)) t = tm + th;
+        double t = distance(hit, center.getX(), center.getY(), center.getZ(), radiusSquared);
         if (!inRange(t, hit.t)) return false;
         hit.set(t, this, 0);
         return true;
+    }
+
+    /**
+     * The distance to the first crossing ahead of the ray head (the far one when the head is
+     * inside) of the sphere centred at (cx, cy, cz) of radius squared {@code r2}: the one
+     * computation behind {@link #closestHit(Hit)} and a tree's packed spheres.
+     *
+     * @return the distance, possibly ≤ 0 (the caller checks the range), or NaN on a miss
+     */
+    static double distance(Hit q, double cx, double cy, double cz, double r2) {
+        double tm = projection(q, cx, cy, cz);
+        double th = halfChord(q, tm, cx, cy, cz, r2);
+        double t = tm - th;
+        return Util.alignZero(t) > 0 ? t : tm + th;
+    }
+
+    @Override
+    byte packedKind() {
+        return getClass() == Sphere.class ? SPHERE : OWN;
+    }
+
+    @Override
+    void pack(int prim, double[] out, int at) {
+        out[at] = center.getX();
+        out[at + 1] = center.getY();
+        out[at + 2] = center.getZ();
+        out[at + 3] = radiusSquared;
     }
 
     @Override
@@ -120,11 +153,20 @@ public class Sphere extends Geometry {
 
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
-        double tm = projection(query);
-        double th = halfChord(query, tm);
+        return visitHits(this, query, maxDistance, visitor, center.getX(), center.getY(), center.getZ(), radiusSquared);
+    }
+
+    /**
+     * {@link #visitHits(Hit, double, HitVisitor)} of {@code sphere}, centred at (cx, cy, cz) of
+     * radius squared {@code r2}: the one computation behind it and a tree's packed spheres.
+     */
+    static boolean visitHits(Geometry sphere, Hit query, double maxDistance, HitVisitor visitor,
+                             double cx, double cy, double cz, double r2) {
+        double tm = projection(query, cx, cy, cz);
+        double th = halfChord(query, tm, cx, cy, cz, r2);
         if (Double.isNaN(th)) return true;
-        if (within(tm - th, maxDistance) && !visitor.visit(this, tm - th)) return false;
-        return !within(tm + th, maxDistance) || visitor.visit(this, tm + th);
+        if (within(tm - th, maxDistance) && !visitor.visit(sphere, tm - th)) return false;
+        return !within(tm + th, maxDistance) || visitor.visit(sphere, tm + th);
     }
 
     @Override

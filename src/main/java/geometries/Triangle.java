@@ -51,6 +51,30 @@ public class Triangle extends Polygon {
         return (e2x * qx + e2y * qy + e2z * qz) * inv;
     }
 
+    @Override
+    byte packedKind() {
+        return getClass() == Triangle.class ? TRIANGLE : OWN;
+    }
+
+    /** The kernel's arguments: the first vertex and the two edges from it. */
+    @Override
+    void pack(int prim, double[] out, int at) {
+        out[at] = ax;
+        out[at + 1] = ay;
+        out[at + 2] = az;
+        out[at + 3] = e1x;
+        out[at + 4] = e1y;
+        out[at + 5] = e1z;
+        out[at + 6] = e2x;
+        out[at + 7] = e2y;
+        out[at + 8] = e2z;
+    }
+
+    /** {@link #intersect} of a triangle packed at {@code s[at..at + 9)} by {@link #pack}. */
+    static double intersect(Hit query, double[] s, int at) {
+        return intersect(query, s[at], s[at + 1], s[at + 2], s[at + 3], s[at + 4], s[at + 5], s[at + 6], s[at + 7], s[at + 8]);
+    }
+
     /** Möller–Trumbore instead of the polygon's plane-then-edges test. */
     @Override
     double distanceTo(Hit query) {

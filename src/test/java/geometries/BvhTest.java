@@ -222,16 +222,8 @@ class BvhTest {
         return Stream.concat(randomScenes(), Stream.of(Arguments.of(degenerateBoxes())));
     }
 
-    /** Scenes with many equal costs for the split searches: lattices of equal shapes, a grid mesh. */
-    static Stream<Arguments> searchScenes() {
-        Geometries lattice = new Geometries();
-        for (int i = 0; i < 12; ++i)
-            for (int j = 0; j < 12; ++j)
-                for (int k = 0; k < 3; ++k)
-                    lattice.add(new Sphere(new Point(2 * i, 2 * j, 2 * k), 0.8));
-        Geometries stacked = new Geometries();
-        for (int i = 0; i < 40; ++i) stacked.add(new Sphere(new Point(i % 5, 0, 0), 1 + i % 3)); // 5 centroids, 8 each
-        int side = 20;
+    /** A side × side grid of quads, two triangles each, as one mesh, its heights in {0, 1, 2}. */
+    static TriangleMesh gridMesh(int side) {
         double[] pos = new double[(side + 1) * (side + 1) * 3];
         for (int i = 0, p = 0; i <= side; ++i)
             for (int j = 0; j <= side; ++j) {
@@ -250,10 +242,22 @@ class BvhTest {
                 idx[q++] = d;
                 idx[q++] = c;
             }
+        return new TriangleMesh(pos, idx);
+    }
+
+    /** Scenes with many equal costs for the split searches: lattices of equal shapes, a grid mesh. */
+    static Stream<Arguments> searchScenes() {
+        Geometries lattice = new Geometries();
+        for (int i = 0; i < 12; ++i)
+            for (int j = 0; j < 12; ++j)
+                for (int k = 0; k < 3; ++k)
+                    lattice.add(new Sphere(new Point(2 * i, 2 * j, 2 * k), 0.8));
+        Geometries stacked = new Geometries();
+        for (int i = 0; i < 40; ++i) stacked.add(new Sphere(new Point(i % 5, 0, 0), 1 + i % 3)); // 5 centroids, 8 each
         return Stream.concat(parallelScenes(), Stream.of(
                 Arguments.of(new Scene("a 12×12×3 lattice of equal spheres", lattice, new Point(11, 11, 2), 14)),
                 Arguments.of(new Scene("40 spheres on 5 centres", stacked, Point.ZERO, 8)),
-                Arguments.of(new Scene("a 20×20 grid mesh", new Geometries(new TriangleMesh(pos, idx)), new Point(10, 1, 10), 12))));
+                Arguments.of(new Scene("a 20×20 grid mesh", new Geometries(gridMesh(20)), new Point(10, 1, 10), 12))));
     }
 
     @Nested
@@ -567,6 +571,97 @@ class BvhTest {
             BoundingBox exact = new Sphere(new Point(0.1, 0.2, 0.3), 0.7).getBoundingBox().padded();
             assertThat(new double[] { b.getMinX(), b.getMinY(), b.getMinZ(), b.getMaxX(), b.getMaxY(), b.getMaxZ() })
                     .containsExactly(exact.getMinX(), exact.getMinY(), exact.getMinZ(), exact.getMaxX(), exact.getMaxY(), exact.getMaxZ());
+        }
+    }
+
+    /** A user's sphere that is never hit: it overrides both hooks the renderer's walks call. */
+    private static final class Ghost extends Sphere {
+        Ghost(Point center, double radius) {
+            super(center, radius);
+        }
+
+        @Override
+        public boolean closestHit(Hit hit) {
+            return false;
+        }
+
+        @Override
+        public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+            return true;
+        }
+    }
+
+    /** A user's triangle that is never hit. */
+    private static final class GhostTriangle extends Triangle {
+        GhostTriangle(Point a, Point b, Point c) {
+            super(a, b, c);
+        }
+
+        @Override
+        double distanceTo(Hit query) {
+            return Double.NaN;
+        }
+    }
+
+    @Nested
+    @DisplayName("packed primitives: library spheres and triangles are tested from the tree's own numbers")
+    class Packed {
+        @Test
+        @DisplayName("only the library's own sphere and triangle pack; subclasses, polygons and meshes keep their hooks")
+        void kinds() {
+            Point a = new Point(0, 0, 0), b = new Point(1, 0, 0), c = new Point(0, 1, 0);
+            assertThat(new Sphere(a, 1).packedKind()).isEqualTo(Intersectable.SPHERE);
+            assertThat(new Triangle(a, b, c).packedKind()).isEqualTo(Intersectable.TRIANGLE);
+            assertThat(new Ghost(a, 1).packedKind()).isEqualTo(Intersectable.OWN);
+            assertThat(new GhostTriangle(a, b, c).packedKind()).isEqualTo(Intersectable.OWN);
+            assertThat(new Polygon(a, b, c).packedKind()).isEqualTo(Intersectable.OWN);
+            assertThat(new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, new int[] { 0, 1, 2 }).packedKind())
+                    .isEqualTo(Intersectable.OWN);
+        }
+
+        @Test
+        @DisplayName("a subclass's overridden hooks are called: its shapes are not hit, the library's are")
+        void subclassesAreAsked() {
+            Geometries g = new Geometries();
+            List<Geometry> real = new ArrayList<>();
+            for (int i = 0; i < 20; ++i) {
+                Point p = new Point(3 * i, 0, 0);
+                if (i % 2 == 0) {
+                    g.add(new Ghost(p, 1), new GhostTriangle(p.add(new Vector(0, -1, 2)), p.add(new Vector(1, 1, 2)), p.add(new Vector(-1, 1, 2))));
+                } else {
+                    Geometry s = new Sphere(p, 1), t = new Triangle(p.add(new Vector(0, -1, 2)), p.add(new Vector(1, 1, 2)), p.add(new Vector(-1, 1, 2)));
+                    g.add(s, t);
+                    real.add(s);
+                    real.add(t);
+                }
+            }
+            Bvh tree = Bvh.build(g);
+            for (int i = 0; i < 20; ++i) {
+                Ray down = new Ray(new Point(3 * i, 0, 10), new Vector(0, 0, -1));
+                Visit closest = Hits.closest(tree, down, Double.POSITIVE_INFINITY);
+                List<Visit> visits = Hits.visited(tree, down, Double.POSITIVE_INFINITY);
+                if (i % 2 == 0) {
+                    assertThat(closest).as("closest hit over ghosts %d", i).isNull();
+                    assertThat(visits).as("walk over ghosts %d", i).isEmpty();
+                } else {
+                    assertThat(closest).as("closest hit over shapes %d", i).isNotNull();
+                    assertThat(closest.geometry()).as("the triangle above sphere %d", i).isSameAs(real.get(i));
+                    assertThat(visits).extracting(Visit::geometry).as("walk over shapes %d", i)
+                            .containsExactlyInAnyOrder(real.get(i), real.get(i - 1), real.get(i - 1));
+                }
+            }
+        }
+
+        @Test
+        @DisplayName("the packed numbers take memory only when something is packed")
+        void indexBytes() {
+            Geometries meshOnly = new Geometries(gridMesh(20));
+            Bvh mesh = Bvh.build(meshOnly);
+            assertThat(mesh.indexBytes()).isEqualTo(mesh.nodeCount() * 32L + mesh.primitiveTotal() * 9L);
+            Geometries spheres = new Geometries();
+            for (int i = 0; i < 50; ++i) spheres.add(new Sphere(new Point(i, 0, 0), 0.4));
+            Bvh packed = Bvh.build(spheres);
+            assertThat(packed.indexBytes()).isEqualTo(packed.nodeCount() * 32L + 50 * (9L + 72));
         }
     }
 
