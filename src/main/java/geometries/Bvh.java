@@ -2,6 +2,7 @@ package geometries;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveAction;
 
@@ -71,6 +72,39 @@ public final class Bvh extends Intersectable {
     private final int depth;
 
     /**
+     * The library's shapes: their geometry is fixed when they are made (a material may change, a
+     * box or a hit cannot). A user's class, even a subclass of one of these, may move its shape
+     * between renders, so a tree over one is never reused.
+     */
+    private static final Set<Class<?>> FIXED = Set.of(Sphere.class, Triangle.class, Polygon.class, TriangleMesh.class,
+            Plane.class, Tube.class, Cylinder.class);
+
+    /**
+     * The tree of {@code geometries} as they are now, for a render: the tree an earlier call
+     * built is reused when the geometries still hold the same leaves (the same objects, in the
+     * same order, found through every nested list) and all of them are library shapes, whose
+     * geometry cannot change; otherwise a new tree is built (as {@link #build(Geometries)}) and
+     * kept for the next call. So the renders of several cameras, or frames, of one scene build
+     * it once, and any shape added anywhere in the scene is seen by the next render. The check
+     * costs one pass over the leaves, far less than a build.
+     *
+     * @param geometries the scene's geometries; bounded leaves go into the tree
+     * @return the hierarchy, immutable, safe to share between render threads
+     */
+    public static Bvh of(Geometries geometries) {
+        List<Intersectable> collected = new ArrayList<>();
+        geometries.collectLeaves(collected);
+        Intersectable[] now = collected.toArray(new Intersectable[0]);
+        Bvh kept = geometries.keptTree();
+        if (kept != null && kept.indexes(now)) return kept;
+        Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, FEW);
+        for (Intersectable leaf : now)
+            if (!FIXED.contains(leaf.getClass())) return tree;
+        geometries.keepTree(tree);
+        return tree;
+    }
+
+    /**
      * Indexes the leaves of {@code geometries} as they are now: geometries added later are not in
      * the tree, so build it after the scene is complete (the renderer does, once per render).
      * Builds on every available processor; the tree does not depend on how many.
@@ -107,13 +141,13 @@ public final class Bvh extends Intersectable {
      */
     static Bvh build(Geometries geometries, int parallelism, int forkAbove, int few) {
         if (parallelism < 1) throw new IllegalArgumentException("parallelism must be at least 1, got " + parallelism);
-        return new Bvh(geometries, parallelism, Math.max(1, forkAbove), Math.min(few, FEW));
-    }
-
-    private Bvh(Geometries geometries, int parallelism, int forkAbove, int few) {
         List<Intersectable> collected = new ArrayList<>();
         geometries.collectLeaves(collected);
-        Intersectable[] all = collected.toArray(new Intersectable[0]);
+        return new Bvh(collected.toArray(new Intersectable[0]), parallelism, Math.max(1, forkAbove), Math.min(few, FEW));
+    }
+
+    /** Indexes {@code all}, a scene's leaves (this tree keeps the array). */
+    private Bvh(Intersectable[] all, int parallelism, int forkAbove, int few) {
         leaves = all;
         int count = all.length;
         // Threads start on the first task, so an idle pool costs nothing.
@@ -180,6 +214,14 @@ public final class Bvh extends Intersectable {
         } finally {
             if (pool != null) pool.shutdown();
         }
+    }
+
+    /** @return whether this tree was built over exactly {@code now}: the same objects in the same order */
+    private boolean indexes(Intersectable[] now) {
+        if (now.length != leaves.length) return false;
+        for (int i = 0; i < now.length; ++i)
+            if (now[i] != leaves[i]) return false;
+        return true;
     }
 
     /** @return the leaf whose slots [first[l], first[l + 1]) hold {@code slot} (first is non-decreasing) */

@@ -1,5 +1,6 @@
 package geometries;
 
+import java.lang.ref.SoftReference;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -13,6 +14,11 @@ import primitives.Ray;
  */
 public class Geometries extends Intersectable {
     private final List<Intersectable> items = new ArrayList<>();
+    /**
+     * The tree {@link Bvh#of} last built over these geometries, for the next render to reuse;
+     * soft, so that a scene kept but no longer rendered gives the memory back when it is short.
+     */
+    private SoftReference<Bvh> tree;
 
     /** An empty composite; {@link #add} fills it. */
     public Geometries() {
@@ -93,6 +99,16 @@ public class Geometries extends Intersectable {
             box = box == null ? b : box.union(b);
         }
         return box;
+    }
+
+    /** @return the tree last kept by {@link #keepTree}, or null when none is (or it was collected) */
+    synchronized Bvh keptTree() {
+        return tree == null ? null : tree.get();
+    }
+
+    /** Keeps {@code built} for {@link Bvh#of} to check and reuse. */
+    synchronized void keepTree(Bvh built) {
+        tree = new SoftReference<>(built);
     }
 
     @Override

@@ -130,7 +130,8 @@ public class RayTracerBasic extends RayTracerBase {
 
     /**
      * Snapshots the scene for tracing: checks every light's settings (before any worker starts,
-     * so a bad light fails the render at once with its message) and builds the BVH.
+     * so a bad light fails the render at once with its message) and builds the BVH, or reuses the
+     * one an earlier render built over the same, unchanged shapes ({@link Bvh#of}).
      */
     @Override
     synchronized void prepare() {
@@ -139,13 +140,13 @@ public class RayTracerBasic extends RayTracerBase {
         preparedItems = scene.geometries.getItems().size();
         preparedLights = scene.lights.size();
         lights = scene.lights.toArray(new LightSource[0]);
-        world = useBvh ? Bvh.build(scene.geometries) : scene.geometries;
+        world = useBvh ? Bvh.of(scene.geometries) : scene.geometries;
     }
 
     /**
      * The prepared geometry for a call outside a render: built on first use, and rebuilt when the
      * scene's geometry list, its number of items or its number of lights changed since (a render
-     * always rebuilds; changes deep inside nested {@code Geometries} are seen by the next render).
+     * always prepares again, so it also sees shapes added deep inside nested {@code Geometries}).
      */
     private synchronized Intersectable preparedForDirectCall() {
         if (world == null || preparedGeometries != scene.geometries

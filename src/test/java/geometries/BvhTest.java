@@ -666,6 +666,58 @@ class BvhTest {
     }
 
     @Nested
+    @DisplayName("Bvh.of: one tree per unchanged scene, a new one when a shape is added anywhere")
+    class Reuse {
+        private final Geometries inner = new Geometries(new Sphere(new Point(5, 0, 0), 1));
+        private final Geometries scene = new Geometries(new Sphere(Point.ZERO, 1),
+                new Triangle(new Point(0, 0, 3), new Point(1, 0, 3), new Point(0, 1, 3)), inner,
+                new Plane(new Point(0, 0, -5), new Vector(0, 0, 1)));
+
+        @Test
+        @DisplayName("the same library shapes: the same tree, which answers as a fresh build")
+        void reused() {
+            Bvh first = Bvh.of(scene);
+            assertThat(Bvh.of(scene)).isSameAs(first);
+            assertThat(first.sameTreeAs(Bvh.build(scene))).isTrue();
+        }
+
+        @Test
+        @DisplayName("a shape added at the top or deep inside a nested list: a new tree that finds it")
+        void rebuiltWhenAdded() {
+            Bvh first = Bvh.of(scene);
+            Ray ray = new Ray(new Point(-10, 10, 0), new Vector(1, 0, 0));
+            assertThat(Hits.closest(first, ray, Double.POSITIVE_INFINITY)).isNull();
+            Sphere deep = new Sphere(new Point(0, 10, 0), 1);
+            inner.add(new Geometries(deep));
+            Bvh second = Bvh.of(scene);
+            assertThat(second).isNotSameAs(first);
+            assertThat(Hits.closest(second, ray, Double.POSITIVE_INFINITY).geometry()).isSameAs(deep);
+            Sphere top = new Sphere(new Point(-5, 10, 0), 1);
+            scene.add(top);
+            assertThat(Hits.closest(Bvh.of(scene), ray, Double.POSITIVE_INFINITY).geometry()).isSameAs(top);
+        }
+
+        @Test
+        @DisplayName("a user's shape anywhere in the scene: never reused, as it may move between renders")
+        void userShapesRebuilt() {
+            inner.add(new Ghost(new Point(0, 20, 0), 1));
+            Bvh first = Bvh.of(scene);
+            assertThat(Bvh.of(scene)).isNotSameAs(first);
+        }
+
+        @Test
+        @DisplayName("another list of the same shapes keeps its own tree")
+        void perList() {
+            Geometries other = new Geometries(scene.getItems().toArray(new Intersectable[0]));
+            Bvh first = Bvh.of(scene);
+            Bvh second = Bvh.of(other);
+            assertThat(second).isNotSameAs(first);
+            assertThat(second.sameTreeAs(first)).isTrue();
+            assertThat(Bvh.of(scene)).isSameAs(first);
+        }
+    }
+
+    @Nested
     @DisplayName("contract: a tree of bounded shapes")
     class BoundedContract extends ContractScenes.SceneContract {
         private final Bvh tree = Bvh.build(ContractScenes.bounded());

@@ -30,6 +30,27 @@ class RayTracerBasicTest {
     }
 
     @Test
+    @DisplayName("renders of one scene share its tree, yet a shape added deep in a nested list between them is drawn")
+    void nextRenderSeesNestedAddition() {
+        geometries.Geometries group = new geometries.Geometries(new Sphere(new Point(-0.6, 0, -5), 0.5).setEmission(new Color(0, 200, 0)));
+        Scene scene = new Scene("grows between renders").setBackground(new Color(1, 2, 3));
+        scene.geometries.add(group);
+        ImageWriter first = new ImageWriter("before", 16, 16);
+        TestScenes.camera(scene, first).setSummary(false).build().render();
+        group.add(new geometries.Geometries(new Sphere(new Point(0.6, 0, -5), 0.5).setEmission(new Color(200, 0, 0))));
+        ImageWriter second = new ImageWriter("after", 16, 16);
+        TestScenes.camera(scene, second).setSummary(false).build().render();
+        int red = 0, redBefore = 0;
+        for (int y = 0; y < 16; ++y)
+            for (int x = 0; x < 16; ++x) {
+                if (((second.getRgb(x, y) >> 16) & 0xFF) > 100) ++red;
+                if (((first.getRgb(x, y) >> 16) & 0xFF) > 100) ++redBefore;
+            }
+        assertThat(redBefore).as("red pixels before the red sphere was added").isZero();
+        assertThat(red).as("red pixels after").isPositive();
+    }
+
+    @Test
     @DisplayName("random effects are keyed by the ray: the same ray gives the same colour, another ray other noise")
     void randomEffectsKeyedByTheRay() {
         Scene scene = new Scene("soft");
