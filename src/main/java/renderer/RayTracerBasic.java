@@ -250,7 +250,9 @@ public class RayTracerBasic extends RayTracerBase {
         double nx = hit.normalX(), ny = hit.normalY(), nz = hit.normalZ();
         double vx = hit.directionX(), vy = hit.directionY(), vz = hit.directionZ();
         double[] l = ctx.light, iL = ctx.intensity, ktr = ctx.transparency;
-        for (LightSource light : lights) {
+        LightSource[] lights = this.lights;
+        for (int li = 0; li < lights.length; ++li) {
+            LightSource light = lights[li];
             light.getL(px, py, pz, l);
             double lx = l[0], ly = l[1], lz = l[2];
             double nl = Util.alignZero(nx * lx + ny * ly + nz * lz);
@@ -268,7 +270,7 @@ public class RayTracerBasic extends RayTracerBase {
             // Nothing to shadow (a spot light turned away, a material with kD = kS = 0): the term
             // is exactly zero whatever the occluders, so the shadow walk is not traced.
             if (ir * fr == 0 && ig * fg == 0 && ib * fb == 0) continue;
-            transparency(hit, light, lx, ly, lz, ctx);
+            transparency(hit, light, li, lx, ly, lz, ctx);
             if (ktr[0] * kr < MIN_CALC_COLOR_K && ktr[1] * kg < MIN_CALC_COLOR_K
                     && ktr[2] * kb < MIN_CALC_COLOR_K) continue;
             cr += ir * ktr[0] * fr;
@@ -286,17 +288,17 @@ public class RayTracerBasic extends RayTracerBase {
      * direction toward the point is l), into ctx.transparency: the course's hard shadow for a
      * point light, or the average over {@link #shadowSamples} points of its disk.
      */
-    private void transparency(Hit hit, LightSource light, double lx, double ly, double lz, TraceContext ctx) {
+    private void transparency(Hit hit, LightSource light, int li, double lx, double ly, double lz, TraceContext ctx) {
         double radius = light.getRadius();
         Intersectable w = world;
         Transmittance tr = ctx.transmittance;
+        ShadowCache cache = ctx.shadowCache;
         double px = hit.pointX(), py = hit.pointY(), pz = hit.pointZ();
         double nx = hit.normalX(), ny = hit.normalY(), nz = hit.normalZ();
         double[] ktr = ctx.transparency;
         if (radius == 0) {
             ctx.shadowRays++;
-            w.visitHits(ctx.shadow.setRay(px, py, pz, -lx, -ly, -lz, nx, ny, nz), light.getDistance(px, py, pz),
-                    tr.reset());
+            cache.trace(w, ctx.shadow.setRay(px, py, pz, -lx, -ly, -lz, nx, ny, nz), light.getDistance(px, py, pz), li, tr);
             ktr[0] = tr.r;
             ktr[1] = tr.g;
             ktr[2] = tr.b;
@@ -325,7 +327,7 @@ public class RayTracerBasic extends RayTracerBase {
             // A point of the disk below the surface's horizon sends no light to p.
             if (dist == 0 || (dx * nx + dy * ny + dz * nz) * side <= 0) continue;
             ctx.shadowRays++;
-            w.visitHits(ctx.shadow.setRay(px, py, pz, dx, dy, dz, nx, ny, nz), dist, tr.reset());
+            cache.trace(w, ctx.shadow.setRay(px, py, pz, dx, dy, dz, nx, ny, nz), dist, li, tr);
             sr += tr.r;
             sg += tr.g;
             sb += tr.b;

@@ -11,6 +11,7 @@ import geometries.Hit;
 final class TraceContext {
     final SampleStream random = new SampleStream();
     final Transmittance transmittance;
+    final ShadowCache shadowCache = new ShadowCache();
     /** Scratch for one point of a disk (soft-shadow light disks, glossy aim disks). */
     final double[] disk = new double[2];
     /** Scratch for a vector: a camera ray's direction, a cross product. */

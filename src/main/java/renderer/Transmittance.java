@@ -13,6 +13,8 @@ final class Transmittance implements HitVisitor {
     double r;
     double g;
     double b;
+    /** The occluder that stopped the walk alone (its kT is zero in every channel), or null. */
+    Geometry opaque;
     private final double threshold;
 
     Transmittance(double threshold) {
@@ -21,6 +23,7 @@ final class Transmittance implements HitVisitor {
 
     Transmittance reset() {
         r = g = b = 1;
+        opaque = null;
         return this;
     }
 
@@ -32,6 +35,7 @@ final class Transmittance implements HitVisitor {
         b *= kT.getD3();
         if (r < threshold && g < threshold && b < threshold) {
             r = g = b = 0;
+            if (kT.getD1() == 0 && kT.getD2() == 0 && kT.getD3() == 0) opaque = geometry;
             return false;
         }
         return true;

@@ -1,0 +1,79 @@
+package renderer;
+
+import java.util.Arrays;
+import java.util.Set;
+
+import geometries.Cylinder;
+import geometries.Geometry;
+import geometries.Hit;
+import geometries.HitVisitor;
+import geometries.Intersectable;
+import geometries.Plane;
+import geometries.Polygon;
+import geometries.Sphere;
+import geometries.Triangle;
+import geometries.Tube;
+import primitives.Double3;
+
+/**
+ * A worker's last opaque occluder per light (Haines and Greenberg's shadow cache): the shape
+ * that stopped the previous shadow ray toward a light usually stops the next one too (the next
+ * pixel, the next sample of a soft light's disk), so it is asked first, before the walk.
+ *
+ * <p>Exact: when a shape whose kT is zero in every channel crosses the shadow ray within its
+ * distance, the product of kT along that ray is 0 whatever else is on it, which is what the walk
+ * would return; when it does not cross it, the walk runs as before. Only the library's own shapes
+ * of one primitive are kept: asking them is one intersection test, and they have no side effects
+ * (a mesh would be a walk of its own; a user's class may do anything).
+ */
+final class ShadowCache implements HitVisitor {
+    private static final Set<Class<?>> KEPT = Set.of(Sphere.class, Triangle.class, Polygon.class, Cylinder.class,
+            Plane.class, Tube.class);
+
+    /** Per light (the tracer's light order): the last opaque occluder found, or null. */
+    private Geometry[] last = new Geometry[0];
+    /** Whether the shape asked in {@link #blocks} crosses the ray within the distance. */
+    private boolean crossed;
+
+    /**
+     * The product of kT along {@code shadow} up to {@code distance} toward light {@code light}, into
+     * {@code tr} (as {@code world.visitHits(shadow, distance, tr.reset())} would leave it): 0 at once
+     * when the light's last opaque occluder crosses the ray, else the walk, whose opaque occluder,
+     * if it found one, is kept for the next ray.
+     */
+    void trace(Intersectable world, Hit shadow, double distance, int light, Transmittance tr) {
+        tr.reset();
+        if (blocks(light, shadow, distance)) {
+            tr.r = tr.g = tr.b = 0;
+            return;
+        }
+        world.visitHits(shadow, distance, tr);
+        Geometry occluder = tr.opaque;
+        if (occluder == null || !KEPT.contains(occluder.getClass())) return;
+        if (light >= last.length) last = Arrays.copyOf(last, light + 1);
+        last[light] = occluder;
+    }
+
+    /** @return whether light {@code light}'s last opaque occluder, still opaque, crosses the ray within the distance */
+    private boolean blocks(int light, Hit shadow, double distance) {
+        if (light >= last.length) return false;
+        Geometry g = last[light];
+        if (g == null || !opaque(g)) return false;
+        crossed = false;
+        g.visitHits(shadow, distance, this); // the walk's acceptance rule, the walk's arithmetic
+        return crossed;
+    }
+
+    /** The probe's visit: one crossing is enough. */
+    @Override
+    public boolean visit(Geometry geometry, double t) {
+        crossed = true;
+        return false;
+    }
+
+    /** @return whether {@code g} lets no light through, in any channel */
+    private static boolean opaque(Geometry g) {
+        Double3 kT = g.getMaterial().kT;
+        return kT.getD1() == 0 && kT.getD2() == 0 && kT.getD3() == 0;
+    }
+}

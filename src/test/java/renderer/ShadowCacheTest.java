@@ -1,0 +1,177 @@
+package renderer;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.Random;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+import geometries.Geometries;
+import geometries.Geometry;
+import geometries.Hit;
+import geometries.HitVisitor;
+import geometries.Sphere;
+import geometries.Triangle;
+import geometries.TriangleMesh;
+import primitives.Double3;
+import primitives.Material;
+import primitives.Point;
+
+/** {@link ShadowCache}: the last opaque occluder per light is asked first, and the answer never changes. */
+class ShadowCacheTest {
+    /** Geometries that count their walks: a walk not taken is a shadow ray the cache answered. */
+    private static final class Counted extends Geometries {
+        int walks;
+
+        @Override
+        public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+            ++walks;
+            return super.visitHits(query, maxDistance, visitor);
+        }
+    }
+
+    /** A user's sphere: never kept, as its class may answer differently from one call to the next. */
+    private static final class UserSphere extends Sphere {
+        UserSphere(Point c, double r) {
+            super(c, r);
+        }
+    }
+
+    private static final double THRESHOLD = RayTracerBasic.MIN_CALC_COLOR_K;
+
+    /**
+     * A cloud of shapes, opaque and partly transparent, library and user shapes and a mesh (both
+     * never kept), in a cube of side 20 around the origin.
+     */
+    private static Counted cloud(long seed) {
+        Random rnd = new Random(seed);
+        Counted g = new Counted();
+        for (int i = 0; i < 300; ++i) {
+            Point c = new Point(rnd.nextDouble(-10, 10), rnd.nextDouble(-10, 10), rnd.nextDouble(-10, 10));
+            double kt = switch (rnd.nextInt(4)) {
+            case 0, 1 -> 0; // opaque
+            case 2 -> rnd.nextDouble(0.2, 0.9);
+            default -> 1; // clear in one channel below
+            };
+            Material m = new Material().setKt(kt == 1 ? new Double3(0, 0.5, 0) : new Double3(kt));
+            Geometry shape = switch (i % 5) {
+            case 0, 1 -> new Sphere(c, rnd.nextDouble(0.3, 1.5));
+            case 2 -> new Triangle(c, c.add(new primitives.Vector(rnd.nextDouble(1, 3), 0, 0.2)),
+                    c.add(new primitives.Vector(0.1, rnd.nextDouble(1, 3), 0)));
+            case 3 -> new UserSphere(c, rnd.nextDouble(0.3, 1.5));
+            default -> new TriangleMesh(new double[] { c.getX(), c.getY(), c.getZ(), c.getX() + 2, c.getY(), c.getZ(),
+                    c.getX(), c.getY() + 2, c.getZ() + 0.3 }, new int[] { 0, 1, 2 });
+            };
+            g.add(shape.setMaterial(m));
+        }
+        return g;
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = { 1, 2, 3 })
+    @DisplayName("coherent shadow rays toward two lights: the same product of kT as the walk alone, bit for bit, and some answered without it")
+    void sameAsTheWalk(long seed) {
+        Counted world = cloud(seed);
+        ShadowCache cache = new ShadowCache();
+        Transmittance cached = new Transmittance(THRESHOLD), walked = new Transmittance(THRESHOLD);
+        Hit a = new Hit(), b = new Hit();
+        Random rnd = new Random(seed + 100);
+        int rays = 3000, blocked = 0;
+        double px = 0, py = 0, pz = 0;
+        for (int i = 0; i < rays; ++i) {
+            // Points along a wandering path, shadowed toward two lights: neighbours share occluders.
+            px = Math.max(-12, Math.min(12, px + rnd.nextGaussian()));
+            py = Math.max(-12, Math.min(12, py + rnd.nextGaussian()));
+            pz = Math.max(-12, Math.min(12, pz + rnd.nextGaussian()));
+            int light = i % 2;
+            double lx = light == 0 ? 40 : -30, ly = 50, lz = light == 0 ? 20 : -45;
+            double dx = lx - px, dy = ly - py, dz = lz - pz;
+            double distance = i % 3 == 0 ? Double.POSITIVE_INFINITY : Math.sqrt(dx * dx + dy * dy + dz * dz);
+            a.setRay(px, py, pz, dx, dy, dz);
+            b.setRay(px, py, pz, dx, dy, dz);
+            int walks = world.walks;
+            cache.trace(world, a, distance, light, cached);
+            if (world.walks == walks) ++blocked;
+            world.visitHits(b, distance, walked.reset());
+            assertThat(new double[] { cached.r, cached.g, cached.b }).as("ray %d", i)
+                    .containsExactly(walked.r, walked.g, walked.b);
+        }
+        assertThat(blocked).as("shadow rays answered by the cache (the test must not be vacuous)").isGreaterThan(rays / 20);
+    }
+
+    @Nested
+    @DisplayName("what is kept")
+    class Kept {
+        private final Counted world = new Counted();
+        private final Hit ray = new Hit().setRay(0, 0, -10, 0, 0, 1);
+        private final Transmittance tr = new Transmittance(THRESHOLD);
+        private final ShadowCache cache = new ShadowCache();
+
+        /** Traces the ray twice toward light 0: @return whether the second time was answered without a walk */
+        private boolean secondAnswered() {
+            cache.trace(world, ray, 100, 0, tr);
+            int walks = world.walks;
+            cache.trace(world, ray, 100, 0, tr);
+            assertThat(new double[] { tr.r, tr.g, tr.b }).containsExactly(0, 0, 0);
+            return world.walks == walks;
+        }
+
+        @Test
+        @DisplayName("a library sphere that stopped the ray answers the next one")
+        void librarySphere() {
+            world.add(new Sphere(Point.ZERO, 1));
+            assertThat(secondAnswered()).isTrue();
+        }
+
+        @Test
+        @DisplayName("a user's sphere and a mesh are asked through the walk every time")
+        void notKept() {
+            world.add(new UserSphere(Point.ZERO, 1));
+            assertThat(secondAnswered()).isFalse();
+            Counted meshWorld = new Counted();
+            meshWorld.add(new TriangleMesh(new double[] { -1, -1, 0, 2, -1, 0, -1, 2, 0 }, new int[] { 0, 1, 2 }));
+            cache.trace(meshWorld, ray, 100, 0, tr);
+            int walks = meshWorld.walks;
+            cache.trace(meshWorld, ray, 100, 0, tr);
+            assertThat(meshWorld.walks).isEqualTo(walks + 1);
+        }
+
+        @Test
+        @DisplayName("a kept shape made transparent since is not trusted: the walk gives its kT")
+        void madeTransparent() {
+            Sphere s = new Sphere(Point.ZERO, 1);
+            world.add(s);
+            cache.trace(world, ray, 100, 0, tr);
+            s.setMaterial(new Material().setKt(0.5));
+            cache.trace(world, ray, 100, 0, tr);
+            assertThat(tr.r).isEqualTo(0.25); // the ray crosses the sphere's surface twice
+        }
+
+        @Test
+        @DisplayName("each light keeps its own occluder; a ray the kept one does not cross is walked")
+        void perLight() {
+            world.add(new Sphere(Point.ZERO, 1));
+            cache.trace(world, ray, 100, 0, tr);
+            int walks = world.walks;
+            cache.trace(world, ray, 100, 1, tr); // another light: nothing kept for it yet
+            assertThat(world.walks).isEqualTo(walks + 1);
+            Hit past = new Hit().setRay(5, 0, -10, 0, 0, 1); // misses the sphere
+            cache.trace(world, past, 100, 0, tr);
+            assertThat(world.walks).isEqualTo(walks + 2);
+            assertThat(tr.r).isEqualTo(1);
+        }
+
+        @Test
+        @DisplayName("an occluder beyond the light does not count: the distance rule is the walk's")
+        void beyondTheLight() {
+            world.add(new Sphere(Point.ZERO, 1));
+            cache.trace(world, ray, 100, 0, tr);
+            cache.trace(world, ray, 8.5, 0, tr); // the sphere is entered at 9
+            assertThat(tr.r).isEqualTo(1);
+        }
+    }
+}
