@@ -106,7 +106,8 @@ public final class Bvh extends Intersectable {
 
     /**
      * Indexes the leaves of {@code geometries} as they are now: geometries added later are not in
-     * the tree, so build it after the scene is complete (the renderer does, once per render).
+     * the tree, so build it after the scene is complete (a render asks {@link #of}, which builds it
+     * once per unchanged scene).
      * Builds on every available processor; the tree does not depend on how many.
      *
      * @param geometries the scene's geometries; bounded leaves go into the tree
