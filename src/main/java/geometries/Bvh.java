@@ -485,8 +485,7 @@ public final class Bvh extends Intersectable {
      * more than {@link #forkAbove} primitives are built as fork/join tasks.
      *
      * <p>Deterministic whatever the parallelism: a node's split depends only on the primitives of
-     * its range and their order there, which the partition (the same steps on any thread) makes
-     * a function of the parent's range, and every subtree writes into node slots reserved for it
+     * its range, the partition is stable, and every subtree writes into node slots reserved for it
      * in advance (a subtree over n primitives has at most 2n − 1 nodes, so the right child of a
      * node whose left child covers nL primitives goes to slot {@code node + 2·nL}). A final
      * pass renumbers the slots depth-first, the layout the walks expect; it is parallel too, as
@@ -509,6 +508,11 @@ public final class Bvh extends Intersectable {
         private int[] order;
         private double[] bounds;
         private double[] centroid;
+        // The stable partition's buffers for the right part, indexed by slot like the arrays above
+        // so that concurrent subtrees never share a region.
+        private int[] scratchOrder;
+        private double[] scratchBounds;
+        private double[] scratchCentroid;
         // Per reserved node slot: the box (6) already rounded outward to floats, the primitive count
         // (> 0 for a leaf) and for a leaf its first slot, for an inner node the primitive count of
         // its left child; the number of nodes of the subtree rooted there.
@@ -564,6 +568,9 @@ public final class Bvh extends Intersectable {
 
         void build() {
             int n = total;
+            scratchOrder = new int[n];
+            scratchBounds = new double[n * 6];
+            scratchCentroid = new double[n * 3];
             int capacity = Math.max(1, 2 * n);
             slotBox = new float[capacity * 6];
             slotCount = new int[capacity];
@@ -584,6 +591,9 @@ public final class Bvh extends Intersectable {
                 maxDepth = root.maxLevel;
             }
             // The build's buffers are garbage from here on: let them go before the node array is made.
+            scratchOrder = null;
+            scratchBounds = null;
+            scratchCentroid = null;
             bounds = null;
             centroid = null;
             nodes = n == 0 ? 0 : slotSize[0];
@@ -790,16 +800,11 @@ public final class Bvh extends Intersectable {
         }
 
         /**
-         * Partitions slots [start, end) in place: the primitives whose centroid falls in a bin up
-         * to {@code lastLeftBin} along {@code axis} first, each moved with its bounds and
-         * centroid. Two cursors meet from both ends and swap what is on the wrong side, so a
-         * primitive already on its side is not moved, and no buffer is needed (a stable partition
-         * through one took 76 bytes per primitive more and was 5 % slower on two threads). The
-         * order within each part is not kept: the SAH splits do not depend on it (bins and boxes
-         * are sets), only the order of a leaf's primitives and the halving of coincident
-         * centroids do, and it is a function of the range alone, so the tree does not depend on
-         * the threads. The same pass gathers both parts' box and centroid bounds into
-         * {@code children} at the next level's places, so that no child reads its range again.
+         * Stable partition of slots [start, end): the primitives whose centroid falls in a bin
+         * up to {@code lastLeftBin} along {@code axis} first, each moved with its bounds and
+         * centroid. The right part goes through the scratch buffers' slots [start, end). The same
+         * pass gathers both parts' box and centroid bounds into {@code children} at the next
+         * level's places, so that no child reads its range again for them.
          *
          * @return the first slot of the right part
          */
@@ -807,36 +812,32 @@ public final class Bvh extends Intersectable {
                               double[] children, int at) {
             resetBounds(children, at);
             resetBounds(children, at + BOUNDS);
-            double[] centroid = this.centroid;
-            int l = start, r = end - 1;
-            while (true) {
-                while (l <= r && bin(centroid[l * 3 + axis], lo, scale) <= lastLeftBin)
-                    growBounds(children, at, bounds, centroid, l++);
-                while (l <= r && bin(centroid[r * 3 + axis], lo, scale) > lastLeftBin)
-                    growBounds(children, at + BOUNDS, bounds, centroid, r--);
-                if (l > r) return l;
-                swap(l, r); // l held a right primitive, r a left one
-                growBounds(children, at, bounds, centroid, l++);
-                growBounds(children, at + BOUNDS, bounds, centroid, r--);
+            double[] bounds = this.bounds, centroid = this.centroid, sBounds = scratchBounds, sCentroid = scratchCentroid;
+            int l = start, r = start;
+            for (int i = start; i < end; ++i) {
+                int o = i * 6, c = i * 3;
+                if (bin(centroid[c + axis], lo, scale) <= lastLeftBin) {
+                    growBounds(children, at, bounds, centroid, i);
+                    if (l != i) {
+                        int lo6 = l * 6, lc = l * 3;
+                        order[l] = order[i];
+                        for (int k = 0; k < 6; ++k) bounds[lo6 + k] = bounds[o + k];
+                        for (int k = 0; k < 3; ++k) centroid[lc + k] = centroid[c + k];
+                    }
+                    ++l;
+                } else {
+                    growBounds(children, at + BOUNDS, bounds, centroid, i);
+                    int ro = r * 6, rc = r * 3;
+                    scratchOrder[r++] = order[i];
+                    for (int k = 0; k < 6; ++k) sBounds[ro + k] = bounds[o + k];
+                    for (int k = 0; k < 3; ++k) sCentroid[rc + k] = centroid[c + k];
+                }
             }
-        }
-
-        /** Exchanges slots {@code i} and {@code j}: primitive id, bounds and centroid. */
-        private void swap(int i, int j) {
-            int id = order[i];
-            order[i] = order[j];
-            order[j] = id;
-            double[] bounds = this.bounds, centroid = this.centroid;
-            for (int k = i * 6, m = j * 6, e = k + 6; k < e; ++k, ++m) {
-                double t = bounds[k];
-                bounds[k] = bounds[m];
-                bounds[m] = t;
-            }
-            for (int k = i * 3, m = j * 3, e = k + 3; k < e; ++k, ++m) {
-                double t = centroid[k];
-                centroid[k] = centroid[m];
-                centroid[m] = t;
-            }
+            int right = r - start;
+            System.arraycopy(scratchOrder, start, order, l, right);
+            System.arraycopy(scratchBounds, start * 6, bounds, l * 6, right * 6);
+            System.arraycopy(scratchCentroid, start * 3, centroid, l * 3, right * 3);
+            return l;
         }
 
         /** Makes the bounds at {@code at} empty: a box and a centroid box that any point grows. */
