@@ -52,12 +52,13 @@ class ShadowCacheTest {
         Counted g = new Counted();
         for (int i = 0; i < 300; ++i) {
             Point c = new Point(rnd.nextDouble(-10, 10), rnd.nextDouble(-10, 10), rnd.nextDouble(-10, 10));
-            double kt = switch (rnd.nextInt(4)) {
-            case 0, 1 -> 0; // opaque
-            case 2 -> rnd.nextDouble(0.2, 0.9);
-            default -> 1; // clear in one channel below
+            int kind = rnd.nextInt(4);
+            Double3 kT = switch (kind) {
+            case 0, 1 -> Double3.ZERO; // opaque
+            case 2 -> new Double3(rnd.nextDouble(0.2, 0.9)); // partly transparent
+            default -> new Double3(0, 0.5, 0); // opaque but in one channel: never kept
             };
-            Material m = new Material().setKt(kt == 1 ? new Double3(0, 0.5, 0) : new Double3(kt));
+            Material m = new Material().setKt(kT);
             Geometry shape = switch (i % 5) {
             case 0, 1 -> new Sphere(c, rnd.nextDouble(0.3, 1.5));
             case 2 -> new Triangle(c, c.add(new primitives.Vector(rnd.nextDouble(1, 3), 0, 0.2)),
