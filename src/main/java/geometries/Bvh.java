@@ -2,7 +2,6 @@ package geometries;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
 import java.util.concurrent.ForkJoinPool;
 import java.util.concurrent.RecursiveAction;
 
@@ -72,18 +71,10 @@ public final class Bvh extends Intersectable {
     private final int depth;
 
     /**
-     * The library's shapes: their geometry is fixed when they are made (a material may change, a
-     * box or a hit cannot). A user's class, even a subclass of one of these, may move its shape
-     * between renders, so a tree over one is never reused.
-     */
-    private static final Set<Class<?>> FIXED = Set.of(Sphere.class, Triangle.class, Polygon.class, TriangleMesh.class,
-            Plane.class, Tube.class, Cylinder.class);
-
-    /**
      * The tree of {@code geometries} as they are now, for a render: the tree an earlier call
      * built is reused when the geometries still hold the same leaves (the same objects, in the
-     * same order, found through every nested list) and all of them are library shapes, whose
-     * geometry cannot change; otherwise a new tree is built (as {@link #build(Geometries)}) and
+     * same order, found through every nested list) and all of them are
+     * {@link Geometry#isLibraryShape() library shapes}, whose geometry cannot change; otherwise a new tree is built (as {@link #build(Geometries)}) and
      * kept for the next call. So the renders of several cameras, or frames, of one scene build
      * it once, and any shape added anywhere in the scene is seen by the next render. The check
      * costs one pass over the leaves, far less than a build.
@@ -99,7 +90,7 @@ public final class Bvh extends Intersectable {
         if (kept != null && kept.indexes(now)) return kept;
         Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, FEW);
         for (Intersectable leaf : now)
-            if (!FIXED.contains(leaf.getClass())) return tree;
+            if (!(leaf instanceof Geometry g && g.isLibraryShape())) return tree;
         geometries.keepTree(tree);
         return tree;
     }

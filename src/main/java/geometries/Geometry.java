@@ -1,6 +1,7 @@
 package geometries;
 
 import java.util.Objects;
+import java.util.Set;
 
 import primitives.Color;
 import primitives.Material;
@@ -16,6 +17,23 @@ public abstract class Geometry extends Intersectable {
     private Material material = new Material();
     /** Whether {@link #surfaceNormal} asks {@link #getNormal(Point)} (see there); fixed per class. */
     private final boolean courseNormal = COURSE_NORMAL.get(getClass());
+
+    /** The library's own shapes: see {@link #isLibraryShape()}. */
+    private static final Set<Class<?>> LIBRARY = Set.of(Sphere.class, Triangle.class, Polygon.class, TriangleMesh.class,
+            Plane.class, Tube.class, Cylinder.class);
+
+    /**
+     * Whether this is one of the library's own shapes, not a subclass of one: its geometry is fixed
+     * when it is made (its emission and material may still change) and its queries have no side
+     * effects, so what a renderer learnt of it (a tree over it, that it blocks a light) holds from
+     * one ray or render to the next. A class of yours may move its shape, or count its calls, so
+     * nothing is kept for it.
+     *
+     * @return true for an instance of exactly one of the library's shape classes
+     */
+    public final boolean isLibraryShape() {
+        return LIBRARY.contains(getClass());
+    }
 
     /** @return the light the surface gives off by itself; black by default */
     public Color getEmission() {

@@ -1,18 +1,12 @@
 package renderer;
 
 import java.util.Arrays;
-import java.util.Set;
 
-import geometries.Cylinder;
 import geometries.Geometry;
 import geometries.Hit;
 import geometries.HitVisitor;
 import geometries.Intersectable;
-import geometries.Plane;
-import geometries.Polygon;
-import geometries.Sphere;
-import geometries.Triangle;
-import geometries.Tube;
+import geometries.TriangleMesh;
 import primitives.Double3;
 
 /**
@@ -22,14 +16,12 @@ import primitives.Double3;
  *
  * <p>Exact: when a shape whose kT is zero in every channel crosses the shadow ray within its
  * distance, the product of kT along that ray is 0 whatever else is on it, which is what the walk
- * would return; when it does not cross it, the walk runs as before. Only the library's own shapes
- * of one primitive are kept: asking them is one intersection test, and they have no side effects
- * (a mesh would be a walk of its own; a user's class may do anything).
+ * would return; when it does not cross it, the walk runs as before. Only
+ * {@link Geometry#isLibraryShape() library shapes} of one primitive are kept: asking them is one
+ * intersection test, and they have no side effects (a mesh would be a walk of its own; a user's
+ * class may do anything).
  */
 final class ShadowCache implements HitVisitor {
-    private static final Set<Class<?>> KEPT = Set.of(Sphere.class, Triangle.class, Polygon.class, Cylinder.class,
-            Plane.class, Tube.class);
-
     /** Per light (the tracer's light order): the last opaque occluder found, or null. */
     private Geometry[] last = new Geometry[0];
     /** Whether the shape asked in {@link #blocks} crosses the ray within the distance. */
@@ -49,7 +41,8 @@ final class ShadowCache implements HitVisitor {
         }
         world.visitHits(shadow, distance, tr);
         Geometry occluder = tr.opaque;
-        if (occluder == null || !KEPT.contains(occluder.getClass())) return;
+        // A mesh is kept out: asking it again would be a walk of its own over its triangles.
+        if (occluder == null || !occluder.isLibraryShape() || occluder instanceof TriangleMesh) return;
         if (light >= last.length) last = Arrays.copyOf(last, light + 1);
         last[light] = occluder;
     }
