@@ -800,34 +800,68 @@ public final class Bvh extends Intersectable {
          */
         private int partition(int start, int end, int axis, double lo, double scale, int lastLeftBin,
                               double[] children, int at) {
-            resetBounds(children, at);
-            resetBounds(children, at + BOUNDS);
             double[] bounds = this.bounds, centroid = this.centroid, sBounds = scratchBounds, sCentroid = scratchCentroid;
+            // The two parts' bounds are grown in locals, not in an array: in memory, each
+            // primitive's twelve updates waited for the previous primitive's stores.
+            double lx0 = Double.POSITIVE_INFINITY, ly0 = lx0, lz0 = lx0, lcx0 = lx0, lcy0 = lx0, lcz0 = lx0;
+            double lx1 = Double.NEGATIVE_INFINITY, ly1 = lx1, lz1 = lx1, lcx1 = lx1, lcy1 = lx1, lcz1 = lx1;
+            double rx0 = lx0, ry0 = lx0, rz0 = lx0, rcx0 = lx0, rcy0 = lx0, rcz0 = lx0;
+            double rx1 = lx1, ry1 = lx1, rz1 = lx1, rcx1 = lx1, rcy1 = lx1, rcz1 = lx1;
             int l = start, r = start;
             for (int i = start; i < end; ++i) {
                 int o = i * 6, c = i * 3;
+                double b0 = bounds[o], b1 = bounds[o + 1], b2 = bounds[o + 2];
+                double b3 = bounds[o + 3], b4 = bounds[o + 4], b5 = bounds[o + 5];
+                double c0 = centroid[c], c1 = centroid[c + 1], c2 = centroid[c + 2];
                 if (bin(centroid[c + axis], lo, scale) <= lastLeftBin) {
-                    growBounds(children, at, bounds, centroid, i);
+                    lx0 = Math.min(b0, lx0); ly0 = Math.min(b1, ly0); lz0 = Math.min(b2, lz0);
+                    lx1 = Math.max(b3, lx1); ly1 = Math.max(b4, ly1); lz1 = Math.max(b5, lz1);
+                    lcx0 = Math.min(c0, lcx0); lcy0 = Math.min(c1, lcy0); lcz0 = Math.min(c2, lcz0);
+                    lcx1 = Math.max(c0, lcx1); lcy1 = Math.max(c1, lcy1); lcz1 = Math.max(c2, lcz1);
                     if (l != i) {
                         int lo6 = l * 6, lc = l * 3;
                         order[l] = order[i];
-                        for (int k = 0; k < 6; ++k) bounds[lo6 + k] = bounds[o + k];
-                        for (int k = 0; k < 3; ++k) centroid[lc + k] = centroid[c + k];
+                        bounds[lo6] = b0; bounds[lo6 + 1] = b1; bounds[lo6 + 2] = b2;
+                        bounds[lo6 + 3] = b3; bounds[lo6 + 4] = b4; bounds[lo6 + 5] = b5;
+                        centroid[lc] = c0; centroid[lc + 1] = c1; centroid[lc + 2] = c2;
                     }
                     ++l;
                 } else {
-                    growBounds(children, at + BOUNDS, bounds, centroid, i);
+                    rx0 = Math.min(b0, rx0); ry0 = Math.min(b1, ry0); rz0 = Math.min(b2, rz0);
+                    rx1 = Math.max(b3, rx1); ry1 = Math.max(b4, ry1); rz1 = Math.max(b5, rz1);
+                    rcx0 = Math.min(c0, rcx0); rcy0 = Math.min(c1, rcy0); rcz0 = Math.min(c2, rcz0);
+                    rcx1 = Math.max(c0, rcx1); rcy1 = Math.max(c1, rcy1); rcz1 = Math.max(c2, rcz1);
                     int ro = r * 6, rc = r * 3;
                     scratchOrder[r++] = order[i];
-                    for (int k = 0; k < 6; ++k) sBounds[ro + k] = bounds[o + k];
-                    for (int k = 0; k < 3; ++k) sCentroid[rc + k] = centroid[c + k];
+                    sBounds[ro] = b0; sBounds[ro + 1] = b1; sBounds[ro + 2] = b2;
+                    sBounds[ro + 3] = b3; sBounds[ro + 4] = b4; sBounds[ro + 5] = b5;
+                    sCentroid[rc] = c0; sCentroid[rc + 1] = c1; sCentroid[rc + 2] = c2;
                 }
             }
+            setBounds(children, at, lx0, ly0, lz0, lx1, ly1, lz1, lcx0, lcy0, lcz0, lcx1, lcy1, lcz1);
+            setBounds(children, at + BOUNDS, rx0, ry0, rz0, rx1, ry1, rz1, rcx0, rcy0, rcz0, rcx1, rcy1, rcz1);
             int right = r - start;
             System.arraycopy(scratchOrder, start, order, l, right);
             System.arraycopy(scratchBounds, start * 6, bounds, l * 6, right * 6);
             System.arraycopy(scratchCentroid, start * 3, centroid, l * 3, right * 3);
             return l;
+        }
+
+        /** Writes a box (min xyz, max xyz) and a centroid box as the bounds at {@code at}. */
+        private static void setBounds(double[] b, int at, double x0, double y0, double z0, double x1, double y1, double z1,
+                                      double cx0, double cy0, double cz0, double cx1, double cy1, double cz1) {
+            b[at] = x0;
+            b[at + 1] = y0;
+            b[at + 2] = z0;
+            b[at + 3] = x1;
+            b[at + 4] = y1;
+            b[at + 5] = z1;
+            b[at + 6] = cx0;
+            b[at + 7] = cy0;
+            b[at + 8] = cz0;
+            b[at + 9] = cx1;
+            b[at + 10] = cy1;
+            b[at + 11] = cz1;
         }
 
         /** Makes the bounds at {@code at} empty: a box and a centroid box that any point grows. */
@@ -856,10 +890,10 @@ public final class Bvh extends Intersectable {
             final double[] binBox = new double[3 * BINS * 6];
             final double[] rightArea = new double[BINS];
             final double[] acc = new double[6];
-            // searchFew's per-axis scratch: the slots sorted by bin number, and suffix boxes
+            // searchFew's per-axis scratch: the slots sorted by bin number, and suffix areas
             final int[] fewBin = new int[FEW];
             final int[] fewSlot = new int[FEW];
-            final double[] fewSuffix = new double[(FEW + 1) * 6];
+            final double[] fewSuffixArea = new double[FEW];
             /** The cheapest split a search found: its cost, last left bin (−1 for none) and axis. */
             double bestCost;
             int bestBin;
@@ -933,7 +967,7 @@ public final class Bvh extends Intersectable {
                     return;
                 }
                 int[] key = fewBin, slot = fewSlot;
-                double[] suffix = fewSuffix;
+                double[] suffixArea = fewSuffixArea;
                 for (int a = 0; a < 3; ++a) {
                     if (!searched[a]) continue;
                     double lo = lowOf[a], scale = BINS / extentOf[a];
@@ -946,18 +980,35 @@ public final class Bvh extends Intersectable {
                         key[j] = k;
                         slot[j] = start + i;
                     }
-                    // suffix box j: the union of the sorted slots j..n-1 (box n is empty)
-                    resetBox(suffix, n);
-                    for (int j = n - 1; j >= 0; --j) {
-                        System.arraycopy(suffix, (j + 1) * 6, suffix, j * 6, 6);
-                        growBox(suffix, j, bounds, slot[j]);
+                    // suffixArea[j]: the half area of the union of the sorted slots j..n-1, j ≥ 1. The
+                    // unions are grown in locals, not in an array: no store waits for the last one.
+                    double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
+                    double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+                    for (int j = n - 1; j > 0; --j) {
+                        int o = slot[j] * 6;
+                        x0 = Math.min(bounds[o], x0);
+                        y0 = Math.min(bounds[o + 1], y0);
+                        z0 = Math.min(bounds[o + 2], z0);
+                        x1 = Math.max(bounds[o + 3], x1);
+                        y1 = Math.max(bounds[o + 4], y1);
+                        z1 = Math.max(bounds[o + 5], z1);
+                        suffixArea[j] = halfArea(x1 - x0, y1 - y0, z1 - z0);
                     }
-                    resetBox(acc, 0);
+                    x0 = y0 = z0 = Double.POSITIVE_INFINITY;
+                    x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
                     for (int j = 0; ; ) {
                         int k = key[j];
-                        do growBox(acc, 0, bounds, slot[j]); while (++j < n && key[j] == k);
+                        do {
+                            int o = slot[j] * 6;
+                            x0 = Math.min(bounds[o], x0);
+                            y0 = Math.min(bounds[o + 1], y0);
+                            z0 = Math.min(bounds[o + 2], z0);
+                            x1 = Math.max(bounds[o + 3], x1);
+                            y1 = Math.max(bounds[o + 4], y1);
+                            z1 = Math.max(bounds[o + 5], z1);
+                        } while (++j < n && key[j] == k);
                         if (j == n) break;
-                        consider(sahCost(halfArea(acc, 0), j, halfArea(suffix, j), n - j, parentArea), k, a);
+                        consider(sahCost(halfArea(x1 - x0, y1 - y0, z1 - z0), j, suffixArea[j], n - j, parentArea), k, a);
                     }
                 }
             }
@@ -1067,7 +1118,11 @@ public final class Bvh extends Intersectable {
 
         private static double halfArea(double[] b, int k) {
             int o = k * 6;
-            double dx = b[o + 3] - b[o], dy = b[o + 4] - b[o + 1], dz = b[o + 5] - b[o + 2];
+            return halfArea(b[o + 3] - b[o], b[o + 4] - b[o + 1], b[o + 5] - b[o + 2]);
+        }
+
+        /** The half area of a box of extents dx, dy, dz: the one formula of every SAH cost. */
+        private static double halfArea(double dx, double dy, double dz) {
             return dx * dy + dy * dz + dz * dx;
         }
     }
