@@ -26,8 +26,6 @@ public final class Bvh extends Intersectable {
     private static final double TRAVERSAL_COST = 1.0;
     /** Nodes with more primitives than this are binned along their widest axis only. */
     private static final int FULL_SEARCH_LIMIT = 1 << 16;
-    /** Nodes of at most this many primitives are searched without bins (the same split, found faster). */
-    private static final int FEW = 24;
     /**
      * Subtrees over more primitives than this are built as parallel tasks; smaller ones are not
      * worth a task (about 0.1 ms of work).
@@ -88,7 +86,7 @@ public final class Bvh extends Intersectable {
         Intersectable[] now = collected.toArray(new Intersectable[0]);
         Bvh kept = geometries.keptTree();
         if (kept != null && kept.indexes(now)) return kept;
-        Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, FEW);
+        Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, true);
         for (Intersectable leaf : now)
             if (!(leaf instanceof Geometry g && g.isLibraryShape())) return tree;
         geometries.keepTree(tree);
@@ -124,22 +122,22 @@ public final class Bvh extends Intersectable {
 
     /** As {@link #build(Geometries, int)}, forking subtrees over more than {@code forkAbove} primitives. */
     static Bvh build(Geometries geometries, int parallelism, int forkAbove) {
-        return build(geometries, parallelism, forkAbove, FEW);
+        return build(geometries, parallelism, forkAbove, true);
     }
 
     /**
-     * As {@link #build(Geometries, int, int)}, searching nodes of at most {@code few} primitives
-     * without bins (0: every node with bins; for the tests that both searches agree).
+     * As {@link #build(Geometries, int, int)}, searching nodes of two primitives without bins
+     * when {@code pairs} (else every node with bins; for the tests that both searches agree).
      */
-    static Bvh build(Geometries geometries, int parallelism, int forkAbove, int few) {
+    static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs) {
         if (parallelism < 1) throw new IllegalArgumentException("parallelism must be at least 1, got " + parallelism);
         List<Intersectable> collected = new ArrayList<>();
         geometries.collectLeaves(collected);
-        return new Bvh(collected.toArray(new Intersectable[0]), parallelism, Math.max(1, forkAbove), Math.min(few, FEW));
+        return new Bvh(collected.toArray(new Intersectable[0]), parallelism, Math.max(1, forkAbove), pairs);
     }
 
     /** Indexes {@code all}, a scene's leaves (this tree keeps the array). */
-    private Bvh(Intersectable[] all, int parallelism, int forkAbove, int few) {
+    private Bvh(Intersectable[] all, int parallelism, int forkAbove, boolean pairs) {
         leaves = all;
         int count = all.length;
         // Threads start on the first task, so an idle pool costs nothing.
@@ -179,7 +177,7 @@ public final class Bvh extends Intersectable {
             unbounded = free.toArray(new Intersectable[0]);
 
             int total = first[count];
-            Builder b = new Builder(total, pool, forkAbove, few);
+            Builder b = new Builder(total, pool, forkAbove, pairs);
             // By slot rather than by leaf, so that the triangles of one big mesh are shared out too.
             Ranges.run(pool, total, grain, (from, to) -> {
                 int l = leafOfSlot(first, from);
@@ -505,8 +503,8 @@ public final class Bvh extends Intersectable {
         /** The pool subtrees are built in, or null to build on the calling thread. */
         private final ForkJoinPool pool;
         private final int forkAbove;
-        /** Nodes of at most this many primitives are searched without bins ({@link Bvh#FEW} but in tests). */
-        private final int few;
+        /** Whether nodes of two primitives are searched without bins (but in tests). */
+        private final boolean pairs;
         // Per slot, in slot order: the primitive id, its padded bounds (6) and its centroid (3).
         // Once built, order lists the primitives in leaf order.
         private int[] order;
@@ -530,8 +528,8 @@ public final class Bvh extends Intersectable {
         int nodes;
         int maxDepth;
 
-        Builder(int total, ForkJoinPool pool, int forkAbove, int few) {
-            this.few = few;
+        Builder(int total, ForkJoinPool pool, int forkAbove, boolean pairs) {
+            this.pairs = pairs;
             this.total = total;
             this.pool = pool;
             this.forkAbove = forkAbove;
@@ -759,9 +757,9 @@ public final class Bvh extends Intersectable {
             boolean[] searched = binner.searched;
             for (int a = 0; a < 3; ++a)
                 searched[a] = n > 1 && extentOf[a] > 0 && (n <= FULL_SEARCH_LIMIT || a == widest);
-            // Both searches find the same split (see Binner.searchFew), the direct one without
-            // the fixed cost of 3 × BINS bins, which dominates the many small nodes near the leaves.
-            if (n <= few) binner.searchFew(bounds, centroid, start, end, lowOf, extentOf, parentArea);
+            // Both searches find the same split (see Binner.searchPair), the direct one without
+            // binning, for the commonest node of all.
+            if (n == 2 && pairs) binner.searchPair(bounds, centroid, start, lowOf, extentOf, parentArea);
             else binner.searchBinned(bounds, centroid, start, end, lowOf, extentOf, parentArea);
             double bestCost = binner.bestCost;
             int bestBin = binner.bestBin, bestAxis = binner.bestAxis;
@@ -889,11 +887,8 @@ public final class Bvh extends Intersectable {
             final int[] binCount = new int[3 * BINS];
             final double[] binBox = new double[3 * BINS * 6];
             final double[] rightArea = new double[BINS];
-            final double[] acc = new double[6];
-            // searchFew's per-axis scratch: the slots sorted by bin number, and suffix areas
-            final int[] fewBin = new int[FEW];
-            final int[] fewSlot = new int[FEW];
-            final double[] fewSuffixArea = new double[FEW];
+            /** Per axis, the bins {@link #bin} filled, as bits; the search empties them again. */
+            final int[] occupied = new int[3];
             /** The cheapest split a search found: its cost, last left bin (−1 for none) and axis. */
             double bestCost;
             int bestBin;
@@ -918,108 +913,65 @@ public final class Bvh extends Intersectable {
                 bestAxis = -1;
                 for (int a = 0; a < 3; ++a) {
                     if (!searched[a]) continue;
-                    int base = a * BINS;
-                    // Sweep from the right for the areas of every right part, then from the left. An
-                    // empty bin changes neither part's box nor count, so it is skipped: the areas and
+                    int base = a * BINS, mask = occupied[a];
+                    occupied[a] = 0;
+                    // Sweep the occupied bins from the right for the areas of every right part, then
+                    // from the left. An empty bin changes neither part's box nor count: the areas and
                     // costs are the numbers a sweep over every bin computes, and an empty bin's split
-                    // costs exactly what its left neighbour's does, which cannot beat it.
-                    resetBox(acc, 0);
-                    double area = halfArea(acc, 0);
-                    for (int k = BINS - 1; k > 0; --k) {
-                        if (binCount[base + k] > 0) {
-                            growBox(acc, 0, binBox, base + k);
-                            area = halfArea(acc, 0);
-                        }
-                        rightArea[k] = area;
-                    }
-                    resetBox(acc, 0);
-                    int leftCount = 0;
-                    for (int k = 0; k < BINS - 1; ++k) {
-                        if (binCount[base + k] == 0) continue;
-                        growBox(acc, 0, binBox, base + k);
-                        leftCount += binCount[base + k];
-                        int rightCount = n - leftCount;
-                        if (rightCount == 0) continue;
-                        consider(sahCost(halfArea(acc, 0), leftCount, rightArea[k + 1], rightCount, parentArea), k, a);
-                    }
-                    clear(a);
-                }
-            }
-
-            /**
-             * The same search as {@link #searchBinned} for a node of at most {@link #FEW} slots,
-             * without bins: per axis the slots are sorted by bin number, and each bin number in
-             * turn is tried as the last of the left part. Every candidate's parts are the same
-             * sets of primitives as the binned sweep's, their boxes are unions by min and max
-             * (exact, so in any order the same), and their costs come from the same
-             * {@link #sahCost}; candidates are tried in the same order (axis, then bin, a
-             * cheaper one replacing the best only when strictly cheaper), so the split chosen is
-             * the same, bit for bit.
-             */
-            void searchFew(double[] bounds, double[] centroid, int start, int end, double[] lowOf, double[] extentOf,
-                           double parentArea) {
-                int n = end - start;
-                bestCost = Double.POSITIVE_INFINITY;
-                bestBin = -1;
-                bestAxis = -1;
-                if (n == 2) { // the most common node: see searchPair
-                    searchPair(bounds, centroid, start, lowOf, extentOf, parentArea);
-                    return;
-                }
-                int[] key = fewBin, slot = fewSlot;
-                double[] suffixArea = fewSuffixArea;
-                for (int a = 0; a < 3; ++a) {
-                    if (!searched[a]) continue;
-                    double lo = lowOf[a], scale = BINS / extentOf[a];
-                    for (int i = 0; i < n; ++i) { // insertion sort by bin number
-                        int k = Bvh.Builder.bin(centroid[(start + i) * 3 + a], lo, scale), j = i;
-                        for (; j > 0 && key[j - 1] > k; --j) {
-                            key[j] = key[j - 1];
-                            slot[j] = slot[j - 1];
-                        }
-                        key[j] = k;
-                        slot[j] = start + i;
-                    }
-                    // suffixArea[j]: the half area of the union of the sorted slots j..n-1, j ≥ 1. The
-                    // unions are grown in locals, not in an array: no store waits for the last one.
+                    // costs exactly what its left neighbour's does, which cannot beat it. (Small nodes,
+                    // most of a tree, occupy few bins.) The unions are grown in locals.
                     double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
                     double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-                    for (int j = n - 1; j > 0; --j) {
-                        int o = slot[j] * 6;
-                        x0 = Math.min(bounds[o], x0);
-                        y0 = Math.min(bounds[o + 1], y0);
-                        z0 = Math.min(bounds[o + 2], z0);
-                        x1 = Math.max(bounds[o + 3], x1);
-                        y1 = Math.max(bounds[o + 4], y1);
-                        z1 = Math.max(bounds[o + 5], z1);
-                        suffixArea[j] = halfArea(x1 - x0, y1 - y0, z1 - z0);
+                    for (int m = mask; m != 0; ) {
+                        int k = 31 - Integer.numberOfLeadingZeros(m);
+                        m ^= 1 << k;
+                        int o = (base + k) * 6;
+                        x0 = Math.min(binBox[o], x0);
+                        y0 = Math.min(binBox[o + 1], y0);
+                        z0 = Math.min(binBox[o + 2], z0);
+                        x1 = Math.max(binBox[o + 3], x1);
+                        y1 = Math.max(binBox[o + 4], y1);
+                        z1 = Math.max(binBox[o + 5], z1);
+                        rightArea[k] = halfArea(x1 - x0, y1 - y0, z1 - z0); // of bins k and above
                     }
                     x0 = y0 = z0 = Double.POSITIVE_INFINITY;
                     x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
-                    for (int j = 0; ; ) {
-                        int k = key[j];
-                        do {
-                            int o = slot[j] * 6;
-                            x0 = Math.min(bounds[o], x0);
-                            y0 = Math.min(bounds[o + 1], y0);
-                            z0 = Math.min(bounds[o + 2], z0);
-                            x1 = Math.max(bounds[o + 3], x1);
-                            y1 = Math.max(bounds[o + 4], y1);
-                            z1 = Math.max(bounds[o + 5], z1);
-                        } while (++j < n && key[j] == k);
-                        if (j == n) break;
-                        consider(sahCost(halfArea(x1 - x0, y1 - y0, z1 - z0), j, suffixArea[j], n - j, parentArea), k, a);
+                    int leftCount = 0;
+                    for (int m = mask; ; ) {
+                        int k = Integer.numberOfTrailingZeros(m);
+                        m &= m - 1;
+                        if (m == 0) break; // the last occupied bin leaves no right part
+                        int o = (base + k) * 6;
+                        x0 = Math.min(binBox[o], x0);
+                        y0 = Math.min(binBox[o + 1], y0);
+                        z0 = Math.min(binBox[o + 2], z0);
+                        x1 = Math.max(binBox[o + 3], x1);
+                        y1 = Math.max(binBox[o + 4], y1);
+                        z1 = Math.max(binBox[o + 5], z1);
+                        leftCount += binCount[base + k];
+                        consider(sahCost(halfArea(x1 - x0, y1 - y0, z1 - z0), leftCount,
+                                rightArea[Integer.numberOfTrailingZeros(m)], n - leftCount, parentArea), k, a);
+                    }
+                    for (int m = mask; m != 0; m &= m - 1) {
+                        int k = base + Integer.numberOfTrailingZeros(m);
+                        binCount[k] = 0;
+                        resetBox(binBox, k);
                     }
                 }
             }
 
             /**
-             * {@link #searchFew} for two primitives: every axis on which their bins differ offers
-             * the same split, one primitive on each side, at the same cost (a sum of two terms
-             * in either order is the same double), so the first such axis is the one chosen.
+             * {@link #searchBinned} for the two primitives at {@code start}, without bins: every axis
+             * on which their bins differ offers the same split, one primitive on each side, at the
+             * same cost (a sum of two terms in either order is the same double), so the first such
+             * axis is the one chosen, as the binned search (which replaces its best only by a
+             * strictly cheaper split) chooses it.
              */
-            private void searchPair(double[] bounds, double[] centroid, int start, double[] lowOf, double[] extentOf,
-                                    double parentArea) {
+            void searchPair(double[] bounds, double[] centroid, int start, double[] lowOf, double[] extentOf,
+                            double parentArea) {
+                bestCost = Double.POSITIVE_INFINITY;
+                bestBin = -1;
+                bestAxis = -1;
                 for (int a = 0; a < 3; ++a) {
                     if (!searched[a]) continue;
                     double scale = BINS / extentOf[a];
@@ -1066,27 +1018,25 @@ public final class Bvh extends Intersectable {
                 boolean sx = searched[0], sy = searched[1], sz = searched[2];
                 double lx = lowOf[0], ly = lowOf[1], lz = lowOf[2];
                 double kx = BINS / extentOf[0], ky = BINS / extentOf[1], kz = BINS / extentOf[2];
+                int mx = 0, my = 0, mz = 0;
                 for (int i = start; i < end; ++i) {
                     int c = i * 3;
-                    if (sx) add(Bvh.Builder.bin(centroid[c], lx, kx), bounds, i);
-                    if (sy) add(BINS + Bvh.Builder.bin(centroid[c + 1], ly, ky), bounds, i);
-                    if (sz) add(2 * BINS + Bvh.Builder.bin(centroid[c + 2], lz, kz), bounds, i);
+                    if (sx) mx |= add(Bvh.Builder.bin(centroid[c], lx, kx), 0, bounds, i);
+                    if (sy) my |= add(Bvh.Builder.bin(centroid[c + 1], ly, ky), BINS, bounds, i);
+                    if (sz) mz |= add(Bvh.Builder.bin(centroid[c + 2], lz, kz), 2 * BINS, bounds, i);
                 }
+                occupied[0] = mx;
+                occupied[1] = my;
+                occupied[2] = mz;
             }
 
-            private void add(int k, double[] bounds, int i) {
-                binCount[k]++;
-                growBox(binBox, k, bounds, i);
+            /** Adds slot {@code i} to bin {@code k} of the axis whose bins start at {@code base}; @return k's bit */
+            private int add(int k, int base, double[] bounds, int i) {
+                binCount[base + k]++;
+                growBox(binBox, base + k, bounds, i);
+                return 1 << k;
             }
 
-            /** Empties axis {@code a}'s bins again (only the used ones need it). */
-            void clear(int a) {
-                for (int k = a * BINS, end = k + BINS; k < end; ++k) {
-                    if (binCount[k] == 0) continue;
-                    binCount[k] = 0;
-                    resetBox(binBox, k);
-                }
-            }
         }
 
         private static int bin(double c, double lo, double scale) {

@@ -301,9 +301,9 @@ class BvhTest {
 
         @ParameterizedTest(name = "{0}")
         @MethodSource("geometries.BvhTest#searchScenes")
-        @DisplayName("small nodes searched without bins get the split the binned search gives them")
-        void fewSearchAgreesWithBins(Scene scene) {
-            Bvh binned = Bvh.build(scene.geometries(), 1, 1, 0);
+        @DisplayName("pairs searched without bins get the split the binned search gives them")
+        void pairSearchAgreesWithBins(Scene scene) {
+            Bvh binned = Bvh.build(scene.geometries(), 1, 1, false);
             assertThat(Bvh.build(scene.geometries(), 1).sameTreeAs(binned)).as("1 thread").isTrue();
             assertThat(Bvh.build(scene.geometries(), 2, 1).sameTreeAs(binned)).as("2 threads, a task per node").isTrue();
         }
