@@ -179,6 +179,10 @@ public final class Bvh extends Intersectable {
             int total = first[count];
             Builder b = new Builder(total, pool, forkAbove, pairs);
             // By slot rather than by leaf, so that the triangles of one big mesh are shared out too.
+            // Each chunk also leaves the bounds of its slots (Builder.BOUNDS doubles) in
+            // chunkBounds; their union is the root's, found without a pass of its own.
+            double[] chunkBounds = new double[(Math.max(total, 1) + grain - 1) / grain * BOUNDS];
+            for (int at = 0; at < chunkBounds.length; at += BOUNDS) Builder.resetBounds(chunkBounds, at); // one chunk may run them all
             Ranges.run(pool, total, grain, (from, to) -> {
                 int l = leafOfSlot(first, from);
                 for (int s = from; s < to; ++s) {
@@ -191,8 +195,11 @@ public final class Bvh extends Intersectable {
                         b.addPrimitive(s, all[l], s - first[l], box, 0);
                     }
                 }
+                b.unite(chunkBounds, from / grain * BOUNDS, from, to);
             });
-            b.build();
+            double[] rootBounds = new double[BOUNDS];
+            b.unite(rootBounds, chunkBounds);
+            b.build(rootBounds);
             // The leaves' primitives in leaf order, and each slot's place in it. A gather through
             // the final permutation, in leaf order: in one tight loop the memory system overlaps
             // its random reads (done per leaf, as the leaves were made, they cost 10 % of a build).
@@ -563,7 +570,27 @@ public final class Bvh extends Intersectable {
             centroid[i * 3 + 2] = (minZ + maxZ) / 2;
         }
 
-        void build() {
+        /** Sets the bounds at {@code at} of {@code out} to those of slots [from, to). */
+        void unite(double[] out, int at, int from, int to) {
+            resetBounds(out, at);
+            for (int i = from; i < to; ++i) growBounds(out, at, bounds, centroid, i);
+        }
+
+        /** Sets {@code out} to the union of the bounds in {@code parts}, {@link #BOUNDS} doubles each. */
+        void unite(double[] out, double[] parts) {
+            resetBounds(out, 0);
+            for (int at = 0; at < parts.length; at += BOUNDS) {
+                for (int a = 0; a < 3; ++a) {
+                    out[a] = Math.min(parts[at + a], out[a]);
+                    out[3 + a] = Math.max(parts[at + 3 + a], out[3 + a]);
+                    out[6 + a] = Math.min(parts[at + 6 + a], out[6 + a]);
+                    out[9 + a] = Math.max(parts[at + 9 + a], out[9 + a]);
+                }
+            }
+        }
+
+        /** Builds the tree over all slots, whose bounds are {@code rootBounds} (as {@link #unite} gives them). */
+        void build(double[] rootBounds) {
             int n = total;
             scratchOrder = new int[n];
             scratchBounds = new double[n * 6];
@@ -574,9 +601,6 @@ public final class Bvh extends Intersectable {
             slotFirstOrLeft = new int[capacity];
             slotSize = new int[capacity];
             if (n > 0) {
-                double[] rootBounds = new double[BOUNDS];
-                resetBounds(rootBounds, 0);
-                for (int i = 0; i < n; ++i) growBounds(rootBounds, 0, bounds, centroid, i);
                 rootBox = new BoundingBox(rootBounds[0], rootBounds[1], rootBounds[2], rootBounds[3], rootBounds[4], rootBounds[5]);
                 Subtree root = new Subtree(0, n, 0, 0, rootBounds);
                 if (pool != null && n > forkAbove) pool.invoke(root);
@@ -750,8 +774,13 @@ public final class Bvh extends Intersectable {
             // the widest one (as pbrt does), a third of the work for trees of nearly the same
             // quality where it matters for build time. Small and medium nodes get the full search:
             // it makes measurably better trees (fewer box tests per ray).
-            double[] extentOf = { cx1 - cx0, cy1 - cy0, cz1 - cz0 };
-            double[] lowOf = { cx0, cy0, cz0 };
+            double[] extentOf = binner.extentOf, lowOf = binner.lowOf;
+            extentOf[0] = cx1 - cx0;
+            extentOf[1] = cy1 - cy0;
+            extentOf[2] = cz1 - cz0;
+            lowOf[0] = cx0;
+            lowOf[1] = cy0;
+            lowOf[2] = cz0;
             int widest = extentOf[0] >= extentOf[1] && extentOf[0] >= extentOf[2] ? 0 : extentOf[1] >= extentOf[2] ? 1 : 2;
             double parentArea = (bx1 - bx0) * (by1 - by0) + (by1 - by0) * (bz1 - bz0) + (bz1 - bz0) * (bx1 - bx0);
             boolean[] searched = binner.searched;
@@ -884,6 +913,9 @@ public final class Bvh extends Intersectable {
         /** One task's bins: per searched axis, BINS counts and boxes, filled in one pass over a range. */
         private static final class Binner {
             final boolean[] searched = new boolean[3];
+            /** The node being split: per axis, its centroids' lowest value and their extent. */
+            final double[] lowOf = new double[3];
+            final double[] extentOf = new double[3];
             final int[] binCount = new int[3 * BINS];
             final double[] binBox = new double[3 * BINS * 6];
             final double[] rightArea = new double[BINS];
