@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
 import geometries.Hits.Visit;
@@ -269,10 +270,33 @@ class BvhTest {
         void sameTree(Scene scene) {
             Bvh sequential = Bvh.build(scene.geometries(), 1);
             assertThat(sequential.nodeCount()).isGreaterThan(1);
+            assertThat(Bvh.build(scene.geometries(), 1, 1).sameTreeAs(sequential)).as("1 thread, chunks of one primitive").isTrue();
             assertThat(Bvh.build(scene.geometries(), 2, 1).sameTreeAs(sequential)).as("2 threads, a task per node").isTrue();
             assertThat(Bvh.build(scene.geometries(), 2, 16).sameTreeAs(sequential)).as("2 threads, tasks above 16").isTrue();
             assertThat(Bvh.build(scene.geometries(), 3, 1).sameTreeAs(sequential)).as("3 threads").isTrue();
             assertThat(Bvh.build(scene.geometries()).sameTreeAs(sequential)).as("the default").isTrue();
+        }
+
+        @ParameterizedTest(name = "{0} thread(s), tasks above {1}")
+        @CsvSource({"1, 1", "1, 4096", "2, 1", "2, 16", "3, 1"})
+        @DisplayName("the tree's box is exactly the union of its shapes' padded boxes, however the build is cut up")
+        void rootBoxIsTheUnion(int threads, int forkAbove) {
+            // Far from the origin on every axis, so that any box left empty or zero in the
+            // build's pieces would show.
+            Geometries shapes = new Geometries();
+            Random rnd = new Random(77);
+            BoundingBox expected = null;
+            for (int i = 0; i < 300; ++i) {
+                Sphere s = new Sphere(new Point(100 + 50 * rnd.nextDouble(), -300 + 20 * rnd.nextDouble(), 40 + rnd.nextDouble()),
+                        0.1 + rnd.nextDouble());
+                shapes.add(s);
+                BoundingBox padded = s.getBoundingBox().padded();
+                expected = expected == null ? padded : expected.union(padded);
+            }
+            BoundingBox b = Bvh.build(shapes, threads, forkAbove).getBoundingBox();
+            assertThat(new double[] { b.getMinX(), b.getMinY(), b.getMinZ(), b.getMaxX(), b.getMaxY(), b.getMaxZ() })
+                    .containsExactly(expected.getMinX(), expected.getMinY(), expected.getMinZ(),
+                            expected.getMaxX(), expected.getMaxY(), expected.getMaxZ());
         }
 
         @Test
