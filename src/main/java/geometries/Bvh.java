@@ -179,10 +179,11 @@ public final class Bvh extends Intersectable {
             int total = first[count];
             Builder b = new Builder(total, pool, forkAbove, pairs);
             // By slot rather than by leaf, so that the triangles of one big mesh are shared out too.
-            // Each chunk also leaves the bounds of its slots (Builder.BOUNDS doubles) in
-            // chunkBounds; their union is the root's, found without a pass of its own.
+            // Each chunk also leaves the bounds of its slots (BOUNDS doubles) in chunkBounds; their
+            // union is the root's, found without a pass of its own. All start empty: without a
+            // pool one chunk runs the whole range, and the others' places must not count.
             double[] chunkBounds = new double[(Math.max(total, 1) + grain - 1) / grain * BOUNDS];
-            for (int at = 0; at < chunkBounds.length; at += BOUNDS) Builder.resetBounds(chunkBounds, at); // one chunk may run them all
+            for (int at = 0; at < chunkBounds.length; at += BOUNDS) Builder.resetBounds(chunkBounds, at);
             Ranges.run(pool, total, grain, (from, to) -> {
                 int l = leafOfSlot(first, from);
                 for (int s = from; s < to; ++s) {
