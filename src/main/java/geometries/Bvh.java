@@ -359,59 +359,75 @@ public final class Bvh extends Intersectable {
         double ox = hit.ox, oy = hit.oy, oz = hit.oz;
         double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
         if (!(entry(0, ox, oy, oz, ix, iy, iz, hit.t) < hit.t)) return found;
-        if (hit.stack.length < depth) {
-            hit.stack = new int[depth];
-            hit.stackT = new double[depth];
+        // A walk already in progress on this record (this one's caller, through a user's shape
+        // that walks a tree of its own with the record) owns the record's stack: this one then
+        // takes arrays of its own. Rare (only user shapes do it), so the common walk stays as it was.
+        boolean nested = hit.walking;
+        int[] stack;
+        double[] stackT;
+        if (nested) {
+            stack = new int[depth];
+            stackT = new double[depth];
+        } else {
+            if (hit.stack.length < depth) {
+                hit.stack = new int[depth];
+                hit.stackT = new double[depth];
+            }
+            stack = hit.stack;
+            stackT = hit.stackT;
+            hit.walking = true;
         }
-        int[] stack = hit.stack;
-        double[] stackT = hit.stackT;
-        float[] nd = node;
-        int top = 0;
-        int n = 0;
-        while (true) {
-            int o = BASE + n * NODE;
-            int count = Float.floatToRawIntBits(nd[o + 7]);
-            if (count > 0) {
-                for (int k = Float.floatToRawIntBits(nd[o + 6]), end = k + count; k < end; ++k) {
-                    byte kd = kind[k];
-                    if (kd == OWN) {
-                        found |= owner[k].closestHit(prim[k], hit);
+        try {
+            float[] nd = node;
+            int top = 0;
+            int n = 0;
+            while (true) {
+                int o = BASE + n * NODE;
+                int count = Float.floatToRawIntBits(nd[o + 7]);
+                if (count > 0) {
+                    for (int k = Float.floatToRawIntBits(nd[o + 6]), end = k + count; k < end; ++k) {
+                        byte kd = kind[k];
+                        if (kd == OWN) {
+                            found |= owner[k].closestHit(prim[k], hit);
+                            continue;
+                        }
+                        int at = k * PACKED;
+                        double t = kd == SPHERE ? Sphere.distance(hit, packed[at], packed[at + 1], packed[at + 2], packed[at + 3])
+                                : Triangle.intersect(hit, packed, at);
+                        if (inRange(t, hit.t)) {
+                            hit.set(t, (Geometry) owner[k], prim[k]);
+                            found = true;
+                        }
+                    }
+                } else {
+                    int left = n + 1, right = Float.floatToRawIntBits(nd[o + 6]);
+                    double tMax = hit.t;
+                    double tl = entry(left, ox, oy, oz, ix, iy, iz, tMax);
+                    double tr = entry(right, ox, oy, oz, ix, iy, iz, tMax);
+                    // One branch where there were four: a missed child's entry is +∞ (or tMax, never
+                    // below it), so "tl <= tr" picks the child to visit whichever were hit, and the
+                    // other is written to the stack always but kept (top moves) only when it was hit.
+                    // Which children are hit, and in which order, is a coin toss per node in a big
+                    // scene; selects cost less than the mispredictions (3–4 % at 2×10⁶ primitives).
+                    if (tl < tMax || tr < tMax) {
+                        boolean leftFirst = tl <= tr;
+                        int far = leftFirst ? right : left;
+                        double tf = leftFirst ? tr : tl;
+                        n = leftFirst ? left : right;
+                        stack[top] = far;
+                        stackT[top] = tf;
+                        top += tf < tMax ? 1 : 0;
                         continue;
                     }
-                    int at = k * PACKED;
-                    double t = kd == SPHERE ? Sphere.distance(hit, packed[at], packed[at + 1], packed[at + 2], packed[at + 3])
-                            : Triangle.intersect(hit, packed, at);
-                    if (inRange(t, hit.t)) {
-                        hit.set(t, (Geometry) owner[k], prim[k]);
-                        found = true;
-                    }
                 }
-            } else {
-                int left = n + 1, right = Float.floatToRawIntBits(nd[o + 6]);
-                double tMax = hit.t;
-                double tl = entry(left, ox, oy, oz, ix, iy, iz, tMax);
-                double tr = entry(right, ox, oy, oz, ix, iy, iz, tMax);
-                // One branch where there were four: a missed child's entry is +∞ (or tMax, never
-                // below it), so "tl <= tr" picks the child to visit whichever were hit, and the
-                // other is written to the stack always but kept (top moves) only when it was hit.
-                // Which children are hit, and in which order, is a coin toss per node in a big
-                // scene; selects cost less than the mispredictions (3–4 % at 2×10⁶ primitives).
-                if (tl < tMax || tr < tMax) {
-                    boolean leftFirst = tl <= tr;
-                    int far = leftFirst ? right : left;
-                    double tf = leftFirst ? tr : tl;
-                    n = leftFirst ? left : right;
-                    stack[top] = far;
-                    stackT[top] = tf;
-                    top += tf < tMax ? 1 : 0;
-                    continue;
-                }
+                do {
+                    if (top == 0) return found;
+                    --top;
+                } while (!(stackT[top] < hit.t));
+                n = stack[top];
             }
-            do {
-                if (top == 0) return found;
-                --top;
-            } while (!(stackT[top] < hit.t));
-            n = stack[top];
+        } finally {
+            if (!nested) hit.walking = false;
         }
     }
 

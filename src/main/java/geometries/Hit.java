@@ -46,6 +46,13 @@ public final class Hit {
     int[] stack = NO_STACK;
     /** The entry distance of each node on {@link #stack}, to skip it when a nearer hit was found. */
     double[] stackT = NO_STACK_T;
+    /**
+     * Whether a BVH walk is in progress on this record: a shape met by one walk may answer by
+     * walking a tree of its own with the same record (a user's group that overrides
+     * {@code closestHit(Hit)}), and that inner walk must not overwrite the outer one's
+     * {@link #stack}.
+     */
+    boolean walking;
 
     /**
      * Clears the record and sets the query's upper bound on the distance; the ray stays.

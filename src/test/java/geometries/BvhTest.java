@@ -488,6 +488,43 @@ class BvhTest {
         }
 
         @Test
+        @DisplayName("a user's shape that walks a tree of its own with the outer walk's record")
+        void userShapeWalkingItsOwnTree() {
+            Random rnd = new Random(506);
+            Geometries scene = new Geometries();
+            Geometries flat = new Geometries();
+            for (int c = 0; c < 8; ++c) {
+                Geometries parts = new Geometries();
+                Point centre = new Point(rnd.nextDouble(-8, 8), rnd.nextDouble(-8, 8), rnd.nextDouble(-8, 8));
+                for (Geometry g : RandomScenes.boundedShapes(rnd, 30, centre, 3, 1.5)) {
+                    parts.add(g);
+                    flat.add(g);
+                }
+                scene.add(new Cluster(Bvh.build(parts)));
+            }
+            for (Geometry g : RandomScenes.boundedShapes(rnd, 60, Point.ZERO, 10, 3)) {
+                scene.add(g);
+                flat.add(g);
+            }
+            Bvh outer = Bvh.build(scene);
+            assertThat(outer.primitiveTotal()).as("each cluster is one primitive of the outer tree").isEqualTo(68);
+            // The inner walks run in the middle of the outer one, on the same Hit record.
+            assertSameClosestHits(outer, flat, rays);
+        }
+
+        @Test
+        @DisplayName("a shape that throws in the middle of nested walks leaves the record usable")
+        void throwingShapeInsideNestedWalks() {
+            Geometries parts = new Geometries(new Sphere(new Point(0, 0, -20), 1), new Thrower(new Point(0, 0, 0), 1));
+            Bvh outer = Bvh.build(new Geometries(new Cluster(Bvh.build(parts)), new Sphere(new Point(5, 0, 0), 1)));
+            Hit hit = new Hit().setRay(0, 0, 10, 0, 0, -1).reset(Double.POSITIVE_INFINITY);
+            assertThatThrownBy(() -> outer.closestHit(hit)).isInstanceOf(IllegalStateException.class);
+            assertThat(hit.walking).as("no walk is in progress on the record any more").isFalse();
+            assertThat(outer.closestHit(hit.setRay(5, 0, 10, 0, 0, -1).reset(Double.POSITIVE_INFINITY))).isTrue();
+            assertThat(hit.getT()).isEqualTo(9);
+        }
+
+        @Test
         @DisplayName("axis-aligned shapes hit by axis-parallel rays (signed zero directions, flat boxes)")
         void axisAlignedRays() {
             Geometries flat = new Geometries();
@@ -595,6 +632,55 @@ class BvhTest {
             BoundingBox exact = new Sphere(new Point(0.1, 0.2, 0.3), 0.7).getBoundingBox().padded();
             assertThat(new double[] { b.getMinX(), b.getMinY(), b.getMinZ(), b.getMaxX(), b.getMaxY(), b.getMaxZ() })
                     .containsExactly(exact.getMinX(), exact.getMinY(), exact.getMinZ(), exact.getMaxX(), exact.getMaxY(), exact.getMaxZ());
+        }
+    }
+
+    /**
+     * A user's group of shapes with a tree of its own, answering the outer walk's closest-hit
+     * query by walking that tree with the same record.
+     */
+    private static final class Cluster extends Geometry {
+        private final Bvh inner;
+
+        Cluster(Bvh inner) {
+            this.inner = inner;
+        }
+
+        @Override
+        public boolean closestHit(Hit hit) {
+            return inner.closestHit(hit);
+        }
+
+        @Override
+        public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+            return inner.visitHits(query, maxDistance, visitor);
+        }
+
+        @Override
+        public BoundingBox getBoundingBox() {
+            return inner.getBoundingBox();
+        }
+
+        @Override
+        public Vector getNormal(Point point) {
+            throw new UnsupportedOperationException("a cluster's hits report its parts");
+        }
+
+        @Override
+        protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+            return inner.findGeoIntersections(ray, maxDistance);
+        }
+    }
+
+    /** A user's sphere whose closest-hit query fails. */
+    private static final class Thrower extends Sphere {
+        Thrower(Point center, double radius) {
+            super(center, radius);
+        }
+
+        @Override
+        public boolean closestHit(Hit hit) {
+            throw new IllegalStateException("a user's shape failed");
         }
     }
 
