@@ -11,6 +11,7 @@ import java.util.stream.Stream;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -488,6 +489,8 @@ class BvhTest {
         }
 
         @Test
+        // The walk this guards against does not fail, it loops forever: the bound makes it a failure.
+        @Timeout(value = 60, threadMode = Timeout.ThreadMode.SEPARATE_THREAD)
         @DisplayName("a user's shape that walks a tree of its own with the outer walk's record")
         void userShapeWalkingItsOwnTree() {
             Random rnd = new Random(506);
