@@ -487,8 +487,9 @@ public final class Bvh extends Intersectable {
 
     /**
      * A tree inside a scene that is built into a tree in turn hands over its leaves, not itself:
-     * the outer tree then indexes every primitive directly. (Walked as a leaf, this tree would
-     * also reuse the {@link Hit#stack} the outer walk is still using.)
+     * the outer tree then indexes every primitive directly, with no second walk per ray that
+     * reaches it (a walk nested in another would also take a stack of its own, see
+     * {@link #closestHit(Hit)}).
      */
     @Override
     void collectLeaves(List<Intersectable> out) {
