@@ -111,9 +111,22 @@ public class ImageWriter {
         pixels[index(x, y)] = color.toRgb();
     }
 
-    /** {@link #writePixel(int, int, Color)} of a colour kept as three doubles (the render loop's). */
-    void writePixel(int x, int y, double r, double g, double b) {
-        pixels[index(x, y)] = Color.toRgb(r, g, b);
+    /**
+     * Copies a rectangle of packed 0xRRGGBB pixels into the image: {@code rgb} holds its rows one
+     * after the other, {@code width} pixels each (the render loop's per-worker tile buffer). Two
+     * workers on neighbouring tiles that stored each pixel here as it was done would keep taking
+     * the cache line on their common edge from each other (a tile row of 16 pixels is 64 bytes,
+     * but rows seldom start on a line boundary); a bulk copy per finished tile row does not.
+     *
+     * @throws IndexOutOfBoundsException naming the rectangle when it does not lie in the image or
+     *                                   {@code rgb} is too short for it
+     */
+    void writeTile(int x, int y, int width, int height, int[] rgb) {
+        if (x < 0 || y < 0 || width <= 0 || height <= 0 || x > nX - width || y > nY - height
+                || rgb.length < (long) width * height)
+            throw new IndexOutOfBoundsException("tile of " + width + "x" + height + " pixels at (" + x + "," + y
+                    + ") with " + rgb.length + " values does not fit the " + nX + "x" + nY + " image");
+        for (int row = 0; row < height; ++row) System.arraycopy(rgb, row * width, pixels, (y + row) * nX + x, width);
     }
 
     /**

@@ -73,6 +73,37 @@ class ImageWriterTest {
             assertThat(image.getRgb(0, 1)).isEqualTo(0xFF0080);
             assertThat(image.getRgb(1, 0)).isZero();
         }
+
+        @ParameterizedTest(name = "{2}x{3} at ({0},{1})")
+        @CsvSource({"0, 0, 7, 5", "2, 1, 3, 2", "6, 4, 1, 1", "4, 0, 3, 5", "0, 3, 7, 2"})
+        @DisplayName("a tile lands row by row in its rectangle, and the pixels around it stay as they were")
+        void tile(int x, int y, int width, int height) {
+            ImageWriter image = new ImageWriter("tile", 7, 5);
+            for (int j = 0; j < 5; ++j)
+                for (int i = 0; i < 7; ++i) image.writePixel(i, j, new Color(1, 1, 1));
+            int[] rgb = new int[width * height + 3]; // a buffer may be longer than its tile
+            for (int k = 0; k < rgb.length; ++k) rgb[k] = 0x100000 + k;
+            image.writeTile(x, y, width, height, rgb);
+            for (int j = 0; j < 5; ++j)
+                for (int i = 0; i < 7; ++i) {
+                    boolean inside = i >= x && i < x + width && j >= y && j < y + height;
+                    assertThat(image.getRgb(i, j)).as("pixel (%d,%d)", i, j)
+                            .isEqualTo(inside ? 0x100000 + (j - y) * width + (i - x) : 0x010101);
+                }
+        }
+
+        @ParameterizedTest(name = "{2}x{3} at ({0},{1}) from {4} values")
+        @CsvSource({"-1, 0, 2, 2, 4", "0, -1, 2, 2, 4", "6, 0, 2, 1, 2", "0, 4, 1, 2, 2", "0, 0, 0, 1, 4",
+                "0, 0, 1, 0, 4", "0, 0, 2, 2, 3", "2147483647, 0, 2, 1, 2"})
+        @DisplayName("a tile that does not fit the image, or a buffer too short for it, is refused, naming both")
+        void tileOutside(int x, int y, int width, int height, int values) {
+            ImageWriter image = new ImageWriter("tile", 7, 5);
+            assertThatThrownBy(() -> image.writeTile(x, y, width, height, new int[values]))
+                    .isInstanceOf(IndexOutOfBoundsException.class)
+                    .hasMessageContaining(width + "x" + height + " pixels at (" + x + "," + y + ")")
+                    .hasMessageContaining(values + " values").hasMessageContaining("7x5 image");
+            assertThat(image.getRgb(0, 0)).as("nothing written").isZero();
+        }
     }
 
     @Nested
