@@ -115,8 +115,8 @@ public class ImageWriter {
      * Copies a rectangle of packed 0xRRGGBB pixels into the image: {@code rgb} holds its rows one
      * after the other, {@code width} pixels each (the render loop's per-worker tile buffer). Two
      * workers on neighbouring tiles that stored each pixel here as it was done would keep taking
-     * the cache line on their common edge from each other (a tile row of 16 pixels is 64 bytes,
-     * but rows seldom start on a line boundary); a bulk copy per finished tile row does not.
+     * the cache line on their common edge from each other (a tile row seldom starts on a line
+     * boundary); a bulk copy per finished tile row touches that line once, not once per pixel.
      *
      * @throws IndexOutOfBoundsException naming the rectangle when it does not lie in the image or
      *                                   {@code rgb} is too short for it

@@ -10,6 +10,7 @@ import java.io.IOException;
 import java.io.UncheckedIOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Comparator;
 import java.util.Random;
 import java.util.UUID;
@@ -98,11 +99,14 @@ class ImageWriterTest {
         @DisplayName("a tile that does not fit the image, or a buffer too short for it, is refused, naming both")
         void tileOutside(int x, int y, int width, int height, int values) {
             ImageWriter image = new ImageWriter("tile", 7, 5);
-            assertThatThrownBy(() -> image.writeTile(x, y, width, height, new int[values]))
+            int[] rgb = new int[values];
+            Arrays.fill(rgb, 0x123456);
+            assertThatThrownBy(() -> image.writeTile(x, y, width, height, rgb))
                     .isInstanceOf(IndexOutOfBoundsException.class)
                     .hasMessageContaining(width + "x" + height + " pixels at (" + x + "," + y + ")")
                     .hasMessageContaining(values + " values").hasMessageContaining("7x5 image");
-            assertThat(image.getRgb(0, 0)).as("nothing written").isZero();
+            for (int j = 0; j < 5; ++j)
+                for (int i = 0; i < 7; ++i) assertThat(image.getRgb(i, j)).as("pixel (%d,%d): nothing written", i, j).isZero();
         }
     }
 

@@ -7,6 +7,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 import primitives.Color;
@@ -15,7 +16,7 @@ import primitives.Ray;
 import primitives.Vector;
 import scene.Scene;
 
-/** The render loop's handling of a tracer that fails part-way through a render. */
+/** The render loop: where each pixel lands, and a tracer that fails part-way through a render. */
 class RenderLoopTest {
     /** Fails on its {@code failAt}-th call; counts every call, from any thread. */
     private static final class FailingTracer extends RayTracerBase {
@@ -32,6 +33,45 @@ class RenderLoopTest {
             if (calls.incrementAndGet() == failAt) throw new IllegalStateException("tracer failed on purpose");
             return Color.BLACK;
         }
+    }
+
+    /**
+     * Paints each camera ray with the pixel it passes through, read back from its direction: the
+     * camera sits at the origin looking down −z at a view plane 10 away, one unit per pixel, so a
+     * ray through the centre of pixel (x, y) crosses the plane at (x + 0.5 − nX/2, nY/2 − y − 0.5).
+     */
+    private static final class PixelOfRay extends RayTracerBase {
+        private final int nX, nY;
+
+        PixelOfRay(int nX, int nY) {
+            super(new Scene("pixel of ray"));
+            this.nX = nX;
+            this.nY = nY;
+        }
+
+        @Override
+        public Color traceRay(Ray ray) {
+            Vector d = ray.getDirection();
+            double s = 10 / -d.getZ();
+            int x = (int) Math.floor(d.getX() * s + nX / 2.0), y = (int) Math.floor(nY / 2.0 - d.getY() * s);
+            return new Color(x, y, 99);
+        }
+    }
+
+    @ParameterizedTest(name = "{0}x{1} pixels, {2} threads")
+    @CsvSource({"37, 23, 0", "37, 23, 1", "37, 23, 2", "37, 23, 3", "16, 16, 2", "5, 40, 2", "100, 3, 4"})
+    @DisplayName("every pixel lands where its ray points, on any thread count, with tiles cut at the image's edges")
+    void pixelsLandWhereTheirRaysPoint(int nX, int nY, int threads) {
+        ImageWriter image = new ImageWriter("pixel-of-ray", nX, nY);
+        Camera.getBuilder()
+                .setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), new Vector(0, 1, 0))
+                .setVpSize(nX, nY).setVpDistance(10)
+                .setImageWriter(image).setRayTracer(new PixelOfRay(nX, nY))
+                .setMultithreading(threads).setSummary(false)
+                .build().renderImage();
+        for (int y = 0; y < nY; ++y)
+            for (int x = 0; x < nX; ++x)
+                assertThat(image.getRgb(x, y)).as("pixel (%d,%d)", x, y).isEqualTo(x << 16 | y << 8 | 99);
     }
 
     @ParameterizedTest(name = "{0} threads")
