@@ -112,16 +112,22 @@ public class ImageWriter {
     }
 
     /**
-     * Copies a rectangle of packed 0xRRGGBB pixels into the image: {@code rgb} holds its rows one
-     * after the other, {@code width} pixels each (the render loop's per-worker tile buffer). Two
-     * workers on neighbouring tiles that stored each pixel here as it was done would keep taking
-     * the cache line on their common edge from each other (a tile row seldom starts on a line
-     * boundary); a bulk copy per finished tile row touches that line once, not once per pixel.
+     * Copies a rectangle of packed 0xRRGGBB pixels (as {@link #getRgb} gives them) into the image:
+     * a tile rendered elsewhere, by a render worker or a Spark executor. The render loop's workers
+     * fill a tile buffer each and copy it here when the tile is done: two workers on neighbouring
+     * tiles that stored each pixel into the image as it was done would keep taking the cache line
+     * on their common edge from each other (a tile row seldom starts on a line boundary); a bulk
+     * copy per finished tile row touches that line once, not once per pixel.
      *
+     * @param x      the rectangle's first column
+     * @param y      the rectangle's first row
+     * @param width  its number of columns, positive
+     * @param height its number of rows, positive
+     * @param rgb    its pixels, row after row, {@code width} to a row; may be longer
      * @throws IndexOutOfBoundsException naming the rectangle when it does not lie in the image or
-     *                                   {@code rgb} is too short for it
+     *                                   {@code rgb} is too short for it; nothing is written then
      */
-    void writeTile(int x, int y, int width, int height, int[] rgb) {
+    public void writeTile(int x, int y, int width, int height, int[] rgb) {
         if (x < 0 || y < 0 || width <= 0 || height <= 0 || x > nX - width || y > nY - height
                 || rgb.length < (long) width * height)
             throw new IndexOutOfBoundsException("tile of " + width + "x" + height + " pixels at (" + x + "," + y

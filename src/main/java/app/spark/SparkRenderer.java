@@ -12,7 +12,6 @@ import java.util.UUID;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.broadcast.Broadcast;
 
-import primitives.Color;
 import renderer.ImageWriter;
 import renderer.Progress;
 import scene.io.RenderSettings;
@@ -224,14 +223,7 @@ public final class SparkRenderer {
         for (SparkFrame f : frames) images.add(f.settings().newImageWriter());
         for (TilePixels r : results) {
             Tile t = r.tile();
-            ImageWriter image = images.get(t.frame());
-            int k = 0;
-            for (int y = t.y0(); y < t.y1(); ++y)
-                for (int x = t.x0(); x < t.x1(); ++x) {
-                    // Channels of 0..255 are whole numbers: the colour packs back to the same int.
-                    int rgb = r.rgb()[k++];
-                    image.writePixel(x, y, new Color(rgb >> 16 & 0xFF, rgb >> 8 & 0xFF, rgb & 0xFF));
-                }
+            images.get(t.frame()).writeTile(t.x0(), t.y0(), t.x1() - t.x0(), t.y1() - t.y0(), r.rgb());
         }
         long pixels = 0;
         for (int i = 0; i < frames.size(); ++i) {
