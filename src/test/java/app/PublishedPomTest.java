@@ -66,6 +66,22 @@ class PublishedPomTest {
                 .singleElement().satisfies(d -> assertThat(text(d, "optional")).isEqualTo("true"));
     }
 
+    @Test
+    @DisplayName("Spark is a dependency of the profile spark only: a build that skips the tests downloads none of it")
+    void sparkOnlyInItsProfile() {
+        List<Element> dependencies = children(children(project, "dependencies").get(0), "dependency");
+        assertThat(dependencies).noneSatisfy(d -> assertThat(text(d, "groupId")).isEqualTo("org.apache.spark"));
+        Element spark = children(children(project, "profiles").get(0), "profile").stream()
+                .filter(p -> text(p, "id").equals("spark")).findFirst().orElseThrow();
+        Element activation = children(children(spark, "activation").get(0), "property").get(0);
+        assertThat(text(activation, "name")).as("active unless the tests are skipped").isEqualTo("!skipTests");
+        assertThat(children(children(spark, "dependencies").get(0), "dependency"))
+                .singleElement().satisfies(d -> {
+                    assertThat(text(d, "artifactId")).startsWith("spark-core_");
+                    assertThat(text(d, "scope")).isEqualTo("provided");
+                });
+    }
+
     @ParameterizedTest(name = "{0}")
     @ValueSource(strings = { "name", "description", "url", "licenses", "developers", "scm" })
     @DisplayName("the metadata Maven Central requires is present")

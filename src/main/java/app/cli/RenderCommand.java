@@ -9,10 +9,10 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import java.util.Optional;
+import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
 
-import app.spark.SparkEntry;
-import app.spark.SparkRequest;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -34,13 +34,13 @@ import scene.io.XmlSceneReader;
 import scene.samples.Showcase;
 
 /**
- * The {@code render} command: renders a scene file, or the built-in showcase, into a PNG.
+ * The command line ({@code java -jar raytracer.jar}): renders a scene file, or the built-in showcase, into a PNG.
  * Command-line options override the file's settings. Exit codes: 0 success, 1 a failure while
  * rendering or writing the image (not enough memory for the image included), 2 bad input (a usage
  * error or an invalid scene file). Bad input, a failed write and an image too large for the memory
  * are each reported in one line on the error stream, not as a stack trace, and leave no image.
  */
-@Command(name = "render", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
+@Command(name = "java -jar raytracer.jar", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
         sortOptions = false, usageHelpAutoWidth = true,
         description = {
                 "Renders a scene file into a PNG image. The scene format is described in docs/scene-format.md.",
@@ -54,6 +54,12 @@ public final class RenderCommand implements Callable<Integer> {
     public static final int FAILURE = 1;
     /** Exit code of bad input: a usage error or an invalid scene file. */
     public static final int BAD_INPUT = 2;
+    /** The name that starts each error line. */
+    static final String NAME = "raytracer";
+    /** How to get a command line that renders on Spark, for the one-line error of a build without it. */
+    static final String SPARK_BUILD = "build it with 'mvn -q -Pspark package -DskipTests' and run it with"
+            + " 'spark-submit --class app.cli.Main target/raytracer.jar --spark submit SCENE', or on this machine with"
+            + " 'mvn -q -Pspark compile exec:exec -Dspark.args=\"--spark local[2] SCENE\"' (see README.md, Spark)";
     /** Percent between progress lines when the output is not a terminal. */
     private static final double LOG_STEP = 10;
     /** Percent between redraws of the terminal progress bar. */
@@ -121,7 +127,8 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--spark", paramLabel = "MASTER",
             description = { "Render on Apache Spark, byte-identical to the local render: MASTER is a Spark master URL"
                     + " (local[2], spark://HOST:7077, yarn, k8s://...) or 'submit' for the --master of spark-submit.",
-                    "Needs Spark on the class path (the 'spark' Maven profile or spark-submit; see README.md)." })
+                    "Needs the command line built with Spark (mvn -Pspark package) and Spark on the class path"
+                            + " (the 'spark' Maven profile or spark-submit; see README.md)." })
     private String spark;
     // ===== end Spark =====
 
@@ -170,7 +177,7 @@ public final class RenderCommand implements Callable<Integer> {
                 return BAD_INPUT;
             }
             // A failure while rendering or writing: one line; the stack trace helps no user.
-            commandLine.getErr().println("render: failed: " + describe(e));
+            commandLine.getErr().println(NAME + ": failed: " + describe(e));
             return FAILURE;
         });
         return cl;
@@ -178,8 +185,8 @@ public final class RenderCommand implements Callable<Integer> {
 
     private static void usageError(CommandLine commandLine, String message) {
         PrintWriter w = commandLine.getErr();
-        w.println("render: " + message);
-        w.println("Try 'render --help' for more information.");
+        w.println(NAME + ": " + message);
+        w.println("Try 'java -jar raytracer.jar --help' for more information.");
     }
 
     private static String describe(Throwable e) {
@@ -203,7 +210,7 @@ public final class RenderCommand implements Callable<Integer> {
             return BAD_INPUT;
         } catch (OutOfMemoryError e) {
             // Meshes within the size limits can still outgrow a small heap: one line, at once.
-            err.println("render: not enough memory to load " + scene + maxMemory() + " (give Java more memory with -Xmx)");
+            err.println(NAME + ": not enough memory to load " + scene + maxMemory() + " (give Java more memory with -Xmx)");
             return FAILURE;
         }
         RenderSettings settings = override(job.settings());
@@ -248,7 +255,7 @@ public final class RenderCommand implements Callable<Integer> {
         try {
             image.writeToImage(target);
         } catch (UncheckedIOException e) {
-            err.println("render: " + e.getMessage());
+            err.println(NAME + ": " + e.getMessage());
             return FAILURE;
         }
         if (!quiet)
@@ -258,8 +265,8 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     /**
-     * The Spark render (see {@link SparkEntry}): the scene files with this command's overrides
-     * and progress, on the cluster {@code --spark} names.
+     * The Spark render (a {@link SparkRunner}, which only a build with Spark has): the scene
+     * files with this command's overrides and progress, on the cluster {@code --spark} names.
      */
     private int spark() {
         if (spark == null) throw usage("several scene files are rendered only with --spark, as the frames of one job");
@@ -269,6 +276,13 @@ public final class RenderCommand implements Callable<Integer> {
         scenes.addAll(frames);
         if (output != null && scenes.size() > 1)
             throw usage("--output names one file, for one scene; frames go to images/<image name>.png each");
+        Optional<SparkRunner> runner = ServiceLoader.load(SparkRunner.class, RenderCommand.class.getClassLoader())
+                .findFirst();
+        if (runner.isEmpty()) {
+            err.println(NAME + ": --spark needs the command line built with Spark, which this jar was not: "
+                    + SPARK_BUILD);
+            return BAD_INPUT;
+        }
         PrintStream progress = out;
         ProgressBar bar = null;
         double step = quiet ? 0 : LOG_STEP;
@@ -278,7 +292,7 @@ public final class RenderCommand implements Callable<Integer> {
             step = BAR_STEP;
         }
         try {
-            return SparkEntry.run(new SparkRequest(spark, scenes, this::override, output, step, !quiet), progress, out, err);
+            return runner.get().run(new SparkRequest(spark, scenes, this::override, output, step, !quiet), progress, out, err);
         } finally {
             if (bar != null) bar.finish();
         }
@@ -354,7 +368,7 @@ public final class RenderCommand implements Callable<Integer> {
     private static String notEnoughMemory(RenderSettings s) {
         long mb = 1 << 20;
         long needed = ((long) s.width() * s.height() * Integer.BYTES + mb - 1) / mb;
-        return String.format(Locale.ROOT, "render: image %dx%d needs %d MB%s (render it smaller with --width or"
+        return String.format(Locale.ROOT, NAME + ": image %dx%d needs %d MB%s (render it smaller with --width or"
                 + " --height, or give Java more memory with -Xmx)", s.width(), s.height(), needed, maxMemory());
     }
 
@@ -392,7 +406,7 @@ public final class RenderCommand implements Callable<Integer> {
         @Override
         public String[] getVersion() {
             String version = RenderCommand.class.getPackage().getImplementationVersion();
-            return new String[] { "render (raytracer) " + (version != null ? version : "development build"),
+            return new String[] { "raytracer " + (version != null ? version : "development build"),
                     "Java " + System.getProperty("java.version") + ", " + Runtime.getRuntime().availableProcessors()
                             + " cores" };
         }

@@ -73,7 +73,7 @@ class RenderCommandTest {
         void help() {
             Run r = run("--help");
             assertThat(r.exitCode()).isZero();
-            assertThat(r.out()).startsWith("Usage: render ")
+            assertThat(r.out()).startsWith("Usage: java -jar raytracer.jar ")
                     .contains("[SCENE]", "--output=FILE", "--width=N", "--height=N", "--threads=N", "--aa=MODE", "--seed=N",
                             "--quiet", "--version", "NONE, RANDOM, CORNERS, ADAPTIVE", "Exit codes:");
             assertThat(r.err()).isEmpty();
@@ -96,7 +96,7 @@ class RenderCommandTest {
         void version() {
             Run r = run("--version");
             assertThat(r.exitCode()).isZero();
-            assertThat(r.out()).startsWith("render (raytracer) ");
+            assertThat(r.out()).startsWith("raytracer ");
         }
 
         @Test
@@ -104,10 +104,10 @@ class RenderCommandTest {
         void entryPoint() throws Exception {
             Run version = runJava("-Xmx64m", "--version");
             assertThat(version.exitCode()).isZero();
-            assertThat(version.out()).startsWith("render (raytracer) ");
+            assertThat(version.out()).startsWith("raytracer ");
             Run usage = runJava("-Xmx64m", "--width", "0");
             assertThat(usage.exitCode()).isEqualTo(2);
-            assertThat(usage.err()).startsWith("render: --width must be at least 1, got 0");
+            assertThat(usage.err()).startsWith("raytracer: --width must be at least 1, got 0");
         }
     }
 
@@ -124,8 +124,8 @@ class RenderCommandTest {
             Run r = run(args.toArray(String[]::new));
             assertThat(r.exitCode()).isEqualTo(2);
             assertThat(r.errLines()).hasSize(2);
-            assertThat(r.errLines().get(0)).startsWith("render: ");
-            assertThat(r.errLines().get(1)).isEqualTo("Try 'render --help' for more information.");
+            assertThat(r.errLines().get(0)).startsWith("raytracer: ");
+            assertThat(r.errLines().get(1)).isEqualTo("Try 'java -jar raytracer.jar --help' for more information.");
             assertThat(r.out()).isEmpty();
             try (Stream<Path> files = Files.list(dir)) {
                 assertThat(files).isEmpty();
@@ -135,12 +135,12 @@ class RenderCommandTest {
         @Test
         @DisplayName("the message names the bad value")
         void namesTheValue() {
-            assertThat(run("--width", "0").errLines().get(0)).isEqualTo("render: --width must be at least 1, got 0");
+            assertThat(run("--width", "0").errLines().get(0)).isEqualTo("raytracer: --width must be at least 1, got 0");
             assertThat(run("--threads", "-3").errLines().get(0)).isEqualTo(
-                    "render: --threads: thread count must be 0 (calling thread), a positive number, or -1 or -2 (all cores), got -3");
+                    "raytracer: --threads: thread count must be 0 (calling thread), a positive number, or -1 or -2 (all cores), got -3");
             // 50000 × 50000 = 2,500,000,000 > 2^31 - 9 = 2,147,483,639 pixels (one int array).
             assertThat(run("--width", "50000", "--height", "50000").errLines().get(0)).isEqualTo(
-                    "render: --width/--height: image size 50000x50000 is 2500000000 pixels, more than an image can hold"
+                    "raytracer: --width/--height: image size 50000x50000 is 2500000000 pixels, more than an image can hold"
                             + " (2147483639)");
         }
 
@@ -155,9 +155,9 @@ class RenderCommandTest {
             Run r = run(file.toString(), "-o", dir.resolve("out.png").toString(), "--width", "4300000");
             assertThat(r.exitCode()).isEqualTo(2);
             assertThat(r.errLines()).containsExactly(
-                    "render: --width 4300000 at the file's aspect ratio makes the other side 4300000000 pixels,"
+                    "raytracer: --width 4300000 at the file's aspect ratio makes the other side 4300000000 pixels,"
                             + " more than an image can hold",
-                    "Try 'render --help' for more information.");
+                    "Try 'java -jar raytracer.jar --help' for more information.");
         }
     }
 
@@ -388,7 +388,7 @@ class RenderCommandTest {
             assertThat(r.exitCode()).isEqualTo(1);
             assertThat(r.errLines()).hasSize(1);
             assertThat(r.errLines().get(0)).matches(
-                    "render: image 40000x40000 needs 6104 MB; Java may use at most \\d+ MB here \\(render it smaller with"
+                    "raytracer: image 40000x40000 needs 6104 MB; Java may use at most \\d+ MB here \\(render it smaller with"
                             + " --width or --height, or give Java more memory with -Xmx\\)");
             assertThat(png).doesNotExist();
         }
@@ -419,7 +419,7 @@ class RenderCommandTest {
         Run r = run(small().toString(), "-o", notADirectory.resolve("out.png").toString(), "--quiet");
         assertThat(r.exitCode()).isEqualTo(1);
         assertThat(r.errLines()).hasSize(1);
-        assertThat(r.errLines().get(0)).startsWith("render: cannot write image ");
+        assertThat(r.errLines().get(0)).startsWith("raytracer: cannot write image ");
         assertThat(r.err()).doesNotContain("\tat ");
     }
 }

@@ -162,7 +162,7 @@ class UntrustedInputTest {
             Run r = Cli.runJava(dir, "-Xmx32m", file.toString(), "-o", dir.resolve("out.png").toString());
             assertThat(r.exitCode()).as(r.err()).isEqualTo(RenderCommand.FAILURE);
             assertThat(r.errLines()).hasSize(1);
-            assertThat(r.errLines().get(0)).matches("render: not enough memory to load " + Pattern.quote(file.toString())
+            assertThat(r.errLines().get(0)).matches("raytracer: not enough memory to load " + Pattern.quote(file.toString())
                     + "; Java may use at most \\d+ MB here \\(give Java more memory with -Xmx\\)");
             assertNothingWritten();
         }
@@ -244,9 +244,9 @@ class UntrustedInputTest {
             Path file = write("scene.xml", scene(""));
             Run r = run(file.toString(), "--threads", "100000", "-o", dir.resolve("out.png").toString());
             assertThat(r.exitCode()).isEqualTo(RenderCommand.BAD_INPUT);
-            assertThat(r.errLines()).containsExactly("render: --threads: thread count 100000 is more than the limit of "
+            assertThat(r.errLines()).containsExactly("raytracer: --threads: thread count 100000 is more than the limit of "
                     + Camera.maxThreads() + " (" + Camera.MAX_THREADS_PER_CORE + " per core, "
-                    + Runtime.getRuntime().availableProcessors() + " cores)", "Try 'render --help' for more information.");
+                    + Runtime.getRuntime().availableProcessors() + " cores)", "Try 'java -jar raytracer.jar --help' for more information.");
             assertNothingWritten();
         }
 
@@ -256,7 +256,7 @@ class UntrustedInputTest {
             Path file = write("scene.xml", scene("<render beam-size=\"17\"><anti-aliasing mode=\"none\" grid=\"256 256\"/></render>"));
             Run r = run(file.toString(), "--aa", "random", "-o", dir.resolve("out.png").toString());
             assertThat(r.exitCode()).isEqualTo(RenderCommand.BAD_INPUT);
-            assertThat(r.errLines().get(0)).isEqualTo("render: --aa RANDOM: RANDOM sampling with 65536 samples per pixel"
+            assertThat(r.errLines().get(0)).isEqualTo("raytracer: --aa RANDOM: RANDOM sampling with 65536 samples per pixel"
                     + " × beam size 17 × 16 shadow samples is 17825792 rays per pixel, more than the limit of "
                     + RenderSettings.MAX_RAYS_PER_PIXEL);
             assertNothingWritten();

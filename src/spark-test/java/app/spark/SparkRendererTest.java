@@ -42,6 +42,7 @@ import scene.io.XmlSceneReader;
  * and non-square, so that tiles of 16 pixels cut them unevenly and a swapped row and column would
  * show. One Spark context serves every test of the class.
  */
+@EnabledWhereSparkRuns
 class SparkRendererTest {
     private static final Path GLOSSY = Path.of("scenes/glossy.xml");
     private static final Path SHOWCASE = Path.of("scenes/showcase.xml");

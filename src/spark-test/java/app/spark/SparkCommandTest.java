@@ -15,10 +15,13 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import app.cli.SparkRequest;
+
 /**
  * The command line's Spark run when the cluster fails: Spark retries a task up to its limit,
  * then the command ends with exit code 1, one line, and no image.
  */
+@EnabledWhereSparkRuns
 class SparkCommandTest {
     @TempDir
     Path dir;
@@ -36,7 +39,7 @@ class SparkCommandTest {
         }, o, o, e);
         assertThat(code).isEqualTo(1);
         assertThat(err.toString(StandardCharsets.UTF_8)).hasLineCount(1)
-                .startsWith("render: failed on Spark: spark render glossy: Job aborted due to stage failure: Task 0 in stage 0.0 failed 3 times")
+                .startsWith("raytracer: failed on Spark: spark render glossy: Job aborted due to stage failure: Task 0 in stage 0.0 failed 3 times")
                 .contains("injected: the executor lost its disk");
         assertThat(png).doesNotExist();
         assertThat(out.toString(StandardCharsets.UTF_8)).doesNotContain("wrote");

@@ -1,4 +1,4 @@
-package app.spark;
+package app.cli;
 
 import java.nio.file.Path;
 import java.util.List;

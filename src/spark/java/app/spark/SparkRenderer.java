@@ -46,9 +46,27 @@ public final class SparkRenderer {
     private boolean summary = true;
     private TileProbe probe = TileProbe.NONE;
 
-    /** @param spark the context whose cluster renders */
+    /**
+     * @param spark the context whose cluster renders
+     * @throws UnsupportedOperationException on a JDK Spark does not run on (see
+     *                                       {@link #requireSupportedJava()})
+     */
     public SparkRenderer(JavaSparkContext spark) {
+        requireSupportedJava();
         this.spark = Objects.requireNonNull(spark, "spark context");
+    }
+
+    /**
+     * Checks that Spark runs on this JDK. Call it before making the {@code JavaSparkContext}: on a
+     * JDK Spark 4.0 does not support (after Java 21), the context itself fails while starting, with
+     * an error from Hadoop's security code that names neither the JDK nor a remedy.
+     *
+     * @throws UnsupportedOperationException naming this JDK, the JDKs Spark runs on and what to do
+     */
+    public static void requireSupportedJava() {
+        SparkJdk.unsupported().ifPresent(why -> {
+            throw new UnsupportedOperationException(why);
+        });
     }
 
     /**

@@ -11,9 +11,12 @@ import java.util.List;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.condition.EnabledForJreRange;
+import org.junit.jupiter.api.condition.JRE;
 import org.junit.jupiter.api.io.TempDir;
 
 import app.cli.Cli.Run;
+import app.spark.EnabledWhereSparkRuns;
 
 import renderer.ImageWriter;
 
@@ -55,6 +58,7 @@ class RenderCommandSparkTest {
     }
 
     @Test
+    @EnabledWhereSparkRuns
     @DisplayName("--spark local[2] writes the bytes of the local render, with progress in tiles and a summary")
     void sameBytesAsLocal() throws IOException {
         Path scene = scene("one", 3);
@@ -70,6 +74,7 @@ class RenderCommandSparkTest {
     }
 
     @Test
+    @EnabledWhereSparkRuns
     @DisplayName("several scene files with --spark are the frames of one job, one PNG each, each as rendered locally")
     void frames() throws IOException {
         Path a = scene("a", 1), b = scene("b", 2);
@@ -86,6 +91,7 @@ class RenderCommandSparkTest {
     }
 
     @Test
+    @EnabledWhereSparkRuns
     @DisplayName("a bad scene among the frames: exit 2 with the local command's one line, no Spark started, no image")
     void badScene() throws IOException {
         Path good = scene("good", 0);
@@ -106,19 +112,20 @@ class RenderCommandSparkTest {
         Path a = scene("a", 1), b = scene("b", 2);
         Run without = run(a.toString(), b.toString());
         assertThat(without.exitCode()).isEqualTo(2);
-        assertThat(without.err()).startsWith("render: several scene files are rendered only with --spark");
+        assertThat(without.err()).startsWith("raytracer: several scene files are rendered only with --spark");
         Run output = run("--spark", "local[2]", a.toString(), b.toString(), "-o", dir.resolve("x.png").toString());
         assertThat(output.exitCode()).isEqualTo(2);
-        assertThat(output.err()).startsWith("render: --output names one file, for one scene");
+        assertThat(output.err()).startsWith("raytracer: --output names one file, for one scene");
     }
 
     @Test
+    @EnabledWhereSparkRuns
     @DisplayName("--spark submit outside spark-submit (no spark.master): exit 2, one line, nothing started")
     void submitWithoutSparkSubmit() throws IOException {
         assertThat(System.getProperty("spark.master")).as("this JVM was not started by spark-submit").isNull();
         Run run = run("--spark", "submit", scene("one", 0).toString(), "-o", dir.resolve("x.png").toString());
         assertThat(run.exitCode()).isEqualTo(2);
-        assertThat(run.err()).hasLineCount(1).startsWith("render: --spark submit takes the master of spark-submit, and there is none");
+        assertThat(run.err()).hasLineCount(1).startsWith("raytracer: --spark submit takes the master of spark-submit, and there is none");
         assertThat(run.out()).isEmpty();
         assertThat(dir.resolve("x.png")).doesNotExist();
     }
@@ -130,7 +137,20 @@ class RenderCommandSparkTest {
         Run run = Cli.runJava(dir, "-Xmx256m", "--spark", "local[2]", scene.toString());
         assertThat(run.exitCode()).isEqualTo(2);
         assertThat(run.err()).hasLineCount(1)
-                .startsWith("render: --spark needs Apache Spark on the class path").contains("-Pspark", "spark-submit");
+                .startsWith("raytracer: --spark needs Apache Spark on the class path").contains("-Pspark", "spark-submit");
         assertThat(dir.resolve("images")).doesNotExist();
+    }
+
+    @Test
+    @EnabledForJreRange(min = JRE.JAVA_22)
+    @DisplayName("on a JDK Spark does not run on: one line naming the JDK and what to do, exit 2, nothing started")
+    void unsupportedJdk() throws IOException {
+        Run run = run("--spark", "local[2]", scene("one", 0).toString(), "-o", dir.resolve("x.png").toString());
+        assertThat(run.exitCode()).isEqualTo(2);
+        assertThat(run.err()).hasLineCount(1)
+                .startsWith("raytracer: --spark: Spark 4.0 runs on Java 17 to 21, and this is Java " + Runtime.version().feature())
+                .contains(System.getProperty("java.home"), "JAVA_HOME");
+        assertThat(run.out()).as("no progress, no summary: no task ran").isEmpty();
+        assertThat(dir.resolve("x.png")).doesNotExist();
     }
 }

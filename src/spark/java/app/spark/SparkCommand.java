@@ -13,6 +13,7 @@ import java.util.Map;
 import org.apache.spark.SparkConf;
 import org.apache.spark.api.java.JavaSparkContext;
 
+import app.cli.SparkRequest;
 import scene.io.Messages;
 import scene.io.SceneFormatException;
 
@@ -55,7 +56,7 @@ final class SparkCommand {
             if (request.output() != null) frame = frame.withOutput(request.output());
             String other = outputs.putIfAbsent(frame.output().toAbsolutePath().normalize(), scene.toString());
             if (other != null) {
-                err.println("render: " + other + " and " + scene + " would both write " + frame.output()
+                err.println("raytracer: " + other + " and " + scene + " would both write " + frame.output()
                         + " (give the scenes different image names)");
                 return SparkEntry.BAD_INPUT;
             }
@@ -66,7 +67,7 @@ final class SparkCommand {
                 + (frames.size() > 1 ? " and " + (frames.size() - 1) + " more" : ""));
         if (!request.master().equals(SparkRequest.SUBMIT)) conf.setMaster(request.master());
         else if (!conf.contains("spark.master")) {
-            err.println("render: --spark " + SparkRequest.SUBMIT + " takes the master of spark-submit, and there is none: "
+            err.println("raytracer: --spark " + SparkRequest.SUBMIT + " takes the master of spark-submit, and there is none: "
                     + "give a master URL such as --spark local[2], or " + SparkEntry.HOW);
             return SparkEntry.BAD_INPUT;
         }
@@ -75,10 +76,10 @@ final class SparkCommand {
             new SparkRenderer(spark).setProbe(probe).setProgress(request.progressStep()).setOutput(progress)
                     .setSummary(request.summary()).render(frames);
         } catch (SparkRenderException e) {
-            err.println("render: failed on Spark: " + e.getMessage());
+            err.println("raytracer: failed on Spark: " + e.getMessage());
             return 1;
         } catch (UncheckedIOException e) {
-            err.println("render: " + e.getMessage());
+            err.println("raytracer: " + e.getMessage());
             return 1;
         }
         if (request.summary())
