@@ -716,7 +716,7 @@ def parse_args(argv: Sequence[str] | None) -> argparse.Namespace:
     parser.add_argument(
         "--renders",
         type=Path,
-        default=Path("images/golden"),
+        default=Path("target/test-run/images/golden"),
         help="folder with rendered *.png (not searched recursively; default: %(default)s)",
     )
     parser.add_argument(

@@ -26,7 +26,7 @@ import org.junit.jupiter.api.Test;
  */
 class PackageLayersTest {
     /** The library and command line, and the Spark entry point (built by the profile spark). */
-    private static final List<Path> SOURCES = List.of(Path.of("src/main/java"), Path.of("src/spark/java"));
+    private static final List<Path> SOURCES = List.of(Project.file("src/main/java"), Project.file("src/spark/java"));
 
     /**
      * Each package's layer, by the longest matching prefix; a file may import its own layer and

@@ -30,7 +30,7 @@ class PublishedPomTest {
     static void parse() throws Exception {
         DocumentBuilderFactory factory = DocumentBuilderFactory.newInstance();
         factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-        Document pom = factory.newDocumentBuilder().parse(Path.of("pom.xml").toFile());
+        Document pom = factory.newDocumentBuilder().parse(Project.file("pom.xml").toFile());
         project = pom.getDocumentElement();
     }
 
@@ -94,6 +94,6 @@ class PublishedPomTest {
     void licence() throws Exception {
         Element licence = children(children(project, "licenses").get(0), "license").get(0);
         assertThat(text(licence, "name")).isEqualTo("Apache-2.0");
-        assertThat(Files.readString(Path.of("LICENSE"))).contains("Apache License", "Version 2.0, January 2004");
+        assertThat(Files.readString(Project.file("LICENSE"))).contains("Apache License", "Version 2.0, January 2004");
     }
 }

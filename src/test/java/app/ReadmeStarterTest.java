@@ -22,8 +22,8 @@ import org.junit.jupiter.api.Test;
  * library. These tests hold the two copies equal, so the README cannot drift from what was built.
  */
 class ReadmeStarterTest {
-    private static final Path README = Path.of("README.md");
-    private static final Path STARTER = Path.of("src/it/starter");
+    private static final Path README = Project.file("README.md");
+    private static final Path STARTER = Project.file("src/it/starter");
 
     private static List<String> blocks(String language) throws IOException {
         Matcher m = Pattern.compile("^```" + language + "\\n(.*?)^```$", Pattern.MULTILINE | Pattern.DOTALL)
@@ -36,7 +36,7 @@ class ReadmeStarterTest {
     private static String projectVersion() throws Exception {
         DocumentBuilderFactory factory = DocumentBuilderFactory.newInstance();
         factory.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
-        return factory.newDocumentBuilder().parse(Path.of("pom.xml").toFile()).getDocumentElement()
+        return factory.newDocumentBuilder().parse(Project.file("pom.xml").toFile()).getDocumentElement()
                 .getElementsByTagName("version").item(0).getTextContent().trim();
     }
 

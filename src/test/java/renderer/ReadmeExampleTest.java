@@ -36,6 +36,8 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.io.TempDir;
 
+import app.Project;
+
 /**
  * The README's Java blocks, exactly as printed: each one is a whole source file that compiles
  * against the library and the test class path, and its tests run and make the pictures the README
@@ -43,7 +45,7 @@ import org.junit.jupiter.api.io.TempDir;
  */
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class ReadmeExampleTest {
-    private static final Path README = Path.of("README.md");
+    private static final Path README = Project.file("README.md");
     private static final Pattern JAVA_BLOCK = Pattern.compile("^```java\\n(.*?)^```$", Pattern.MULTILINE | Pattern.DOTALL);
     private static final Pattern CLASS_NAME = Pattern.compile("^(?:public\\s+)?(?:final\\s+)?class\\s+(\\w+)", Pattern.MULTILINE);
 

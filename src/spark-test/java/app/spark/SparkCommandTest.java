@@ -15,6 +15,7 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import app.Project;
 import app.cli.SparkRequest;
 
 /**
@@ -32,7 +33,7 @@ class SparkCommandTest {
         ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
         PrintStream o = new PrintStream(out, true, StandardCharsets.UTF_8), e = new PrintStream(err, true, StandardCharsets.UTF_8);
         Path png = dir.resolve("fail.png");
-        SparkRequest request = new SparkRequest("local[2,3]", List.of(Path.of("scenes/glossy.xml")),
+        SparkRequest request = new SparkRequest("local[2,3]", List.of(Project.file("scenes/glossy.xml")),
                 s -> s.withImage("glossy", 40, 30), png, 0, true);
         int code = SparkCommand.run(request, tile -> {
             if (TaskContext.getPartitionId() == 0) throw new IllegalStateException("injected: the executor lost its disk");

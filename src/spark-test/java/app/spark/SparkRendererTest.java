@@ -29,6 +29,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
+import app.Project;
 import renderer.AntiAliasing;
 import renderer.ImageWriter;
 import scene.io.LoadedScene;
@@ -44,9 +45,9 @@ import scene.io.XmlSceneReader;
  */
 @EnabledWhereSparkRuns
 class SparkRendererTest {
-    private static final Path GLOSSY = Path.of("scenes/glossy.xml");
-    private static final Path SHOWCASE = Path.of("scenes/showcase.xml");
-    private static final Path TEAPOT = Path.of("scenes/teapot.xml");
+    private static final Path GLOSSY = Project.file("scenes/glossy.xml");
+    private static final Path SHOWCASE = Project.file("scenes/showcase.xml");
+    private static final Path TEAPOT = Project.file("scenes/teapot.xml");
 
     private static JavaSparkContext spark;
 

@@ -43,7 +43,7 @@ final class FloorScene {
         return scene;
     }
 
-    /** Renders {@code scene} through {@link #VIEW} into images/golden/golden-&lt;what&gt;.png. */
+    /** Renders {@code scene} through {@link #VIEW} into target/test-run/images/golden/golden-&lt;what&gt;.png. */
     static ImageWriter render(String what, Scene scene) {
         ImageWriter image = Golden.image(what, SIZE, SIZE);
         VIEW.builder().setImageWriter(image).setRayTracer(new RayTracerBasic(scene)).build()

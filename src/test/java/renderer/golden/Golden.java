@@ -9,8 +9,8 @@ import renderer.ImageWriter;
  * Shared plumbing of the golden render suite: where its images go, the view of a test, and
  * probes that read pixels back.
  *
- * <p>Golden images are written to {@code images/golden/golden-<what>.png}, a folder of their
- * own: {@code scripts/verify_images.py --renders images/golden} then compares exactly this suite
+ * <p>Golden images are written to {@code target/test-run/images/golden/golden-<what>.png}, a folder of their
+ * own: {@code scripts/verify_images.py --renders target/test-run/images/golden} then compares exactly this suite
  * with {@code images/reference/}, whatever other tests write into {@code images/}.
  */
 final class Golden {
@@ -20,7 +20,7 @@ final class Golden {
     private Golden() {
     }
 
-    /** @return an image writer for images/golden/golden-&lt;what&gt;.png */
+    /** @return an image writer for target/test-run/images/golden/golden-&lt;what&gt;.png */
     static ImageWriter image(String what, int nX, int nY) {
         return new ImageWriter(FOLDER + "golden-" + what, nX, nY);
     }

@@ -12,6 +12,7 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import app.Project;
 import geometries.Geometry;
 import geometries.Intersectable;
 import geometries.Polygon;
@@ -37,7 +38,7 @@ import scene.samples.Showcase;
  * pixels of the same scene built in Java through the public API, at a small resolution.
  */
 class SceneFilesTest {
-    private static final Path SCENES = Path.of("scenes");
+    private static final Path SCENES = Project.file("scenes");
 
     @TempDir
     Path dir;

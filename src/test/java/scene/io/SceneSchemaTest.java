@@ -26,6 +26,8 @@ import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.xml.sax.SAXException;
 
+import app.Project;
+
 /** docs/scene.xsd agrees with the reader on the scene files and on the format's vocabulary. */
 class SceneSchemaTest {
     private static Schema schema;
@@ -36,7 +38,7 @@ class SceneSchemaTest {
     @BeforeAll
     static void loadSchema() throws SAXException {
         SchemaFactory factory = SchemaFactory.newInstance(XMLConstants.W3C_XML_SCHEMA_NS_URI);
-        schema = factory.newSchema(Path.of("docs/scene.xsd").toFile());
+        schema = factory.newSchema(Project.file("docs/scene.xsd").toFile());
     }
 
     private static void validate(String xml) throws SAXException, IOException {
@@ -45,7 +47,7 @@ class SceneSchemaTest {
     }
 
     static Stream<Path> sceneFiles() throws IOException {
-        try (Stream<Path> files = Files.list(Path.of("scenes"))) {
+        try (Stream<Path> files = Files.list(Project.file("scenes"))) {
             List<Path> xml = files.filter(f -> f.toString().endsWith(".xml")).sorted().toList();
             assertThat(xml).isNotEmpty();
             return xml.stream();
