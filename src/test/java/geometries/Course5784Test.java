@@ -226,6 +226,20 @@ class Course5784Test {
         }
 
         @Test
+        @DisplayName("getBuilder(camera): a second view rendered into the same image writer, which setImageWriter shares")
+        void secondViewSharesTheWriter() {
+            Scene scene = new Scene("5784 views").setBackground(new Color(0, 255, 0));
+            scene.geometries.add(new Sphere(new Point(0, 0, -10), 1).setEmission(new Color(255, 0, 0)));
+            ImageWriter writer = new ImageWriter("course-years/5784-views", 3, 3);
+            Camera front = Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), Vector.Y)
+                    .setVpSize(3, 3).setVpDistance(10).setImageWriter(writer).setRayTracer(new SimpleRayTracer(scene))
+                    .setSummary(false).build().renderImage();
+            assertThat(writer.getRgb(1, 1)).as("the sphere ahead").isEqualTo(0xFF0000);
+            Camera.getBuilder(front).setLocation(new Point(0, 0, -20)).build().renderImage();
+            assertThat(writer.getRgb(1, 1)).as("from behind the sphere, looking away: the background").isEqualTo(0x00FF00);
+        }
+
+        @Test
         @DisplayName("constructRay(nX, nY, j, i): the corner pixel of a 3x3 view plane")
         void constructRay() {
             Camera camera = Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), new Vector(0, 1, 0))

@@ -29,6 +29,7 @@ import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Vector;
+import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.RayTracerType;
@@ -160,12 +161,12 @@ class Course5785Test {
             Scene scene = new Scene("copy").setBackground(new Color(0, 0, 255));
             Camera first = Camera.getBuilder().setLocation(new Point(1, 2, 3)).setDirection(new Point(1, 2, -7), Y)
                     .setVpSize(4, 3).setVpDistance(10).setResolution(4, 3).setRayTracer(scene, RayTracerType.SIMPLE)
-                    .setSeed(7).setSummary(false).build();
+                    .setAntiAliasing(AntiAliasing.RANDOM, 2, 3).setDepthOfField(12, 0.5).setSeed(7).setSummary(false).build();
             Camera same = Camera.getBuilder(first).build();
             assertThat(same.getLocation()).isEqualTo(new Point(1, 2, 3));
             assertVector(same.getVTo(), 0, 0, -1);
             assertVector(same.getVUp(), 0, 1, 0);
-            assertThat(same.describe()).isEqualTo(first.describe());
+            assertThat(same.describe()).isEqualTo(first.describe()).contains("RANDOM 2x3", "focal 12.0 aperture 0.5", "seed 7");
             for (int i = 0; i < 3; ++i)
                 for (int j = 0; j < 4; ++j) assertThat(same.constructRay(j, i)).isEqualTo(first.constructRay(j, i));
 
