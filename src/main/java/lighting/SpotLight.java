@@ -72,28 +72,16 @@ public class SpotLight extends PointLight {
         return setKq(kQ);
     }
 
-    /**
-     * @param kC constant attenuation, ≥ 0
-     * @return this light
-     */
     @Override
     public SpotLight setkC(double kC) {
         return setKc(kC);
     }
 
-    /**
-     * @param kL linear attenuation per unit distance, ≥ 0
-     * @return this light
-     */
     @Override
     public SpotLight setkL(double kL) {
         return setKl(kL);
     }
 
-    /**
-     * @param kQ quadratic attenuation per squared unit distance, ≥ 0
-     * @return this light
-     */
     @Override
     public SpotLight setkQ(double kQ) {
         return setKq(kQ);
