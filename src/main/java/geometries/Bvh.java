@@ -482,7 +482,7 @@ public final class Bvh extends Intersectable {
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         List<GeoPoint> result = new ArrayList<>();
         visitHits(ray, maxDistance, (geometry, t) -> result.add(new GeoPoint(geometry, ray.getPoint(t))));
-        return result;
+        return result.isEmpty() ? null : result;
     }
 
     /**

@@ -16,7 +16,8 @@ public class Cylinder extends Tube {
 
     /**
      * A finite cylinder with both caps: the tube around {@code axis} from its head to
-     * {@code height} along its direction.
+     * {@code height} along its direction. Some cohorts write (height, axis, radius): those are
+     * the same types in the same places, so such a call builds this cylinder, radius first.
      *
      * @param radius the radius, in scene units, positive and finite
      * @param axis   the axis: its head is the centre of the bottom cap, its direction points to the top
@@ -26,6 +27,30 @@ public class Cylinder extends Tube {
     public Cylinder(double radius, Ray axis, double height) {
         super(radius, axis);
         this.height = Util.requirePositive(height, "cylinder height");
+    }
+
+    /**
+     * {@link #Cylinder(double, Ray, double)} with the axis first, as several cohorts write it.
+     *
+     * @param axis   the axis: its head is the centre of the bottom cap, its direction points to the top
+     * @param radius the radius, in scene units, positive and finite
+     * @param height the distance between the caps, in scene units, positive and finite
+     * @throws IllegalArgumentException when the radius or height is not a positive finite number, naming it
+     */
+    public Cylinder(Ray axis, double radius, double height) {
+        this(radius, axis, height);
+    }
+
+    /**
+     * {@link #Cylinder(double, Ray, double)} in the order (height, radius, axis) some cohorts use.
+     *
+     * @param height the distance between the caps, in scene units, positive and finite
+     * @param radius the radius, in scene units, positive and finite
+     * @param axis   the axis: its head is the centre of the bottom cap, its direction points to the top
+     * @throws IllegalArgumentException when the radius or height is not a positive finite number, naming it
+     */
+    public Cylinder(double height, double radius, Ray axis) {
+        this(radius, axis, height);
     }
 
     /** @return the distance between the caps, in scene units */

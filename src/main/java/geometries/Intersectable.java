@@ -137,7 +137,20 @@ public abstract class Intersectable {
      * @return the intersection points, or null when there are none
      */
     public final List<Point> findIntersections(Ray ray) {
-        List<GeoPoint> geoPoints = findGeoIntersections(ray);
+        return findIntersections(ray, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * The points of {@link #findGeoIntersections(Ray, double)} (a form some 2023–24 and 2024–25
+     * cohorts use; same inclusive bound).
+     *
+     * @param ray         the ray to intersect
+     * @param maxDistance intersections farther than this from the ray head are ignored (a hit at
+     *                    exactly this distance counts)
+     * @return the intersection points within {@code maxDistance}, or null when there are none
+     */
+    public final List<Point> findIntersections(Ray ray, double maxDistance) {
+        List<GeoPoint> geoPoints = findGeoIntersections(ray, maxDistance);
         if (geoPoints == null) return null;
         List<Point> points = new ArrayList<>(geoPoints.size());
         for (GeoPoint gp : geoPoints) points.add(gp.point);
@@ -218,15 +231,17 @@ public abstract class Intersectable {
     /**
      * Every intersection at distance {@code t} with {@code alignZero(t) > 0} and
      * {@code alignZero(t - maxDistance) <= 0}. The 2023–24 hook: the library's shapes override
-     * this one.
+     * this one. With no hit in range every library hook returns {@code null}, as the course's
+     * do; a user's override may return an empty list instead, and the queries and the default
+     * hooks then answer {@code null} as well.
      *
      * @param ray         the ray to intersect
      * @param maxDistance the largest distance from the ray head that counts
-     * @return the intersections, or null (or an empty list) when there are none
+     * @return the intersections, or null when there are none
      */
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         List<Intersection> found = calculateIntersectionsHelper(ray, maxDistance);
-        if (found == null) return null;
+        if (found == null || found.isEmpty()) return null;
         List<GeoPoint> result = new ArrayList<>(found.size());
         for (GeoPoint gp : found) result.add(gp.getClass() == GeoPoint.class ? gp : new GeoPoint(gp.geometry, gp.point));
         return result;
@@ -238,10 +253,10 @@ public abstract class Intersectable {
      *
      * @param ray         the ray to intersect
      * @param maxDistance the largest distance from the ray head that counts
-     * @return the intersections, or null (or an empty list) when there are none
+     * @return the intersections, or null when there are none
      */
     protected List<Intersection> calculateIntersectionsHelper(Ray ray, double maxDistance) {
-        return calcIntersectionsHelper(ray, maxDistance);
+        return nullWhenEmpty(calcIntersectionsHelper(ray, maxDistance));
     }
 
     /**
@@ -250,11 +265,11 @@ public abstract class Intersectable {
      *
      * @param ray         the ray to intersect
      * @param maxDistance the largest distance from the ray head that counts
-     * @return the intersections, or null (or an empty list) when there are none
+     * @return the intersections, or null when there are none
      */
     protected List<Intersection> calcIntersectionsHelper(Ray ray, double maxDistance) {
         List<GeoPoint> found = findGeoIntersectionsHelper(ray, maxDistance);
-        if (found == null) return null;
+        if (found == null || found.isEmpty()) return null;
         List<Intersection> result = new ArrayList<>(found.size());
         for (GeoPoint gp : found)
             result.add(gp instanceof Intersection i ? i : new Intersection(gp.geometry, gp.point));

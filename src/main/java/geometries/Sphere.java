@@ -178,7 +178,7 @@ public class Sphere extends Geometry {
         List<GeoPoint> result = new ArrayList<>(2);
         if (within(tm - th, maxDistance)) result.add(new GeoPoint(this, ray.getPoint(tm - th)));
         if (within(tm + th, maxDistance)) result.add(new GeoPoint(this, ray.getPoint(tm + th)));
-        return result;
+        return result.isEmpty() ? null : result;
     }
 
     @Override

@@ -42,6 +42,18 @@ public class Tube extends Geometry {
         vz = axis.getDirection().getZ();
     }
 
+    /**
+     * {@link #Tube(double, Ray)} with the arguments in the order several cohorts use.
+     *
+     * @param axis   the axis line
+     * @param radius the radius, in scene units, positive and finite
+     * @throws NullPointerException     naming the axis when it is null
+     * @throws IllegalArgumentException when the radius is not a positive finite number, naming it
+     */
+    public Tube(Ray axis, double radius) {
+        this(radius, axis);
+    }
+
     /** @return the axis: a point on it and its unit direction */
     public Ray getAxis() {
         return axis;
@@ -66,17 +78,30 @@ public class Tube extends Geometry {
         return radialNormal(point);
     }
 
-    /** The shell's normal: from the point's foot on the axis to the point, unit length. */
+    /**
+     * The shell's normal: from the point's foot on the axis to the point, unit length.
+     *
+     * @throws IllegalArgumentException for a point on the axis (within the zero tolerance of a
+     *                                  vector), where no direction is radial
+     */
     final Vector radialNormal(Point point) {
         double[] n = new double[3];
-        radialNormal(point.getX(), point.getY(), point.getZ(), n);
+        if (!radialNormal(point.getX(), point.getY(), point.getZ(), n))
+            throw new IllegalArgumentException("point " + point + " is on the axis " + axis + ": it has no normal there");
         return new Vector(n[0], n[1], n[2]);
     }
 
-    /** The shell's normal at (x, y, z) into {@code out[0..2]}: the one computation of both forms. */
-    private void radialNormal(double x, double y, double z, double[] out) {
+    /**
+     * The shell's normal at (x, y, z) into {@code out[0..2]}: the one computation of both forms.
+     *
+     * @return false when the point is on the axis, where {@code out} means nothing (a hit on the
+     *         shell never is: it lies at the radius)
+     */
+    private boolean radialNormal(double x, double y, double z, double[] out) {
         double s = axial(x, y, z);
-        Vector.normalize(x - (px + vx * s), y - (py + vy * s), z - (pz + vz * s), out);
+        double rx = x - (px + vx * s), ry = y - (py + vy * s), rz = z - (pz + vz * s);
+        Vector.normalize(rx, ry, rz, out);
+        return !(Util.isZero(rx) && Util.isZero(ry) && Util.isZero(rz));
     }
 
     /** The normal of the surface recorded by the closest-hit query: no guessing from the point. */
@@ -139,10 +164,13 @@ public class Tube extends Geometry {
                 far = keepShell((-b + sq) / a, wv, dv, height);
             }
         }
-        // Caps: the planes s = 0 and s = height, inside the rim (the rim belongs to the cap).
+        // Caps: the planes s = 0 and s = height, inside the rim (the rim belongs to the cap). A ray
+        // parallel to the axis at the radius lies on the shell: it only touches the cylinder, and
+        // a tangent is no hit (the course's rule), though it passes through both rims.
         double bottom = Double.NaN, top = Double.NaN;
         double dvz = Util.alignZero(dv);
-        if (height != Double.POSITIVE_INFINITY && dvz != 0) {
+        boolean alongTheShell = Util.isZero(a) && Util.alignZero(c) == 0;
+        if (height != Double.POSITIVE_INFINITY && dvz != 0 && !alongTheShell) {
             bottom = insideRim(-wv / dv, ax, ay, az, bx, by, bz);
             top = insideRim((height - wv) / dv, ax, ay, az, bx, by, bz);
         }
@@ -220,6 +248,7 @@ public class Tube extends Geometry {
             ts[n[0]++] = t;
             return true;
         });
+        if (n[0] == 0) return null;
         java.util.Arrays.sort(ts, 0, n[0]);
         List<GeoPoint> result = new ArrayList<>(n[0]);
         for (int i = 0; i < n[0]; ++i) result.add(new GeoPoint(this, ray.getPoint(ts[i])));

@@ -101,6 +101,39 @@ public class PointLight extends Light implements LightSource {
     }
 
     /**
+     * The lower-case-k spelling of {@link #setKc} some course cohorts use.
+     *
+     * @param kC constant attenuation, ≥ 0
+     * @return this light
+     * @throws IllegalArgumentException as {@link #setKc}, naming the bad value
+     */
+    public PointLight setkC(double kC) {
+        return setKc(kC);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKl} some course cohorts use.
+     *
+     * @param kL linear attenuation per unit distance, ≥ 0
+     * @return this light
+     * @throws IllegalArgumentException as {@link #setKl}, naming the bad value
+     */
+    public PointLight setkL(double kL) {
+        return setKl(kL);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKq} some course cohorts use.
+     *
+     * @param kQ quadratic attenuation per squared unit distance, ≥ 0
+     * @return this light
+     * @throws IllegalArgumentException as {@link #setKq}, naming the bad value
+     */
+    public PointLight setkQ(double kQ) {
+        return setKq(kQ);
+    }
+
+    /**
      * @param radius the radius of the light's disk in scene units, ≥ 0; 0 (the default) is a point
      *               light with hard shadows
      * @return this light, for chaining
@@ -207,10 +240,19 @@ public class PointLight extends Light implements LightSource {
     private void lHere(double x, double y, double z, double[] out) {
         double dx = x - position.getX(), dy = y - position.getY(), dz = z - position.getZ();
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
-        if (len == 0) throw new IllegalArgumentException("point " + new Point(x, y, z) + " is at the light's position");
+        if (len == 0) throw atPosition(x, y, z);
         out[0] = dx / len;
         out[1] = dy / len;
         out[2] = dz / len;
+    }
+
+    /**
+     * The failure of every query that needs the direction from the light to a point that is the
+     * light's own position: the direction is 0/0 there.
+     */
+    static IllegalArgumentException atPosition(double x, double y, double z) {
+        return new IllegalArgumentException("point " + new Point(x, y, z)
+                + " is at the light's position: the direction from the light to it is undefined");
     }
 
     @Override

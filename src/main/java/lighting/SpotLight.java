@@ -73,6 +73,21 @@ public class SpotLight extends PointLight {
     }
 
     @Override
+    public SpotLight setkC(double kC) {
+        return setKc(kC);
+    }
+
+    @Override
+    public SpotLight setkL(double kL) {
+        return setKl(kL);
+    }
+
+    @Override
+    public SpotLight setkQ(double kQ) {
+        return setKq(kQ);
+    }
+
+    @Override
     public SpotLight setRadius(double radius) {
         super.setRadius(radius);
         return this;
@@ -95,6 +110,7 @@ public class SpotLight extends PointLight {
         // cos of the angle between the beam axis and the light-to-point direction
         double dx = x - position.getX(), dy = y - position.getY(), dz = z - position.getZ();
         double len = Math.sqrt(dx * dx + dy * dy + dz * dz);
+        if (len == 0) throw atPosition(x, y, z); // else cos = 0/0 and the NaN fails far from here
         double cos = Util.alignZero((direction.getX() * dx + direction.getY() * dy + direction.getZ() * dz) / len);
         if (cos <= 0) return 0;
         double factor = narrowBeam == 1 ? cos : Math.pow(cos, narrowBeam);

@@ -3,7 +3,8 @@ package primitives;
 /**
  * An immutable RGB colour with non-negative components on the 0..255 scale of the course.
  * Components may exceed 255 while light accumulates; {@link #getColor()} clamps when writing.
- * There is deliberately no tolerant {@code equals}: compare colours with {@link #distance(Color)}.
+ * {@link #equals(Object)} is the 2025–26 course's, with a tolerance, for students' tests; the
+ * library itself compares colours with {@link #distance(Color)}.
  * Serializable so that render settings can travel to the machines of a cluster.
  *
  * @serial exclude
@@ -168,6 +169,35 @@ public final class Color implements java.io.Serializable {
      */
     public double distance(Color other) {
         return Math.max(Math.abs(r - other.r), Math.max(Math.abs(g - other.g), Math.abs(b - other.b)));
+    }
+
+    /**
+     * The 2025–26 course's equality, kept for students' tests ({@code assertEquals} of colours):
+     * each channel equal within the library's zero tolerance ({@link Util#isZero(double)}, about
+     * 9e-13), as the course compares its colours' {@code Double3}. A tolerance makes it not
+     * transitive (a ≈ b and b ≈ c do not give a ≈ c), so the library never relies on it: it
+     * compares colours with {@link #distance(Color)}.
+     *
+     * @param obj the object to compare with
+     * @return true for a colour whose three channels are each within the tolerance of this one's
+     */
+    @Override
+    public boolean equals(Object obj) {
+        if (this == obj) return true;
+        return obj instanceof Color other && Util.isZero(r - other.r) && Util.isZero(g - other.g) && Util.isZero(b - other.b);
+    }
+
+    /**
+     * Constant, as {@link Point#hashCode()} and {@link Double3#hashCode()}: the only hash
+     * consistent with a tolerant {@link #equals(Object)} for every pair of colours (any finer one,
+     * a rounded channel say, splits two equal colours on either side of a rounding step). Hashed
+     * collections of colours work, slowly; nothing in the library hashes colours.
+     *
+     * @return the same number for every colour
+     */
+    @Override
+    public int hashCode() {
+        return 11;
     }
 
     @Override

@@ -216,6 +216,138 @@ public class Material {
     }
 
     /**
+     * The spelling of {@link #setKA(double)} many cohorts use.
+     *
+     * @param ka the ambient coefficient of all three channels, finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKA(double)}, naming the bad value
+     */
+    public Material setKa(double ka) {
+        return setKA(ka);
+    }
+
+    /**
+     * The spelling of {@link #setKA(Double3)} many cohorts use.
+     *
+     * @param ka the ambient coefficient per channel, each finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKA(Double3)}, naming the bad value
+     */
+    public Material setKa(Double3 ka) {
+        return setKA(ka);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKA(double)} some cohorts use.
+     *
+     * @param ka the ambient coefficient of all three channels, finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKA(double)}, naming the bad value
+     */
+    public Material setkA(double ka) {
+        return setKA(ka);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKA(Double3)} some cohorts use.
+     *
+     * @param ka the ambient coefficient per channel, each finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKA(Double3)}, naming the bad value
+     */
+    public Material setkA(Double3 ka) {
+        return setKA(ka);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKd(double)} some cohorts use.
+     *
+     * @param kd the diffuse coefficient of all three channels, finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKd(double)}, naming the bad value
+     */
+    public Material setkD(double kd) {
+        return setKd(kd);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKd(Double3)} some cohorts use.
+     *
+     * @param kd the diffuse coefficient per channel, each finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKd(Double3)}, naming the bad value
+     */
+    public Material setkD(Double3 kd) {
+        return setKd(kd);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKs(double)} some cohorts use.
+     *
+     * @param ks the specular coefficient of all three channels, finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKs(double)}, naming the bad value
+     */
+    public Material setkS(double ks) {
+        return setKs(ks);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKs(Double3)} some cohorts use.
+     *
+     * @param ks the specular coefficient per channel, each finite and ≥ 0
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKs(Double3)}, naming the bad value
+     */
+    public Material setkS(Double3 ks) {
+        return setKs(ks);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKt(double)} some cohorts use.
+     *
+     * @param kt the transmitted fraction of all three channels, in [0, 1]
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKt(double)}, naming the bad value
+     */
+    public Material setkT(double kt) {
+        return setKt(kt);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKt(Double3)} some cohorts use.
+     *
+     * @param kt the transmitted fraction per channel, each in [0, 1]
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKt(Double3)}, naming the bad value
+     */
+    public Material setkT(Double3 kt) {
+        return setKt(kt);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKr(double)} some cohorts use.
+     *
+     * @param kr the mirrored fraction of all three channels, in [0, 1]
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKr(double)}, naming the bad value
+     */
+    public Material setkR(double kr) {
+        return setKr(kr);
+    }
+
+    /**
+     * The lower-case-k spelling of {@link #setKr(Double3)} some cohorts use.
+     *
+     * @param kr the mirrored fraction per channel, each in [0, 1]
+     * @return this material
+     * @throws IllegalArgumentException as {@link #setKr(Double3)}, naming the bad value
+     */
+    public Material setkR(Double3 kr) {
+        return setKr(kr);
+    }
+
+    /**
      * @param nShininess the Phong exponent, ≥ 0: the larger, the smaller and sharper the highlight
      * @return this material, for chaining
      * @throws IllegalArgumentException when it is negative, naming it

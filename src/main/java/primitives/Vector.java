@@ -11,6 +11,15 @@ public class Vector extends Point {
     public static final Vector AXIS_Y = new Vector(0, 1, 0);
     /** Unit vector along z. */
     public static final Vector AXIS_Z = new Vector(0, 0, 1);
+    /**
+     * {@link #AXIS_X} under the 2023–24 cohorts' name (the same object). One cohort's Z pointed
+     * along −z; the majority and the axis names decide: X, Y and Z are the positive axes.
+     */
+    public static final Vector X = AXIS_X;
+    /** {@link #AXIS_Y} under the 2023–24 cohorts' name (the same object). */
+    public static final Vector Y = AXIS_Y;
+    /** {@link #AXIS_Z} under the 2023–24 cohorts' name (the same object): +z, not the one cohort's −z. */
+    public static final Vector Z = AXIS_Z;
 
     /**
      * Squared lengths (and products of them) strictly between these are computed and used without

@@ -39,6 +39,8 @@ public final class Camera {
     private final double vpWidth, vpHeight, vpDistance;
 
     private final ImageWriter imageWriter;
+    /** Whether the camera made its writer from a resolution (not given one to share). */
+    private final boolean ownWriter;
     private final RayTracerBase rayTracer;
 
     // Sampling.
@@ -73,6 +75,7 @@ public final class Camera {
         vpHeight = b.vpHeight;
         vpDistance = b.vpDistance;
         this.imageWriter = imageWriter;
+        ownWriter = b.imageWriter == null;
         this.rayTracer = rayTracer;
         antiAliasing = b.antiAliasing;
         gridColumns = b.gridColumns;
@@ -108,6 +111,18 @@ public final class Camera {
     /** @return a new builder with the defaults: no anti-aliasing, pinhole, calling thread, seed 0 */
     public static Builder getBuilder() {
         return new Builder();
+    }
+
+    /**
+     * A builder that starts from a built camera's settings (the form some cohorts use to render
+     * a second view); see {@link Builder#Builder(Camera)}.
+     *
+     * @param camera the camera whose settings the builder starts from
+     * @return a new builder holding those settings
+     * @throws NullPointerException when camera is null, naming it
+     */
+    public static Builder getBuilder(Camera camera) {
+        return new Builder(camera);
     }
 
     /** @return where the camera stands: the rays' common head (the lens centre with depth of field) */
@@ -389,7 +404,47 @@ public final class Camera {
         private boolean summary = true;
         private PrintStream output = System.out;
 
-        private Builder() {
+        /** The same as {@link Camera#getBuilder()}, for cohorts that write {@code new Camera.Builder()}. */
+        public Builder() {
+        }
+
+        /**
+         * A builder holding a built camera's settings, to change some and build another camera;
+         * the camera is not changed. The two share the tracer, and the image writer when one was
+         * given with {@link #setImageWriter}; a camera that made its own writer from
+         * {@link #setResolution} passes on the resolution, so each camera built makes its own.
+         * The direction is the camera's final frame (to and up); a thread count of -1 or -2 is
+         * passed on as the number of cores it became.
+         *
+         * @param camera the camera whose settings the builder starts from
+         * @throws NullPointerException when camera is null, naming it
+         */
+        public Builder(Camera camera) {
+            Objects.requireNonNull(camera, "camera to copy");
+            location = camera.location;
+            to = camera.vTo;
+            up = camera.vUp;
+            vpWidth = camera.vpWidth;
+            vpHeight = camera.vpHeight;
+            vpDistance = camera.vpDistance;
+            vpSizeSet = vpDistanceSet = true;
+            nX = camera.imageWriter.getNx();
+            nY = camera.imageWriter.getNy();
+            imageWriter = camera.ownWriter ? null : camera.imageWriter;
+            rayTracer = camera.rayTracer;
+            antiAliasing = camera.antiAliasing;
+            gridColumns = camera.gridColumns;
+            gridRows = camera.gridRows;
+            adaptiveDepth = camera.adaptiveDepth;
+            adaptiveThreshold = camera.adaptiveThreshold;
+            focalDistance = camera.focalDistance;
+            aperture = camera.aperture;
+            lensSamples = camera.lensSamples;
+            seed = camera.seed;
+            threads = camera.threads;
+            debugPrint = camera.debugPrint;
+            summary = camera.summary;
+            output = camera.output;
         }
 
         /**

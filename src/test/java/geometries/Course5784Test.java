@@ -21,6 +21,7 @@ import lighting.AmbientLight;
 import lighting.PointLight;
 import lighting.SpotLight;
 import primitives.Color;
+import primitives.Double3;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
@@ -225,6 +226,20 @@ class Course5784Test {
         }
 
         @Test
+        @DisplayName("getBuilder(camera): a second view rendered into the same image writer, which setImageWriter shares")
+        void secondViewSharesTheWriter() {
+            Scene scene = new Scene("5784 views").setBackground(new Color(0, 255, 0));
+            scene.geometries.add(new Sphere(new Point(0, 0, -10), 1).setEmission(new Color(255, 0, 0)));
+            ImageWriter writer = new ImageWriter("course-years/5784-views", 3, 3);
+            Camera front = Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), Vector.Y)
+                    .setVpSize(3, 3).setVpDistance(10).setImageWriter(writer).setRayTracer(new SimpleRayTracer(scene))
+                    .setSummary(false).build().renderImage();
+            assertThat(writer.getRgb(1, 1)).as("the sphere ahead").isEqualTo(0xFF0000);
+            Camera.getBuilder(front).setLocation(new Point(0, 0, -20)).build().renderImage();
+            assertThat(writer.getRgb(1, 1)).as("from behind the sphere, looking away: the background").isEqualTo(0x00FF00);
+        }
+
+        @Test
         @DisplayName("constructRay(nX, nY, j, i): the corner pixel of a 3x3 view plane")
         void constructRay() {
             Camera camera = Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), new Vector(0, 1, 0))
@@ -249,6 +264,30 @@ class Course5784Test {
             assertThatIllegalArgumentException().isThrownBy(() -> new PointLight(Color.BLACK, Point.ZERO).setKL(-1))
                     .withMessageContaining("kL").withMessageContaining("-1");
         }
+
+        @Test
+        @DisplayName("the lower-case-k setters setkC/kL/kQ: the same attenuation, chaining on each light's own type")
+        void lowerCaseKSetters() {
+            PointLight point = new PointLight(new Color(90, 90, 90), Point.ZERO).setkC(1).setkL(0.5).setkQ(0.25);
+            assertThat(point.getIntensity(new Point(2, 0, 0)).getR()).isCloseTo(30, within(1e-12));
+            SpotLight spot = new SpotLight(new Color(90, 90, 90), Point.ZERO, new Vector(1, 0, 0)).setkC(1).setkL(0.5)
+                    .setkQ(0.25).setNarrowBeam(1); // setNarrowBeam compiles only on a SpotLight
+            assertThat(spot.getIntensity(new Point(2, 0, 0)).getR()).isCloseTo(30, within(1e-12));
+            assertThatIllegalArgumentException().isThrownBy(() -> new SpotLight(Color.BLACK, Point.ZERO, Vector.X).setkQ(-0.5))
+                    .withMessageContaining("kQ").withMessageContaining("-0.5");
+            assertThatIllegalArgumentException().isThrownBy(() -> new PointLight(Color.BLACK, Point.ZERO).setkC(Double.NaN))
+                    .withMessageContaining("kC").withMessageContaining("NaN");
+        }
+
+        @Test
+        @DisplayName("a spot light's intensity at its own position: an IllegalArgumentException naming the point")
+        void spotAtItsOwnPosition() {
+            SpotLight spot = new SpotLight(new Color(90, 90, 90), new Point(1, 2, 3), new Vector(1, 0, 0));
+            assertThatIllegalArgumentException().isThrownBy(() -> spot.getIntensity(new Point(1, 2, 3)))
+                    .withMessageContaining("(1.0,2.0,3.0)").withMessageContaining("light's position");
+            assertThatIllegalArgumentException().isThrownBy(() -> spot.getL(new Point(1, 2, 3)))
+                    .withMessageContaining("(1.0,2.0,3.0)").withMessageContaining("light's position");
+        }
     }
 
     @Nested
@@ -262,6 +301,128 @@ class Course5784Test {
             Color c = new SimpleRayTracer(scene).traceRay(new Ray(Point.ZERO, new Vector(0, 0, -1)));
             assertThat(new double[] { c.getR(), c.getG(), c.getB() })
                     .containsExactly(new double[] { 40, 20, 10 }, within(1e-12));
+        }
+
+        @Test
+        @DisplayName("the lower-case-k setters setkA/kD/kS/kT/kR (double and Double3) set the same fields")
+        void lowerCaseKSetters() {
+            Material m = new Material().setkA(0.1).setkD(new Double3(0.2, 0.3, 0.4)).setkS(0.5).setkT(new Double3(0.6))
+                    .setkR(0.7);
+            assertThat(m.kA).isEqualTo(new Double3(0.1));
+            assertThat(m.kD).isEqualTo(new Double3(0.2, 0.3, 0.4));
+            assertThat(m.kS).isEqualTo(new Double3(0.5));
+            assertThat(m.kT).isEqualTo(new Double3(0.6));
+            assertThat(m.kR).isEqualTo(new Double3(0.7));
+            m.setkA(new Double3(1, 2, 3)).setkD(0.8).setkS(new Double3(0.9, 1, 1.1)).setkT(0.25).setkR(new Double3(0.5, 0, 1));
+            assertThat(m.kA).isEqualTo(new Double3(1, 2, 3));
+            assertThat(m.kD).isEqualTo(new Double3(0.8));
+            assertThat(m.kS).isEqualTo(new Double3(0.9, 1, 1.1));
+            assertThat(m.kT).isEqualTo(new Double3(0.25));
+            assertThat(m.kR).isEqualTo(new Double3(0.5, 0, 1));
+        }
+
+        @Test
+        @DisplayName("bad lower-case-k coefficients are rejected like their twins, naming them")
+        void lowerCaseKBadValues() {
+            assertThatIllegalArgumentException().isThrownBy(() -> new Material().setkD(-0.5)).withMessageContaining("kD")
+                    .withMessageContaining("-0.5");
+            assertThatIllegalArgumentException().isThrownBy(() -> new Material().setkT(new Double3(0.5, 1.5, 0)))
+                    .withMessageContaining("kT").withMessageContaining("1.5");
+            assertThatIllegalArgumentException().isThrownBy(() -> new Material().setkR(2)).withMessageContaining("kR")
+                    .withMessageContaining("2.0");
+            assertThatIllegalArgumentException().isThrownBy(() -> new Material().setkA(Double.NaN))
+                    .withMessageContaining("kA").withMessageContaining("NaN");
+        }
+    }
+
+    @Nested
+    @DisplayName("Vector.X, Y, Z (the axis names of several 5784 cohorts)")
+    class VectorTest {
+        @Test
+        @DisplayName("the positive unit axes, the very objects AXIS_X/Y/Z")
+        void axes() {
+            assertThat(new double[] { Vector.X.getX(), Vector.X.getY(), Vector.X.getZ() }).containsExactly(1, 0, 0);
+            assertThat(new double[] { Vector.Y.getX(), Vector.Y.getY(), Vector.Y.getZ() }).containsExactly(0, 1, 0);
+            assertThat(new double[] { Vector.Z.getX(), Vector.Z.getY(), Vector.Z.getZ() }).containsExactly(0, 0, 1);
+            assertThat(Vector.X).isSameAs(Vector.AXIS_X);
+            assertThat(Vector.Y).isSameAs(Vector.AXIS_Y);
+            assertThat(Vector.Z).isSameAs(Vector.AXIS_Z);
+            assertThat(Vector.X.crossProduct(Vector.Y)).as("right-handed").isEqualTo(Vector.Z);
+        }
+
+        @Test
+        @DisplayName("the lecturer's render tests: setDirection(Point.ZERO, Vector.Y) from (0,0,1000)")
+        void lookAtTheOrigin() {
+            Camera camera = Camera.getBuilder().setLocation(new Point(0, 0, 1000)).setDirection(Point.ZERO, Vector.Y)
+                    .setVpSize(200, 200).setVpDistance(1000).setImageWriter(new ImageWriter("unused", 2, 2))
+                    .setRayTracer(new SimpleRayTracer(new Scene("unused"))).build();
+            assertThat(camera.getVTo()).isEqualTo(new Vector(0, 0, -1));
+            assertThat(camera.getVUp()).isEqualTo(Vector.Y);
+            assertThat(camera.getVRight()).isEqualTo(Vector.X);
+            assertThat(camera.constructRay(2, 2, 0, 0)).isEqualTo(new Ray(new Point(0, 0, 1000), new Vector(-50, 50, -1000)));
+        }
+    }
+
+    @Nested
+    @DisplayName("findIntersections(ray, maxDistance) and the hook's null (5784)")
+    class DistanceTest {
+        private final Sphere sphere = new Sphere(new Point(0, 0, -5), 1);
+        private final Ray down = new Ray(Point.ZERO, new Vector(0, 0, -1));
+
+        @Test
+        @DisplayName("findIntersections(ray, max): the points within max, the one at max included; none: null")
+        void pointsWithinDistance() {
+            assertThat(sphere.findIntersections(down, 10)).containsExactly(new Point(0, 0, -4), new Point(0, 0, -6));
+            assertThat(sphere.findIntersections(down, 5)).containsExactly(new Point(0, 0, -4));
+            assertThat(sphere.findIntersections(down, 4)).as("exactly at maxDistance").containsExactly(new Point(0, 0, -4));
+            assertThat(sphere.findIntersections(down, 3.9)).isNull();
+            assertThat(new Geometries(sphere, new Plane(new Point(0, 0, -2), new Vector(0, 0, 1))).findIntersections(down, 4.5))
+                    .containsExactlyInAnyOrder(new Point(0, 0, -2), new Point(0, 0, -4));
+        }
+
+        @Test
+        @DisplayName("findGeoIntersectionsHelper returns null, not an empty list, when both hits are beyond maxDistance")
+        void helperNullBeyondDistance() {
+            assertThat(sphere.findGeoIntersectionsHelper(down, 3)).isNull();
+            assertThat(sphere.findGeoIntersectionsHelper(new Ray(Point.ZERO, new Vector(0, 0, 1)), 100)).isNull();
+            Tube tube = new Tube(1, new Ray(new Point(0, 5, 0), Vector.X));
+            assertThat(tube.findGeoIntersectionsHelper(new Ray(Point.ZERO, Vector.Y), 3)).isNull();
+            assertThat(tube.findGeoIntersectionsHelper(new Ray(Point.ZERO, Vector.Y), 4)).containsExactly(
+                    new GeoPoint(tube, new Point(0, 4, 0)));
+        }
+    }
+
+    @Nested
+    @DisplayName("Cylinder(height, radius, axis) (the order of one 5784 cohort)")
+    class CylinderTest {
+        @Test
+        @DisplayName("the same cylinder as (radius, axis, height)")
+        void heightRadiusAxis() {
+            Ray axis = new Ray(Point.ZERO, Vector.Z);
+            Cylinder cylinder = new Cylinder(2, 1, axis);
+            assertThat(cylinder.getHeight()).isEqualTo(2);
+            assertThat(cylinder.getRadius()).isEqualTo(1);
+            assertThat(cylinder.getAxis()).isSameAs(axis);
+            Ray across = new Ray(new Point(-3, 0, 1.5), Vector.X);
+            assertThat(cylinder.findIntersections(across)).containsExactly(new Point(-1, 0, 1.5), new Point(1, 0, 1.5));
+            assertThat(cylinder.findIntersections(new Ray(new Point(-3, 0, 2.5), Vector.X))).as("above the height").isNull();
+        }
+
+        @Test
+        @DisplayName("(height, axis, radius) has the course's types: it builds the course's (radius, axis, height) cylinder")
+        void ambiguousOrderIsTheCourses() {
+            Cylinder cylinder = new Cylinder(2, new Ray(Point.ZERO, Vector.Z), 1);
+            assertThat(cylinder.getRadius()).isEqualTo(2);
+            assertThat(cylinder.getHeight()).isEqualTo(1);
+        }
+
+        @Test
+        @DisplayName("bad values are rejected like the course order's, naming them")
+        void badValues() {
+            assertThatIllegalArgumentException().isThrownBy(() -> new Cylinder(0, 1, new Ray(Point.ZERO, Vector.Z)))
+                    .withMessageContaining("height").withMessageContaining("0.0");
+            assertThatIllegalArgumentException().isThrownBy(() -> new Cylinder(2, -1, new Ray(Point.ZERO, Vector.Z)))
+                    .withMessageContaining("radius").withMessageContaining("-1.0");
         }
     }
 }

@@ -29,6 +29,7 @@ import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Vector;
+import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.RayTracerType;
@@ -144,6 +145,44 @@ class Course5785Test {
             assertThat(images[0][20 * 40 + 20] & 0xFFFFFF).as("the sphere in the middle").isNotZero();
         }
 
+        @Test
+        @DisplayName("new Camera.Builder() is getBuilder()")
+        void publicBuilderConstructor() {
+            Camera camera = new Camera.Builder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), Y)
+                    .setVpSize(3, 3).setVpDistance(1).build();
+            assertThat(camera.constructRay(3, 3, 0, 0)).isEqualTo(new Ray(Point.ZERO, new Vector(-1, 1, -1)));
+            assertThat(camera.constructRay(3, 3, 0, 0)).isEqualTo(cameraBuilder.setDirection(new Vector(0, 0, -1), Y).build()
+                    .constructRay(3, 3, 0, 0));
+        }
+
+        @Test
+        @DisplayName("getBuilder(camera) starts from the camera's settings; its own writer per copy; the original unchanged")
+        void builderFromACamera() throws Exception {
+            Scene scene = new Scene("copy").setBackground(new Color(0, 0, 255));
+            Camera first = Camera.getBuilder().setLocation(new Point(1, 2, 3)).setDirection(new Point(1, 2, -7), Y)
+                    .setVpSize(4, 3).setVpDistance(10).setResolution(4, 3).setRayTracer(scene, RayTracerType.SIMPLE)
+                    .setAntiAliasing(AntiAliasing.RANDOM, 2, 3).setDepthOfField(12, 0.5).setSeed(7).setSummary(false).build();
+            Camera same = Camera.getBuilder(first).build();
+            assertThat(same.getLocation()).isEqualTo(new Point(1, 2, 3));
+            assertVector(same.getVTo(), 0, 0, -1);
+            assertVector(same.getVUp(), 0, 1, 0);
+            assertThat(same.describe()).isEqualTo(first.describe()).contains("RANDOM 2x3", "focal 12.0 aperture 0.5", "seed 7");
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 4; ++j) assertThat(same.constructRay(j, i)).isEqualTo(first.constructRay(j, i));
+
+            Camera moved = new Camera.Builder(first).setLocation(new Point(1, 2, 13)).build();
+            assertThat(moved.constructRay(0, 0)).isEqualTo(new Ray(new Point(1, 2, 13), new Vector(-1.5, 1, -10)));
+            assertThat(first.getLocation()).as("the original").isEqualTo(new Point(1, 2, 3));
+            moved.renderImage().writeToImage("course-years/5785-copy");
+            first.writeToImage("course-years/5785-original");
+            assertThat(ImageIO.read(Path.of("images/course-years/5785-copy.png").toFile()).getRGB(0, 0) & 0xFFFFFF)
+                    .isEqualTo(0x0000FF);
+            assertThat(ImageIO.read(Path.of("images/course-years/5785-original.png").toFile()).getRGB(0, 0) & 0xFFFFFF)
+                    .as("the original's image was not rendered into").isZero();
+            assertThatNullPointerException().isThrownBy(() -> Camera.getBuilder(null)).withMessageContaining("camera");
+            assertThatNullPointerException().isThrownBy(() -> new Camera.Builder(null)).withMessageContaining("camera");
+        }
+
         @ParameterizedTest(name = "{0}")
         @EnumSource(RayTracerType.class)
         @DisplayName("both tracer types trace like SimpleRayTracer (GRID: the BVH-accelerated tracer)")
@@ -224,6 +263,23 @@ class Course5785Test {
             assertThat(new AmbientLight(new Color(200, 100, 50)).getIntensity().distance(new Color(200, 100, 50))).isZero();
             assertThatNullPointerException().isThrownBy(() -> new AmbientLight(null)).withMessageContaining("ambient intensity");
         }
+
+        @Test
+        @DisplayName("the ambient render test as several cohorts write it, with setKa (double and Double3)")
+        void ambientWithSetKa() {
+            Scene scene = new Scene("kA").setAmbientLight(new AmbientLight(new Color(200, 100, 50)));
+            scene.geometries.add(new Sphere(10, new Point(0, 0, -50)).setMaterial(new Material().setKa(new Double3(0.5, 0.2, 0))),
+                    new Sphere(10, new Point(0, 0, 50)).setMaterial(new Material().setKa(0.25)));
+            SimpleRayTracer tracer = new SimpleRayTracer(scene);
+            Color c = tracer.traceRay(new Ray(Point.ZERO, new Vector(0, 0, -1)));
+            assertThat(new double[] { c.getR(), c.getG(), c.getB() }).containsExactly(new double[] { 100, 20, 0 }, within(1e-12));
+            c = tracer.traceRay(new Ray(Point.ZERO, new Vector(0, 0, 1)));
+            assertThat(new double[] { c.getR(), c.getG(), c.getB() }).containsExactly(new double[] { 50, 25, 12.5 }, within(1e-12));
+            assertThatIllegalArgumentException().isThrownBy(() -> new Material().setKa(-0.1)).withMessageContaining("kA")
+                    .withMessageContaining("-0.1");
+            assertThatIllegalArgumentException().isThrownBy(() -> new Material().setKa(new Double3(0, Double.POSITIVE_INFINITY, 0)))
+                    .withMessageContaining("kA").withMessageContaining("Infinity");
+        }
     }
 
     @Nested
@@ -273,6 +329,59 @@ class Course5785Test {
             i.vNormal = -0.5;
             assertThat(i).as("the mutable shading fields take no part").isEqualTo(new Intersection(sphere, new Point(0.2, 0.6, 0)));
             assertThatNullPointerException().isThrownBy(() -> new Intersection(null, Point.ZERO)).withMessageContaining("geometry");
+        }
+    }
+
+    @Nested
+    @DisplayName("Tube and Cylinder with the axis first (several cohorts' order)")
+    class AxisFirstTest {
+        private final Ray axis = new Ray(Point.ZERO, new Vector(0, 0, 1));
+        private final Ray across = new Ray(new Point(-3, 0, 1), new Vector(1, 0, 0));
+
+        @Test
+        @DisplayName("Tube(axis, radius) and Cylinder(axis, radius, height) are the course's shapes")
+        void axisFirst() {
+            Tube tube = new Tube(axis, 2);
+            assertThat(tube.getRadius()).isEqualTo(2);
+            assertThat(tube.getAxis()).isSameAs(axis);
+            assertThat(tube.calculateIntersections(across)).containsExactly(new Intersection(tube, new Point(-2, 0, 1)),
+                    new Intersection(tube, new Point(2, 0, 1)));
+            Cylinder cylinder = new Cylinder(axis, 2, 0.5);
+            assertThat(cylinder.getRadius()).isEqualTo(2);
+            assertThat(cylinder.getHeight()).isEqualTo(0.5);
+            assertThat(cylinder.calculateIntersections(across)).as("above the top cap").isNull();
+            assertThat(cylinder.calculateIntersections(new Ray(new Point(-3, 0, 0.25), new Vector(1, 0, 0))))
+                    .containsExactly(new Intersection(cylinder, new Point(-2, 0, 0.25)), new Intersection(cylinder, new Point(2, 0, 0.25)));
+        }
+
+        @Test
+        @DisplayName("bad values are rejected like the course order's, naming them")
+        void badValues() {
+            assertThatIllegalArgumentException().isThrownBy(() -> new Tube(axis, -2)).withMessageContaining("radius")
+                    .withMessageContaining("-2.0");
+            assertThatNullPointerException().isThrownBy(() -> new Tube(null, 2)).withMessageContaining("axis");
+            assertThatIllegalArgumentException().isThrownBy(() -> new Cylinder(axis, 1, Double.NaN))
+                    .withMessageContaining("height").withMessageContaining("NaN");
+        }
+
+        @Test
+        @DisplayName("calculateIntersectionsHelper returns null, not an empty list, when nothing is in range")
+        void helperNull() {
+            Tube tube = new Tube(axis, 2);
+            assertThat(tube.calculateIntersectionsHelper(across, 0.5)).isNull();
+            assertThat(tube.calculateIntersectionsHelper(new Ray(new Point(-3, 0, 1), new Vector(0, 1, 0)), 100)).isNull();
+            assertThat(new Cylinder(axis, 2, 0.5).calculateIntersectionsHelper(across, 100)).isNull();
+            assertThat(tube.calculateIntersectionsHelper(across, 1)).containsExactly(new Intersection(tube, new Point(-2, 0, 1)));
+        }
+
+        @Test
+        @DisplayName("getNormal of a point on the axis: an IllegalArgumentException naming the point")
+        void normalOnTheAxis() {
+            assertThatIllegalArgumentException().isThrownBy(() -> new Tube(axis, 2).getNormal(new Point(0, 0, 7)))
+                    .withMessageContaining("(0.0,0.0,7.0)").withMessageContaining("axis");
+            assertThatIllegalArgumentException().isThrownBy(() -> new Cylinder(axis, 2, 10).getNormal(new Point(0, 0, 5)))
+                    .withMessageContaining("(0.0,0.0,5.0)").withMessageContaining("axis");
+            assertVector(new Tube(axis, 2).getNormal(new Point(0, 2, 7)), 0, 1, 0);
         }
     }
 

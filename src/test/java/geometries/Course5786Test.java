@@ -4,9 +4,13 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatCode;
 import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
+import java.util.Set;
 import java.util.MissingResourceException;
 import java.util.function.Consumer;
 
@@ -17,6 +21,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 import geometries.Intersectable.Intersection;
+import lighting.AmbientLight;
+import primitives.Color;
 import primitives.Double3;
 import primitives.Point;
 import primitives.Ray;
@@ -91,6 +97,20 @@ class Course5786Test {
         }
 
         @Test
+        @DisplayName("Camera.getBuilder(camera) / new Camera.Builder(camera): the same rays; a changed copy leaves the camera be")
+        void builderFromACamera() {
+            Camera camera = view().setVpSize(8, 8).setVpDistance(10).setResolution(4, 4).build();
+            Camera copy = Camera.getBuilder(camera).build();
+            for (int i = 0; i < 4; ++i)
+                for (int j = 0; j < 4; ++j) assertThat(copy.constructRay(j, i)).isEqualTo(camera.constructRay(j, i));
+            Camera wider = new Camera.Builder(camera).setVpSize(16, 16).setResolution(2, 2).build();
+            assertThat(wider.constructRay(0, 0).direction()).isEqualTo(new Vector(-4, 4, -10).normalize());
+            assertThat(camera.constructRay(0, 0).direction()).as("the original").isEqualTo(new Vector(-3, 3, -10).normalize());
+            assertThatIllegalArgumentException().as("a copy's bad value is checked by build(), as for any builder")
+                    .isThrownBy(new Camera.Builder(camera).setVpDistance(-1)::build).withMessageContaining("-1.0");
+        }
+
+        @Test
         @DisplayName("a missing view-plane size or distance is an IllegalArgumentException")
         void missingViewPlaneIsIllegalArgument() {
             assertThatIllegalArgumentException().isThrownBy(view().setVpDistance(1)::build).withMessageContaining("view plane size");
@@ -131,6 +151,85 @@ class Course5786Test {
         void components() {
             Double3 d = new Double3(1.5, -2, 7);
             assertThat(new double[] { d._d1(), d._d2(), d._d3() }).containsExactly(1.5, -2, 7);
+        }
+    }
+
+    @Nested
+    @DisplayName("Color (5786: equals within the tolerance, hashCode)")
+    class ColorTest {
+        @Test
+        @DisplayName("equal channel by channel within the zero tolerance; assertEquals works as the course's tests use it")
+        void equalsWithinTolerance() {
+            Color c = new Color(100, 50.5, 0);
+            assertEquals(new Color(100, 50.5, 0), c);
+            assertEquals(new Color(100 + 1e-13, 50.5, 1e-13), c);
+            assertNotEquals(new Color(100 + 1e-9, 50.5, 0), c);
+            assertNotEquals(new Color(100, 50.5, 1e-9), c);
+            assertThat(c).isNotEqualTo(new java.awt.Color(100, 50, 0)).isNotEqualTo(null);
+            assertThat(new Color(20, 40, 60).scale(0.5)).isEqualTo(new Color(10, 20, 30));
+            assertThat(new Color(10, 20, 30).add(new Color(1, 2, 3))).isEqualTo(new Color(11, 22, 33));
+        }
+
+        @Test
+        @DisplayName("hashCode: equal colours hash alike (a constant, as no finer hash follows a tolerance)")
+        void hashCodeConsistent() {
+            Color c = new Color(100, 50.5, 0), near = new Color(100 + 1e-13, 50.5, 0);
+            assertThat(c).isEqualTo(near).hasSameHashCodeAs(near);
+            Set<Color> set = new HashSet<>(List.of(c, new Color(1, 2, 3)));
+            assertThat(set).contains(near, new Color(1, 2, 3)).doesNotContain(new Color(1, 2, 4));
+        }
+
+        @Test
+        @DisplayName("not transitive: a ≈ b and b ≈ c, yet a ≠ c (why the library never relies on it)")
+        void notTransitive() {
+            double step = 0x1p-41; // just below the tolerance 2^-40
+            Color a = new Color(1, 1, 1), b = new Color(1 + step, 1, 1), c = new Color(1 + 2 * step, 1, 1);
+            assertThat(a).isEqualTo(b);
+            assertThat(b).isEqualTo(c);
+            assertThat(a).isNotEqualTo(c);
+        }
+
+        @Test
+        @DisplayName("AmbientLight(c).getIntensity() equals c")
+        void ambientIntensity() {
+            Color c = new Color(200, 100, 50);
+            assertEquals(c, new AmbientLight(c).getIntensity());
+            assertEquals(Color.BLACK, AmbientLight.NONE.getIntensity());
+        }
+    }
+
+    @Nested
+    @DisplayName("Cylinder, Tube and the tree: calcIntersectionsHelper null, a ray along the side (5786)")
+    class CylinderTest {
+        private final Cylinder cylinder = new Cylinder(1, new Ray(Point.ZERO, new Vector(0, 0, 1)), 2);
+
+        @Test
+        @DisplayName("a ray lying on the side, parallel to the axis, meets nothing (a tangent is no hit)")
+        void alongTheSide() {
+            assertThat(cylinder.calcIntersections(new Ray(new Point(1, 0, -1), new Vector(0, 0, 1)))).isNull();
+            assertThat(cylinder.calcIntersections(new Ray(new Point(0, 1, 3), new Vector(0, 0, -1)))).isNull();
+            assertThat(new Tube(1, new Ray(Point.ZERO, new Vector(0, 0, 1)))
+                    .calcIntersections(new Ray(new Point(-1, 0, -1), new Vector(0, 0, 1)))).isNull();
+            assertThat(cylinder.calcIntersections(new Ray(new Point(0.5, 0, -1), new Vector(0, 0, 1))))
+                    .as("just inside: both caps").containsExactly(new Intersection(cylinder, new Point(0.5, 0, 0)),
+                            new Intersection(cylinder, new Point(0.5, 0, 2)));
+            assertThat(cylinder.calcIntersections(new Ray(new Point(2, 0, 3), new Vector(-1, 0, -1))))
+                    .as("through the rims, not along the side: both rim points")
+                    .containsExactly(new Intersection(cylinder, new Point(1, 0, 2)), new Intersection(cylinder, new Point(-1, 0, 0)));
+        }
+
+        @Test
+        @DisplayName("calcIntersectionsHelper returns null, not an empty list: cylinder, and the BVH over shapes")
+        void helperNull() {
+            Ray miss = new Ray(new Point(5, 5, 5), new Vector(1, 0, 0));
+            assertThat(cylinder.calcIntersectionsHelper(miss, Double.POSITIVE_INFINITY)).isNull();
+            Ray up = new Ray(new Point(0, 0, -1), new Vector(0, 0, 1));
+            assertThat(cylinder.calcIntersectionsHelper(up, 0.5)).isNull();
+            Bvh tree = Bvh.build(new Geometries(cylinder, new Sphere(new Point(10, 0, 0), 1)));
+            assertThat(tree.calcIntersectionsHelper(miss, Double.POSITIVE_INFINITY)).isNull();
+            assertThat(tree.calcIntersectionsHelper(up, 0.5)).isNull();
+            assertThat(tree.findGeoIntersectionsHelper(up, 0.5)).isNull();
+            assertThat(tree.calcIntersectionsHelper(up, 1)).containsExactly(new Intersection(cylinder, new Point(0, 0, 0)));
         }
     }
 

@@ -10,7 +10,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
-/** Colours have no equals on purpose; components are compared exactly where the arithmetic is exact. */
+/** Components are compared exactly where the arithmetic is exact; the course's tolerant equals is tested in Course5786Test. */
 class ColorTest {
     private final Color c = new Color(10, 20, 30);
 
