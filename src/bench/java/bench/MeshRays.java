@@ -1,0 +1,118 @@
+package bench;
+
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import geometries.Bvh;
+import geometries.Geometries;
+import geometries.Hit;
+import geometries.TriangleMesh;
+
+/**
+ * The library's half of {@code scripts/embree_benchmark.py}: the same triangles and the same rays
+ * as Embree gets, each ray one closest-hit query through the library's BVH on a reused
+ * {@link Hit} (no shading, no ray objects), timed over whole passes. The script writes the mesh
+ * and the rays, runs this once per mesh and thread count, and compares the distances with
+ * Embree's.
+ *
+ * <p>Files are little-endian: a mesh is {@code int32 vertices, int32 triangles, float64 xyz per
+ * vertex, int32 three indices per triangle}; rays are {@code int32 count, float64 origin and
+ * direction per ray}. The output is one {@code float64} distance per ray (NaN for a miss) and one
+ * JSON line on standard output.
+ *
+ * <pre>java -cp CLASSES bench.MeshRays MESH RAYS THREADS PASSES OUT</pre>
+ */
+public final class MeshRays {
+    /** Rays a worker claims at a time: whole image rows of a 512-wide view, in order. */
+    private static final int CHUNK = 2048;
+    /** Untimed passes first, so that the timed ones run compiled code. */
+    private static final int WARM_UP = 2;
+
+    private MeshRays() {
+    }
+
+    /**
+     * @param args the mesh file, the rays file, the thread count, the timed passes and the output file
+     * @throws IOException when a file cannot be read or written
+     * @throws InterruptedException when interrupted while the workers run
+     */
+    public static void main(String[] args) throws IOException, InterruptedException {
+        if (args.length != 5)
+            throw new IllegalArgumentException("usage: MeshRays MESH RAYS THREADS PASSES OUT, got " + Arrays.toString(args));
+        ByteBuffer mesh = read(Path.of(args[0]));
+        int vertices = mesh.getInt(), triangles = mesh.getInt();
+        double[] positions = new double[3 * vertices];
+        mesh.asDoubleBuffer().get(positions);
+        mesh.position(8 + 8 * positions.length);
+        int[] indices = new int[3 * triangles];
+        mesh.asIntBuffer().get(indices);
+        ByteBuffer rayFile = read(Path.of(args[1]));
+        int count = rayFile.getInt();
+        double[] rays = new double[6 * count];
+        rayFile.asDoubleBuffer().get(rays);
+        int threads = Integer.parseInt(args[2]), passes = Integer.parseInt(args[3]);
+
+        Geometries scene = new Geometries(new TriangleMesh(positions, indices));
+        double[] builds = new double[3];
+        Bvh bvh = null;
+        for (int i = 0; i < builds.length; ++i) {
+            long start = System.nanoTime();
+            bvh = Bvh.build(scene, threads);
+            builds[i] = (System.nanoTime() - start) / 1e9;
+        }
+        double[] t = new double[count];
+        List<Double> times = new ArrayList<>();
+        for (int pass = 0; pass < WARM_UP + passes; ++pass) {
+            long start = System.nanoTime();
+            trace(bvh, rays, t, threads);
+            if (pass >= WARM_UP) times.add((System.nanoTime() - start) / 1e9);
+        }
+        try (OutputStream file = Files.newOutputStream(Path.of(args[4]));
+             DataOutputStream out = new DataOutputStream(new java.io.BufferedOutputStream(file))) {
+            for (double d : t) out.writeLong(Long.reverseBytes(Double.doubleToRawLongBits(d)));
+        }
+        long hits = Arrays.stream(t).filter(d -> !Double.isNaN(d)).count();
+        times.sort(null);
+        Arrays.sort(builds);
+        System.out.println(String.format(Locale.ROOT,
+                "{\"triangles\": %d, \"rays\": %d, \"hits\": %d, \"threads\": %d, \"build_s\": %.4f, \"trace_s\": %s, \"median_trace_s\": %.5f}",
+                triangles, count, hits, threads, builds[builds.length / 2], times, times.get(times.size() / 2)));
+    }
+
+    private static ByteBuffer read(Path file) throws IOException {
+        return ByteBuffer.wrap(Files.readAllBytes(file)).order(ByteOrder.LITTLE_ENDIAN);
+    }
+
+    /** One pass over every ray on {@code threads} workers, chunks claimed in order. */
+    private static void trace(Bvh bvh, double[] rays, double[] t, int threads) throws InterruptedException {
+        AtomicInteger next = new AtomicInteger();
+        Runnable worker = () -> {
+            Hit hit = new Hit();
+            for (int from; (from = next.getAndAdd(CHUNK)) < t.length;) {
+                int to = Math.min(t.length, from + CHUNK);
+                for (int i = from; i < to; ++i) {
+                    int r = 6 * i;
+                    hit.setRay(rays[r], rays[r + 1], rays[r + 2], rays[r + 3], rays[r + 4], rays[r + 5]);
+                    t[i] = bvh.closestHit(hit.reset(Double.POSITIVE_INFINITY)) ? hit.getT() : Double.NaN;
+                }
+            }
+        };
+        if (threads == 1) {
+            worker.run();
+            return;
+        }
+        Thread[] workers = new Thread[threads];
+        for (int i = 0; i < threads; ++i) (workers[i] = new Thread(worker)).start();
+        for (Thread w : workers) w.join();
+    }
+}
