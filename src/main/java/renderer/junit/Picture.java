@@ -8,6 +8,7 @@ import java.io.InputStream;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
+import java.util.function.IntBinaryOperator;
 
 import javax.imageio.ImageIO;
 
@@ -39,16 +40,7 @@ record Picture(int width, int height, int channels, float[] values) {
 
     /** @return the render held by {@code image}: RGB, as its PNG would hold it */
     static Picture of(ImageWriter image) {
-        int w = image.getNx(), h = image.getNy();
-        float[] v = new float[w * h * 3];
-        for (int y = 0, i = 0; y < h; ++y)
-            for (int x = 0; x < w; ++x) {
-                int rgb = image.getRgb(x, y);
-                v[i++] = ((rgb >> 16) & 0xFF) * BYTE_SCALE;
-                v[i++] = ((rgb >> 8) & 0xFF) * BYTE_SCALE;
-                v[i++] = (rgb & 0xFF) * BYTE_SCALE;
-            }
-        return new Picture(w, h, 3, v);
+        return packed(image.getNx(), image.getNy(), false, image::getRgb);
     }
 
     /**
@@ -113,11 +105,16 @@ record Picture(int width, int height, int channels, float[] values) {
     }
 
     private static Picture expand(BufferedImage image, IndexColorModel palette) {
-        int w = image.getWidth(), h = image.getHeight(), n = palette.hasAlpha() ? 4 : 3;
+        return packed(image.getWidth(), image.getHeight(), palette.hasAlpha(), image::getRGB);
+    }
+
+    /** The pixels of packed 0xAARRGGBB values, {@code argbAt(x, y)}: RGB, or RGBA with {@code alpha}. */
+    private static Picture packed(int w, int h, boolean alpha, IntBinaryOperator argbAt) {
+        int n = alpha ? 4 : 3;
         float[] v = new float[w * h * n];
         for (int y = 0, i = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
-                int argb = image.getRGB(x, y);
+                int argb = argbAt.applyAsInt(x, y);
                 v[i++] = ((argb >> 16) & 0xFF) * BYTE_SCALE;
                 v[i++] = ((argb >> 8) & 0xFF) * BYTE_SCALE;
                 v[i++] = (argb & 0xFF) * BYTE_SCALE;
