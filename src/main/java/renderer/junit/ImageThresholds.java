@@ -29,6 +29,11 @@ public record ImageThresholds(double failThreshold, double failPercent, double h
     /**
      * Checks every limit, as the verification script checks its thresholds file.
      *
+     * @param failThreshold a pixel fails above this difference
+     * @param failPercent   the image fails when more than this percentage of its pixels fail, 0..100
+     * @param hardFail      the image fails when any difference exceeds this
+     * @param warnThreshold a pixel warns above this difference
+     * @param warnPercent   a passing image warns when more than this percentage of its pixels warn, 0..100
      * @throws IllegalArgumentException naming the limit when it is negative or not finite, or when a
      *                                  percentage exceeds 100
      */

@@ -172,6 +172,33 @@ class ImageAssertionsTest {
         }
 
         @Test
+        @DisplayName("a camera's image holds the very values of the PNG it writes (the parity proof reads PNGs)")
+        void cameraAsItsPng() throws Exception {
+            ImageWriter image = writer(gradient());
+            image.writeToImage(dir.resolve("gradient.png"));
+            Picture fromPng = Picture.read(dir.resolve("gradient.png"), "render");
+            assertThat(fromPng.channels()).isEqualTo(3);
+            assertThat(Picture.of(image).values()).containsExactly(fromPng.values());
+        }
+
+        @Test
+        @DisplayName("a palette PNG is read as RGB, as OpenImageIO expands it")
+        void palette() throws Exception {
+            BufferedImage indexed = new BufferedImage(W, H, BufferedImage.TYPE_BYTE_INDEXED);
+            BufferedImage rgb = new BufferedImage(W, H, BufferedImage.TYPE_INT_RGB);
+            int[] colours = gradient();
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x) indexed.setRGB(x, y, colours[y * W + x]);
+            for (int y = 0; y < H; ++y)
+                for (int x = 0; x < W; ++x) rgb.setRGB(x, y, indexed.getRGB(x, y));
+            ImageIO.write(indexed, "png", dir.resolve("indexed.png").toFile());
+            ImageIO.write(rgb, "png", dir.resolve("rgb.png").toFile());
+            Picture a = Picture.read(dir.resolve("indexed.png"), "render"), b = Picture.read(dir.resolve("rgb.png"), "reference");
+            assertThat(a.channels()).isEqualTo(3);
+            assertThat(a.values()).containsExactly(b.values());
+        }
+
+        @Test
         @DisplayName("a 16-bit grey PNG reads on the same 0..1 scale as an 8-bit one")
         void sixteenBits() throws Exception {
             BufferedImage eight = new BufferedImage(4, 1, BufferedImage.TYPE_BYTE_GRAY);
