@@ -3,6 +3,7 @@ package renderer;
 import java.io.PrintStream;
 import java.util.MissingResourceException;
 import java.util.Objects;
+import java.util.function.BiConsumer;
 
 import primitives.Color;
 import primitives.Point;
@@ -58,6 +59,8 @@ public final class Camera {
     private final double debugPrint; // percent between progress lines; 0: none
     private final boolean summary;
     private final PrintStream output;
+    /** Told of each finished render (issue 28: a test's report); by default nobody. */
+    private final BiConsumer<? super Camera, ? super RenderStats> renderListener;
     // Per camera ray these are constants: computed once here, by the very operations the ray
     // used to repeat (so the rays keep their bits), off the path of every camera ray: two of
     // them are divisions.
@@ -90,6 +93,7 @@ public final class Camera {
         debugPrint = b.debugPrint;
         summary = b.summary;
         output = b.output;
+        renderListener = b.renderListener;
         centreX = location.getX() + vTo.getX() * vpDistance;
         centreY = location.getY() + vTo.getY() * vpDistance;
         centreZ = location.getZ() + vTo.getZ() * vpDistance;
@@ -143,6 +147,15 @@ public final class Camera {
     /** @return the image's unit right direction: vTo × vUp */
     public Vector getVRight() {
         return vRight;
+    }
+
+    /**
+     * @return the image writer this camera renders into (the one given to the builder, or the one
+     *         it made for {@link Builder#setResolution}): its pixels, size and name, for reading a
+     *         render back, for example to compare it with a reference image
+     */
+    public ImageWriter getImageWriter() {
+        return imageWriter;
     }
 
     /**
@@ -295,6 +308,7 @@ public final class Camera {
      */
     public RenderStats render() {
         RenderStats stats = new RenderLoop(this).run();
+        renderListener.accept(this, stats);
         if (summary) output.println("render " + imageWriter.getImageName() + " " + imageWriter.getNx() + "x"
                 + imageWriter.getNy() + " [" + describe() + "]: " + stats);
         return stats;
@@ -403,6 +417,8 @@ public final class Camera {
         private double debugPrint;
         private boolean summary = true;
         private PrintStream output = System.out;
+        private BiConsumer<? super Camera, ? super RenderStats> renderListener = (camera, stats) -> {
+        };
 
         /** The same as {@link Camera#getBuilder()}, for cohorts that write {@code new Camera.Builder()}. */
         public Builder() {
@@ -749,6 +765,21 @@ public final class Camera {
          */
         public Builder setOutput(PrintStream output) {
             this.output = Objects.requireNonNull(output, "output stream");
+            return this;
+        }
+
+        /**
+         * Someone to tell of each render, after the render loop and before the summary line: for
+         * example {@code renderer.junit.RenderReports.to(testReporter)}, which publishes the
+         * render's figures in a JUnit test's report. It runs on the thread that called
+         * {@link Camera#render()}.
+         *
+         * @param listener called with the camera and what its render did
+         * @return this builder
+         * @throws NullPointerException when it is null
+         */
+        public Builder setRenderListener(BiConsumer<? super Camera, ? super RenderStats> listener) {
+            this.renderListener = Objects.requireNonNull(listener, "render listener");
             return this;
         }
 
