@@ -60,11 +60,15 @@ def gradient(w: int = 32, h: int = 24, c: int = 3) -> np.ndarray:
 def project(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     """A project root laid out like the real one, used as the working directory."""
     (tmp_path / "images" / "reference").mkdir(parents=True)
-    (tmp_path / "images" / "golden").mkdir()
+    (tmp_path / "target" / "test-run" / "images" / "golden").mkdir(parents=True)
     write_thresholds(tmp_path, DEFAULT_THRESHOLDS)
     monkeypatch.chdir(tmp_path)
     monkeypatch.delenv("CI", raising=False)
     return tmp_path
+
+
+# Where the golden suite writes its renders, relative to the project root (the script's default).
+GOLDEN = Path("target/test-run/images/golden")
 
 
 def write_thresholds(root: Path, data: object) -> None:
@@ -72,7 +76,7 @@ def write_thresholds(root: Path, data: object) -> None:
 
 
 def add_pair(root: Path, name: str, render: np.ndarray, reference: np.ndarray) -> None:
-    write_png(root / "images" / "golden" / name, render)
+    write_png(root / GOLDEN / name, render)
     write_png(root / "images" / "reference" / name, reference)
 
 
@@ -178,7 +182,7 @@ def test_channel_count_mismatch_fails(project: Path, capsys: pytest.CaptureFixtu
 
 def test_unreadable_render_is_an_error(project: Path, capsys: pytest.CaptureFixture[str]) -> None:
     write_png(project / "images" / "reference" / "broken.png", gradient())
-    (project / "images" / "golden" / "broken.png").write_bytes(b"not a png")
+    (project / GOLDEN / "broken.png").write_bytes(b"not a png")
     r = run(capsys)
     assert r.code == 1
     assert "ERROR  broken.png  cannot read" in r.out
@@ -203,7 +207,7 @@ def test_warning_does_not_fail(project: Path, capsys: pytest.CaptureFixture[str]
 def test_missing_reference_and_missing_render_are_failures(
     project: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    write_png(project / "images" / "golden" / "new.png", gradient())
+    write_png(project / GOLDEN / "new.png", gradient())
     write_png(project / "images" / "reference" / "gone.png", gradient())
     r = run(capsys)
     assert r.code == 1
@@ -220,7 +224,7 @@ def test_missing_reference_and_missing_render_are_failures(
 def test_allow_new_accepts_missing_reference_but_not_missing_render(
     project: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    write_png(project / "images" / "golden" / "new.png", gradient())
+    write_png(project / GOLDEN / "new.png", gradient())
     r = run(capsys, "--allow-new")
     assert r.code == 0
     assert "MISSING-REFERENCE  new.png" in r.out
@@ -234,8 +238,8 @@ def test_reference_folder_inside_renders_is_not_a_render(
     project: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     add_pair(project, "a.png", gradient(), gradient())
-    (project / "images" / "golden" / "sub").mkdir()
-    write_png(project / "images" / "golden" / "sub" / "nested.png", gradient())
+    (project / GOLDEN / "sub").mkdir()
+    write_png(project / GOLDEN / "sub" / "nested.png", gradient())
     r = run(capsys)
     assert r.last_line == "1 passed, 0 failed"
     assert "nested.png" not in r.out
@@ -286,7 +290,7 @@ def test_invalid_json_exit_2(project: Path, capsys: pytest.CaptureFixture[str]) 
         (["--renders", "nope"], "renders folder not found: nope"),
         (["--references", "nope"], "references folder not found: nope"),
         (["--thresholds", "nope.json"], "thresholds file not found: nope.json"),
-        (["--references", "images/golden"], "renders and references are the same folder"),
+        (["--references", str(GOLDEN)], "renders and references are the same folder"),
     ],
 )
 def test_bad_paths_exit_2(
@@ -413,7 +417,7 @@ def test_update_copies_new_and_changed_only(
     changed[0, 0, 0] += 1
     add_pair(project, "changed.png", changed, gradient())
     add_pair(project, "same.png", gradient(), gradient())
-    write_png(project / "images" / "golden" / "new.png", gradient())
+    write_png(project / GOLDEN / "new.png", gradient())
     same_ref = project / "images" / "reference" / "same.png"
     same_mtime = same_ref.stat().st_mtime_ns
 
@@ -426,9 +430,9 @@ def test_update_copies_new_and_changed_only(
     assert r.last_line == "3 passed, 0 failed"
     assert same_ref.stat().st_mtime_ns == same_mtime
     ref_dir = project / "images" / "reference"
-    assert (ref_dir / "new.png").read_bytes() == (project / "images" / "golden" / "new.png").read_bytes()
+    assert (ref_dir / "new.png").read_bytes() == (project / GOLDEN / "new.png").read_bytes()
     assert (ref_dir / "changed.png").read_bytes() == (
-        project / "images" / "golden" / "changed.png"
+        project / GOLDEN / "changed.png"
     ).read_bytes()
 
     assert run(capsys).last_line == "3 passed, 0 failed"
@@ -452,7 +456,7 @@ def test_update_refused_under_ci(
     ci_value: str,
 ) -> None:
     monkeypatch.setenv("CI", ci_value)
-    write_png(project / "images" / "golden" / "new.png", gradient())
+    write_png(project / GOLDEN / "new.png", gradient())
     r = run(capsys, "--update")
     assert r.code == 2
     assert "--update refuses to run when CI is set" in r.err
@@ -463,7 +467,7 @@ def test_update_allowed_with_empty_ci(
     project: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
 ) -> None:
     monkeypatch.setenv("CI", "")
-    write_png(project / "images" / "golden" / "new.png", gradient())
+    write_png(project / GOLDEN / "new.png", gradient())
     assert run(capsys, "--update").code == 0
     assert (project / "images" / "reference" / "new.png").exists()
 

@@ -34,8 +34,9 @@ import renderer.junit.Comparison.Status;
  * ImageAssertions.assertImageMatches(camera, "spheres");   // src/test/resources/spheres.png
  * }</pre>
  *
- * <p><b>References</b> are PNG files under {@code src/test/resources} (relative to the working
- * directory, the project root under Maven and in IDEs; see {@link #withReferenceFolder}), named
+ * <p><b>References</b> are PNG files under {@code src/test/resources} of the project (the folder
+ * Maven's Surefire names in the system property {@code basedir}; without it, as in an IDE, the
+ * working directory, which is the project there; see {@link #withReferenceFolder}), named
  * by a relative path with or without ".png". They are read from that folder, not from the class
  * path, so that recording one and comparing with it touch the same file.
  *
@@ -58,10 +59,12 @@ import renderer.junit.Comparison.Status;
 public final class ImageAssertions {
     /** The system property that turns recording on: {@code -Draytracer.updateReferences=true}. */
     public static final String UPDATE_PROPERTY = "raytracer.updateReferences";
-    /** Where references are, by default: {@code src/test/resources}. */
-    public static final Path DEFAULT_REFERENCE_FOLDER = Path.of("src", "test", "resources");
-    /** Where a camera's failed render and its diff images go, by default: {@code target/image-assertions}. */
-    public static final Path DEFAULT_OUTPUT_FOLDER = Path.of("target", "image-assertions");
+    /** The project folder: Surefire's {@code basedir}, else the working directory (an IDE's run). */
+    private static final String PROJECT = System.getProperty("basedir", "");
+    /** Where references are, by default: the project's {@code src/test/resources}. */
+    public static final Path DEFAULT_REFERENCE_FOLDER = Path.of(PROJECT, "src", "test", "resources");
+    /** Where a camera's failed render and its diff images go, by default: the project's {@code target/image-assertions}. */
+    public static final Path DEFAULT_OUTPUT_FOLDER = Path.of(PROJECT, "target", "image-assertions");
 
     private static final ImageAssertions DEFAULTS = new ImageAssertions(ImageThresholds.DEFAULTS, DEFAULT_REFERENCE_FOLDER,
             DEFAULT_OUTPUT_FOLDER, null, System::getenv, System::getProperty);
