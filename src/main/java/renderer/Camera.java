@@ -1,6 +1,8 @@
 package renderer;
 
 import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.Locale;
 import java.util.MissingResourceException;
 import java.util.Objects;
 
@@ -279,10 +281,25 @@ public final class Camera {
      * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
      */
     public RenderStats render() {
-        RenderStats stats = new RenderLoop(this).run();
-        if (summary) output.println("render " + imageWriter.getImageName() + " " + imageWriter.getNx() + "x"
+        String name = imageLabel();
+        RenderEvent event = new RenderEvent();
+        event.begin();
+        RenderStats stats = new RenderLoop(this, name).run();
+        event.end();
+        event.commit(name, imageWriter, antiAliasing, stats);
+        if (summary) output.println("render " + name + " " + imageWriter.getNx() + "x"
                 + imageWriter.getNy() + " [" + describe() + "]: " + stats);
         return stats;
+    }
+
+    /**
+     * The name summaries, progress lines and the JFR event give the image: its writer's name, or
+     * for an unnamed writer (named only when written) the calling test method
+     * ({@code SpheresTest.twoSpheres()}), or {@code (unnamed)} outside a test.
+     */
+    private String imageLabel() {
+        return imageWriter.hasName() ? imageWriter.getImageName()
+                : CallingTest.find().orElse(imageWriter.getImageName());
     }
 
     /**
@@ -346,7 +363,7 @@ public final class Camera {
      *                               {@link Builder#setResolution}): use {@link #writeToImage(String)}
      */
     public void writeToImage() {
-        imageWriter.writeToImage();
+        write(imageWriter.getPath());
     }
 
     /**
@@ -356,7 +373,15 @@ public final class Camera {
      * @throws IllegalArgumentException for a blank name
      */
     public void writeToImage(String imageName) {
-        imageWriter.writeToImage(imageName);
+        write(ImageWriter.pathOf(imageName));
+    }
+
+    /** Writes the PNG and, unless silenced, a line with the image's name, the file and the time it took. */
+    private void write(Path file) {
+        long start = System.nanoTime();
+        imageWriter.writeToImage(file);
+        if (summary) output.println(String.format(Locale.ROOT, "write %s: %s in %.3f s", imageLabel(),
+                file.toAbsolutePath(), (System.nanoTime() - start) / 1e9));
     }
 
     /**

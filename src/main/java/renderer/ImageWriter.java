@@ -99,6 +99,11 @@ public class ImageWriter {
         return imageName == null ? "(unnamed)" : imageName;
     }
 
+    /** @return whether the writer was made with a name (the 2023–24 form) */
+    boolean hasName() {
+        return imageName != null;
+    }
+
     /**
      * Sets pixel (column x, row y), clamping each channel to 0..255.
      *
@@ -178,7 +183,12 @@ public class ImageWriter {
      * @throws IllegalArgumentException for a blank name
      */
     public void writeToImage(String imageName) {
-        writeToImage(IMAGES.resolve(checkName(imageName) + ".png"));
+        writeToImage(pathOf(imageName));
+    }
+
+    /** images/&lt;imageName&gt;.png, after checking the name (not blank). */
+    static Path pathOf(String imageName) {
+        return IMAGES.resolve(checkName(imageName) + ".png");
     }
 
     /**

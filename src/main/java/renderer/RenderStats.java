@@ -38,7 +38,7 @@ public record RenderStats(double seconds, long pixels, long cameraRays, long sha
         return String.format(Locale.ROOT,
                 "%.3f s, %d px, rays: camera %d, shadow %d, secondary %d, %.2f camera rays per px, %.2f Mrays/s (all rays), %s, prepared in %.3f s",
                 seconds, pixels, cameraRays, shadowRays, secondaryRays, samplesPerPixel(), mraysPerSecond(),
-                threads == 0 ? "calling thread" : threads + " threads", prepareSeconds);
+                threads == 0 ? "calling thread" : threads == 1 ? "1 thread" : threads + " threads", prepareSeconds);
     }
 
     /** Thread-safe accumulation of the workers' counters. */
