@@ -6,7 +6,10 @@ import java.util.Locale;
 import java.util.MissingResourceException;
 import java.util.Objects;
 
+import jdk.jfr.FlightRecorder;
+
 import primitives.Color;
+import primitives.CourseClassGuard;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -282,11 +285,9 @@ public final class Camera {
      */
     public RenderStats render() {
         String name = imageLabel();
-        RenderEvent event = new RenderEvent();
-        event.begin();
+        RenderEvent event = FlightRecorder.isInitialized() ? new RenderEvent() : null; // see RenderEvent
         RenderStats stats = new RenderLoop(this, name).run();
-        event.end();
-        event.commit(name, imageWriter, antiAliasing, stats);
+        if (event != null) event.commit(name, imageWriter, antiAliasing, stats);
         if (summary) output.println("render " + name + " " + imageWriter.getNx() + "x"
                 + imageWriter.getNy() + " [" + describe() + "]: " + stats);
         return stats;
@@ -415,6 +416,7 @@ public final class Camera {
         private PrintStream output = System.out;
 
         private Builder() {
+            CourseClassGuard.check();
         }
 
         /**

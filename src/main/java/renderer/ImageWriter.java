@@ -16,6 +16,7 @@ import java.util.Objects;
 import javax.imageio.ImageIO;
 
 import primitives.Color;
+import primitives.CourseClassGuard;
 
 /**
  * A pixel buffer of {@code nX × nY} pixels written as a PNG. {@code x} is the column (0 at the
@@ -55,6 +56,7 @@ public class ImageWriter {
     }
 
     private ImageWriter(int nX, int nY, String imageName) {
+        CourseClassGuard.check();
         if (nX <= 0 || nY <= 0)
             throw new IllegalArgumentException("image size must be positive, got " + nX + "x" + nY);
         if ((long) nX * nY > Integer.MAX_VALUE - 8)

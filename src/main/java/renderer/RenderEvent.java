@@ -3,6 +3,7 @@ package renderer;
 import jdk.jfr.Category;
 import jdk.jfr.Description;
 import jdk.jfr.Event;
+import jdk.jfr.FlightRecorder;
 import jdk.jfr.Label;
 import jdk.jfr.Name;
 import jdk.jfr.Timespan;
@@ -10,9 +11,13 @@ import jdk.jfr.Timespan;
 /**
  * A JDK Flight Recorder event for each {@link Camera#render()}, so that a recording (or an IDE's
  * profiler, which records with JFR) shows each render on the timeline with what it rendered.
- * Its duration covers the scene's preparation and the render loop, not the PNG write. With no
- * recording running, {@code begin}, {@code end} and {@link #commit(String, ImageWriter, AntiAliasing, RenderStats)}
- * do nothing.
+ * Its duration covers the scene's preparation and the render loop, not the PNG write.
+ * <p>The camera makes one only once the flight recorder is initialised in this JVM (a recording
+ * was started, by {@code -XX:StartFlightRecording}, {@code jcmd}, a profiler or the JFR API):
+ * the first JFR event class a JVM initialises sets up JFR's machinery, hundreds of classes and
+ * longer than a small render, and that must not fall on every first render. With the recorder
+ * initialised but no recording asking for the event, {@link #commit(String, ImageWriter,
+ * AntiAliasing, RenderStats)} does nothing.
  */
 @Name(RenderEvent.NAME)
 @Label("Render")
@@ -58,8 +63,17 @@ final class RenderEvent extends Event {
     @Description("Reflected and refracted rays")
     long secondaryRays;
 
-    /** Fills in what the render did and commits the event, if a recording asks for it. */
+    /**
+     * Begins the event: made just before the render, and only when
+     * {@link FlightRecorder#isInitialized()} (see the class comment).
+     */
+    RenderEvent() {
+        begin();
+    }
+
+    /** Ends the event, fills in what the render did and commits it, if a recording asks for it. */
     void commit(String image, ImageWriter writer, AntiAliasing sampling, RenderStats stats) {
+        end();
         if (!shouldCommit()) return;
         this.image = image;
         this.width = writer.getNx();
