@@ -278,7 +278,11 @@ public final class Camera {
 
     /**
      * Renders the image into the image writer and returns what it did; prints the one-line
-     * summary unless silenced.
+     * summary unless silenced ({@code render NAME WxH [sampling]: figures}, the figures being
+     * {@link RenderStats#toString()}). NAME is the image writer's name or, for a writer named only
+     * when written ({@link Builder#setResolution}), the calling test method's
+     * ({@code SpheresTest.twoSpheres()}). While a JDK Flight Recorder recording runs, the render
+     * is also a {@code raytracer.Render} event.
      *
      * @return the render's time and ray counts, as printed in the summary
      * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
@@ -358,7 +362,9 @@ public final class Camera {
     }
 
     /**
-     * Writes the image to images/&lt;name&gt;.png, the name the image writer was made with.
+     * Writes the image to images/&lt;name&gt;.png, the name the image writer was made with, and
+     * unless silenced prints {@code write NAME: /absolute/path.png in 0.031 s} (NAME as in the
+     * render's summary).
      *
      * @throws IllegalStateException when the camera's writer has no name (it was made from
      *                               {@link Builder#setResolution}): use {@link #writeToImage(String)}
@@ -368,7 +374,8 @@ public final class Camera {
     }
 
     /**
-     * Writes the image to images/&lt;imageName&gt;.png (the 2024–25 course's form).
+     * Writes the image to images/&lt;imageName&gt;.png (the 2024–25 course's form) and prints the
+     * line of {@link #writeToImage()}.
      *
      * @param imageName the file name without ".png"; may contain sub-folders
      * @throws IllegalArgumentException for a blank name
@@ -706,7 +713,8 @@ public final class Camera {
         }
 
         /**
-         * @param on whether to print the one-line summary after each render (default true)
+         * @param on whether to print the one-line summary after each render and the line with the
+         *           file and its time after each write (default true)
          * @return this builder
          */
         public Builder setSummary(boolean on) {
@@ -715,7 +723,7 @@ public final class Camera {
         }
 
         /**
-         * @param output where progress lines and the summary go (default System.out)
+         * @param output where progress lines, the summary and the write line go (default System.out)
          * @return this builder
          * @throws NullPointerException when it is null
          */

@@ -95,7 +95,7 @@ public class ImageWriter {
 
     /**
      * @return the name given to the constructor, or {@code "(unnamed)"} for a writer made without
-     *         one (the name progress lines and the render summary show)
+     *         one (a camera's lines then show the calling test's name instead, when there is one)
      */
     public String getImageName() {
         return imageName == null ? "(unnamed)" : imageName;
