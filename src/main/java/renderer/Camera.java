@@ -363,7 +363,7 @@ public final class Camera {
 
     /**
      * Writes the image to images/&lt;name&gt;.png, the name the image writer was made with, and
-     * unless silenced prints {@code write NAME: /absolute/path.png in 0.031 s} (NAME as in the
+     * unless silenced prints {@code write NAME: /absolute/path.png in 0.042 s} (NAME as in the
      * render's summary).
      *
      * @throws IllegalStateException when the camera's writer has no name (it was made from
