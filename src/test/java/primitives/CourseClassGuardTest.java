@@ -13,6 +13,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.jar.JarEntry;
 import java.util.jar.JarOutputStream;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
 import javax.tools.JavaCompiler;
@@ -144,6 +146,26 @@ class CourseClassGuardTest {
                 assertThatThrownBy(() -> enter(loader, "new Scene(name)")).hasMessage(message("primitives.Vector", jar));
             }
         }
+    }
+
+    @Test
+    @DisplayName("the README quotes the message (folders aside) and has the section it points to")
+    void readme(@TempDir Path dir) throws Exception {
+        String readme = Files.readString(Path.of("README.md"));
+        assertThat(readme).contains("\n## Moving an existing course project onto the library\n");
+        Matcher quoted = Pattern.compile("\n(java\\.lang\\.LinkageError: Your own course classes[^\n]*)\n").matcher(readme);
+        assertThat(quoted.find()).as("the README quotes the message").isTrue();
+        Path own = compile(dir, "primitives.Vector", "primitives.Point");
+        try (URLClassLoader loader = projectLoader(own)) {
+            assertThatThrownBy(() -> enter(loader, "new Scene(name)")).satisfies(e ->
+                    assertThat(withoutFolders(e.getClass().getName() + ": " + e.getMessage()))
+                            .isEqualTo(withoutFolders(quoted.group(1))));
+        }
+    }
+
+    /** The message with the project's folder and the library's location blanked. */
+    private static String withoutFolders(String message) {
+        return message.replaceAll(" from \\S+\\. The library \\([^)]*\\)", " from FOLDER. The library (LIBRARY)");
     }
 
     @Test
