@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Objects;
 
 import lighting.LightSource;
+import primitives.CourseClassGuard;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
@@ -127,6 +128,7 @@ public abstract class Intersectable {
      * @throws IllegalStateException when the class overrides none of the hooks
      */
     protected Intersectable() {
+        CourseClassGuard.check();
         if (!HookCheck.overridesAHook(getClass()))
             throw new IllegalStateException(getClass().getName() + " overrides none of findGeoIntersectionsHelper, "
                     + "calculateIntersectionsHelper or calcIntersectionsHelper(Ray, double): override the one of your course year");

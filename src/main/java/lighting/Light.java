@@ -3,6 +3,7 @@ package lighting;
 import java.util.Objects;
 
 import primitives.Color;
+import primitives.CourseClassGuard;
 
 /** The part every light shares: its intensity. */
 abstract class Light {
@@ -10,6 +11,7 @@ abstract class Light {
     protected final Color intensity;
 
     protected Light(Color intensity) {
+        CourseClassGuard.check();
         this.intensity = Objects.requireNonNull(intensity, "light intensity");
     }
 

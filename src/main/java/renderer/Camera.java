@@ -1,11 +1,16 @@
 package renderer;
 
 import java.io.PrintStream;
+import java.nio.file.Path;
+import java.util.Locale;
 import java.util.MissingResourceException;
 import java.util.Objects;
 import java.util.function.BiConsumer;
 
+import jdk.jfr.FlightRecorder;
+
 import primitives.Color;
+import primitives.CourseClassGuard;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -301,17 +306,34 @@ public final class Camera {
 
     /**
      * Renders the image into the image writer and returns what it did; prints the one-line
-     * summary unless silenced.
+     * summary unless silenced ({@code render NAME WxH [sampling]: figures}, the figures being
+     * {@link RenderStats#toString()}). NAME is the image writer's name or, for a writer named only
+     * when written ({@link Builder#setResolution}), the calling test method's
+     * ({@code SpheresTest.twoSpheres()}). While a JDK Flight Recorder recording runs, the render
+     * is also a {@code raytracer.Render} event.
      *
      * @return the render's time and ray counts, as printed in the summary
      * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
      */
     public RenderStats render() {
-        RenderStats stats = new RenderLoop(this).run();
+        String name = imageLabel();
+        RenderEvent event = FlightRecorder.isInitialized() ? new RenderEvent() : null; // see RenderEvent
+        RenderStats stats = new RenderLoop(this, name).run();
+        if (event != null) event.commit(name, imageWriter, antiAliasing, stats);
         renderListener.accept(this, stats);
-        if (summary) output.println("render " + imageWriter.getImageName() + " " + imageWriter.getNx() + "x"
+        if (summary) output.println("render " + name + " " + imageWriter.getNx() + "x"
                 + imageWriter.getNy() + " [" + describe() + "]: " + stats);
         return stats;
+    }
+
+    /**
+     * The name summaries, progress lines and the JFR event give the image: its writer's name, or
+     * for an unnamed writer (named only when written) the calling test method
+     * ({@code SpheresTest.twoSpheres()}), or {@code (unnamed)} outside a test.
+     */
+    private String imageLabel() {
+        return imageWriter.hasName() ? imageWriter.getImageName()
+                : CallingTest.find().orElse(imageWriter.getImageName());
     }
 
     /**
@@ -369,23 +391,34 @@ public final class Camera {
     }
 
     /**
-     * Writes the image to images/&lt;name&gt;.png, the name the image writer was made with.
+     * Writes the image to images/&lt;name&gt;.png, the name the image writer was made with, and
+     * unless silenced prints {@code write NAME: /absolute/path.png in 0.042 s} (NAME as in the
+     * render's summary).
      *
      * @throws IllegalStateException when the camera's writer has no name (it was made from
      *                               {@link Builder#setResolution}): use {@link #writeToImage(String)}
      */
     public void writeToImage() {
-        imageWriter.writeToImage();
+        write(imageWriter.getPath());
     }
 
     /**
-     * Writes the image to images/&lt;imageName&gt;.png (the 2024–25 course's form).
+     * Writes the image to images/&lt;imageName&gt;.png (the 2024–25 course's form) and prints the
+     * line of {@link #writeToImage()}.
      *
      * @param imageName the file name without ".png"; may contain sub-folders
      * @throws IllegalArgumentException for a blank name
      */
     public void writeToImage(String imageName) {
-        imageWriter.writeToImage(imageName);
+        write(ImageWriter.pathOf(imageName));
+    }
+
+    /** Writes the PNG and, unless silenced, a line with the image's name, the file and the time it took. */
+    private void write(Path file) {
+        long start = System.nanoTime();
+        imageWriter.writeToImage(file);
+        if (summary) output.println(String.format(Locale.ROOT, "write %s: %s in %.3f s", imageLabel(),
+                file.toAbsolutePath(), (System.nanoTime() - start) / 1e9));
     }
 
     /**
@@ -422,6 +455,7 @@ public final class Camera {
 
         /** The same as {@link Camera#getBuilder()}, for cohorts that write {@code new Camera.Builder()}. */
         public Builder() {
+            CourseClassGuard.check();
         }
 
         /**
@@ -436,6 +470,7 @@ public final class Camera {
          * @throws NullPointerException when camera is null, naming it
          */
         public Builder(Camera camera) {
+            this();
             Objects.requireNonNull(camera, "camera to copy");
             location = camera.location;
             to = camera.vTo;
@@ -461,6 +496,7 @@ public final class Camera {
             debugPrint = camera.debugPrint;
             summary = camera.summary;
             output = camera.output;
+            renderListener = camera.renderListener;
         }
 
         /**
@@ -750,7 +786,8 @@ public final class Camera {
         }
 
         /**
-         * @param on whether to print the one-line summary after each render (default true)
+         * @param on whether to print the one-line summary after each render and the line with the
+         *           file and its time after each write (default true)
          * @return this builder
          */
         public Builder setSummary(boolean on) {
@@ -759,7 +796,7 @@ public final class Camera {
         }
 
         /**
-         * @param output where progress lines and the summary go (default System.out)
+         * @param output where progress lines, the summary and the write line go (default System.out)
          * @return this builder
          * @throws NullPointerException when it is null
          */

@@ -16,6 +16,7 @@ import java.util.Objects;
 import javax.imageio.ImageIO;
 
 import primitives.Color;
+import primitives.CourseClassGuard;
 
 /**
  * A pixel buffer of {@code nX × nY} pixels written as a PNG. {@code x} is the column (0 at the
@@ -55,6 +56,7 @@ public class ImageWriter {
     }
 
     private ImageWriter(int nX, int nY, String imageName) {
+        CourseClassGuard.check();
         if (nX <= 0 || nY <= 0)
             throw new IllegalArgumentException("image size must be positive, got " + nX + "x" + nY);
         if ((long) nX * nY > Integer.MAX_VALUE - 8)
@@ -93,10 +95,15 @@ public class ImageWriter {
 
     /**
      * @return the name given to the constructor, or {@code "(unnamed)"} for a writer made without
-     *         one (the name progress lines and the render summary show)
+     *         one (a camera's lines then show the calling test's name instead, when there is one)
      */
     public String getImageName() {
         return imageName == null ? "(unnamed)" : imageName;
+    }
+
+    /** @return whether the writer was made with a name (the 2023–24 form) */
+    boolean hasName() {
+        return imageName != null;
     }
 
     /**
@@ -178,7 +185,12 @@ public class ImageWriter {
      * @throws IllegalArgumentException for a blank name
      */
     public void writeToImage(String imageName) {
-        writeToImage(IMAGES.resolve(checkName(imageName) + ".png"));
+        writeToImage(pathOf(imageName));
+    }
+
+    /** images/&lt;imageName&gt;.png, after checking the name (not blank). */
+    static Path pathOf(String imageName) {
+        return IMAGES.resolve(checkName(imageName) + ".png");
     }
 
     /**

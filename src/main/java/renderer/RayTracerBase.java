@@ -4,6 +4,7 @@ import java.util.Objects;
 
 import geometries.Hit;
 import primitives.Color;
+import primitives.CourseClassGuard;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Vector;
@@ -16,6 +17,7 @@ public abstract class RayTracerBase {
 
     /** @param scene the scene rays are traced in; read, never changed */
     protected RayTracerBase(Scene scene) {
+        CourseClassGuard.check();
         this.scene = Objects.requireNonNull(scene, "scene");
     }
 

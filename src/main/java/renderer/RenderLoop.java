@@ -24,6 +24,8 @@ import primitives.Color;
 final class RenderLoop {
     private final Camera camera;
     private final ImageWriter image;
+    /** The image's name in progress lines, thread names and messages. */
+    private final String name;
     /** The rectangle rendered: columns [x0, x1), rows [y0, y1); the whole image unless a region was asked for. */
     private final int x0, y0, x1, y1;
     private final int tile;
@@ -35,8 +37,9 @@ final class RenderLoop {
     private final AtomicReference<Throwable> failure = new AtomicReference<>();
     private final RenderStats.Counter counter = new RenderStats.Counter();
 
-    RenderLoop(Camera camera) {
-        this(camera, 0, 0, camera.imageWriter().getNx(), camera.imageWriter().getNy());
+    /** A loop over the whole image; {@code name} labels its progress lines and worker threads. */
+    RenderLoop(Camera camera, String name) {
+        this(camera, name, 0, 0, camera.imageWriter().getNx(), camera.imageWriter().getNy());
     }
 
     /**
@@ -46,7 +49,12 @@ final class RenderLoop {
      * the whole image.
      */
     RenderLoop(Camera camera, int x0, int y0, int x1, int y1) {
+        this(camera, camera.imageWriter().getImageName(), x0, y0, x1, y1);
+    }
+
+    private RenderLoop(Camera camera, String name, int x0, int y0, int x1, int y1) {
         this.camera = camera;
+        this.name = name;
         this.image = camera.imageWriter();
         this.x0 = x0;
         this.y0 = y0;
@@ -79,14 +87,14 @@ final class RenderLoop {
         double prepareSeconds = (System.nanoTime() - t0) / 1e9;
         long pixels = (long) (x1 - x0) * (y1 - y0);
         // The clock of the render starts here, after the preparation (timed on its own).
-        Progress progress = new Progress("render " + image.getImageName(), pixels, camera.debugPrint(),
+        Progress progress = new Progress("render " + name, pixels, camera.debugPrint(),
                 camera.output());
         int threads = camera.threads();
         if (threads == 0) {
             worker(progress).run();
         } else {
             ExecutorService pool = Executors.newFixedThreadPool(threads, r -> {
-                Thread t = new Thread(r, "render-" + image.getImageName());
+                Thread t = new Thread(r, "render-" + name);
                 t.setDaemon(true);
                 return t;
             });
@@ -97,7 +105,7 @@ final class RenderLoop {
             } catch (InterruptedException e) {
                 cancelled.set(true);
                 Thread.currentThread().interrupt();
-                throw new CancellationException("render of " + image.getImageName() + " was interrupted");
+                throw new CancellationException("render of " + name + " was interrupted");
             } catch (ExecutionException e) {
                 cancelled.set(true);
                 // Not necessarily this future's exception: a worker stopped by another's failure
@@ -162,7 +170,7 @@ final class RenderLoop {
                 for (int t = nextTile.getAndIncrement(); t < tileCount; t = nextTile.getAndIncrement()) {
                     if (cancelled.get() || Thread.currentThread().isInterrupted()) {
                         cancelled.set(true);
-                        throw new CancellationException("render of " + image.getImageName() + " was interrupted");
+                        throw new CancellationException("render of " + name + " was interrupted");
                     }
                     progress.advance(renderTile(t, sampler, ctx, tilePixels));
                 }

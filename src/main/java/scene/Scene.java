@@ -8,6 +8,7 @@ import geometries.Geometries;
 import lighting.AmbientLight;
 import lighting.LightSource;
 import primitives.Color;
+import primitives.CourseClassGuard;
 
 /**
  * What a render shows: geometries, lights, ambient light and background. Built by the scene test
@@ -15,6 +16,11 @@ import primitives.Color;
  * left unchanged while a render runs.
  */
 public class Scene {
+    // Before the fields: their initialisers are the first to use other classes of the library.
+    {
+        CourseClassGuard.check();
+    }
+
     /** The scene's name (used in progress lines and reports). */
     public final String name;
     /** The colour of rays that hit nothing. */

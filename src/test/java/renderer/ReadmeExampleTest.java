@@ -209,14 +209,25 @@ class ReadmeExampleTest {
             String line = printed.lines().filter(l -> l.startsWith("render twoSpheres ")).findFirst()
                     .orElseThrow(() -> new AssertionError("no summary line printed:\n" + printed));
             assertThat(withoutTimes(quoted.group(1))).isEqualTo(withoutTimes(line));
+
+            // And the line the write printed: the file, where this machine's project lies blanked.
+            Matcher quotedWrite = Pattern.compile("`(write twoSpheres: [^`]*)`").matcher(Files.readString(README));
+            assertThat(quotedWrite.find()).as("the README quotes the write line").isTrue();
+            String write = printed.lines().filter(l -> l.startsWith("write twoSpheres: ")).findFirst()
+                    .orElseThrow(() -> new AssertionError("no write line printed:\n" + printed));
+            assertThat(withoutTimes(quotedWrite.group(1))).isEqualTo(withoutTimes(write));
         }
     }
 
-    /** The summary line with its machine-dependent figures (times, rates, thread count) blanked. */
+    /**
+     * A summary or write line with its machine-dependent figures (times, rates, thread count, the
+     * folder the project lies in) blanked.
+     */
     static String withoutTimes(String summary) {
         return summary.replaceAll("\\d+\\.\\d+ s\\b", "T s")
                 .replaceAll("\\d+\\.\\d+ Mrays/s", "R Mrays/s")
-                .replaceAll("\\d+ threads", "N threads");
+                .replaceAll("\\d+ threads?\\b", "N threads")
+                .replaceAll(": \\S*/images/", ": PROJECT/images/");
     }
 
     @Nested
@@ -236,12 +247,15 @@ class ReadmeExampleTest {
     }
 
     @Test
-    @DisplayName("the summary comparison ignores times and core count, nothing else")
+    @DisplayName("the summary comparison ignores times, core count and the project's folder, nothing else")
     void summaryComparison() {
         String a = "render x 2x2 [NONE]: 0.475 s, 4 px, rays: camera 4, shadow 2, secondary 0, 1.00 camera rays per px, "
                 + "3.29 Mrays/s (all rays), 2 threads, prepared in 0.001 s";
         String b = a.replace("0.475 s", "1.5 s").replace("3.29", "12.00").replace("2 threads", "16 threads");
-        assertThat(withoutTimes(a)).isEqualTo(withoutTimes(b))
+        assertThat(withoutTimes(a)).isEqualTo(withoutTimes(b)).isEqualTo(withoutTimes(a.replace("2 threads", "1 thread")))
                 .isNotEqualTo(withoutTimes(a.replace("shadow 2", "shadow 3")));
+        String write = "write x: /home/me/project/images/x.png in 0.016 s";
+        assertThat(withoutTimes(write)).isEqualTo(withoutTimes("write x: /work/images/x.png in 1.250 s"))
+                .isNotEqualTo(withoutTimes("write x: /work/images/y.png in 1.250 s"));
     }
 }

@@ -5,6 +5,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /** The render's figures and the one-line summary that prints them. */
 class RenderStatsTest {
@@ -46,10 +48,11 @@ class RenderStatsTest {
                     + "4.00 camera rays per px, 0.00 Mrays/s (all rays), 2 threads, prepared in 0.250 s");
         }
 
-        @Test
-        @DisplayName("says 'calling thread' when no worker thread was used")
-        void callingThread() {
-            assertThat(new RenderStats(1, 1, 1, 0, 0, 0, 0).toString()).contains(", calling thread,");
+        @ParameterizedTest(name = "{0} → ''{1}''")
+        @CsvSource(delimiter = '|', value = {"0|calling thread", "1|1 thread", "2|2 threads", "16|16 threads"})
+        @DisplayName("says 'calling thread' when no worker thread was used, the singular for one")
+        void threads(int threads, String words) {
+            assertThat(new RenderStats(1, 1, 1, 0, 0, threads, 0).toString()).contains(", " + words + ", ");
         }
     }
 }

@@ -220,7 +220,7 @@ class RenderCommandTest {
             Run r = run(small().toString(), "-o", png.toString());
             assertThat(r.exitCode()).isZero();
             assertThat(r.out()).contains("render small 40x20 [NONE, bvh on, beam 3, shadow samples 3, seed 0]")
-                    .contains("1 threads").contains("wrote " + png + " (40x20)");
+                    .contains("1 thread,").contains("wrote " + png + " (40x20)");
             assertThat(image(png).getWidth()).isEqualTo(40);
             assertThat(image(png).getHeight()).isEqualTo(20);
         }
@@ -270,7 +270,7 @@ class RenderCommandTest {
             Path one = dir.resolve("one.png"), two = dir.resolve("two.png");
             Run r1 = run(small().toString(), "-o", one.toString(), "--threads", "1", "--aa", "random");
             Run r2 = run(small().toString(), "-o", two.toString(), "--threads", "2", "--aa", "random");
-            assertThat(r1.out()).contains(", 1 threads");
+            assertThat(r1.out()).contains(", 1 thread,");
             assertThat(r2.out()).contains(", 2 threads");
             assertThat(Files.mismatch(one, two)).isEqualTo(-1);
         }

@@ -1,0 +1,136 @@
+package primitives;
+
+import java.net.URISyntaxException;
+import java.net.URL;
+import java.nio.file.Path;
+import java.security.CodeSource;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * Internal: stops the library at once, with one message, when it runs next to a project's own
+ * classes of the course's names. A course project that adds the library as a dependency and keeps
+ * its own {@code primitives/Vector.java} puts its own {@code primitives.Vector} first on the class
+ * path; the library's {@code renderer.Camera} then runs with it and fails far away, with a
+ * {@code NoSuchMethodError} that names neither the cause nor the cure. The library's entry
+ * classes (the scene, the camera's builder, tracers, image writers, shapes and lights) call
+ * {@link #check()} first; it compares, once per class loader, where each of the library's classes
+ * of the five course packages is loaded from (its code source) with where this class was, and
+ * names every one that comes from elsewhere. You never need to call it.
+ */
+public final class CourseClassGuard {
+    /**
+     * The library's classes in the course packages, top level (nested ones come with their file);
+     * a class of the same name in a project shadows the library's. {@code CourseClassGuardTest}
+     * holds the list equal to the compiled classes. {@code renderer.RenderEvent} is left out:
+     * loading a JFR event class sets up JFR's machinery (see that class), and no course has one.
+     */
+    static final List<String> LIBRARY_CLASSES = List.of(
+            "primitives.Color", "primitives.Double3", "primitives.Material", "primitives.Point", "primitives.Ray",
+            "primitives.Util", "primitives.Vector",
+            "geometries.BoundingBox", "geometries.Bvh", "geometries.Cylinder", "geometries.Geometries",
+            "geometries.Geometry", "geometries.Hit", "geometries.HitVisitor", "geometries.HookCheck",
+            "geometries.Intersectable", "geometries.Plane", "geometries.Polygon", "geometries.Ranges",
+            "geometries.SingleHitGeometry", "geometries.Sphere", "geometries.Triangle", "geometries.TriangleMesh",
+            "geometries.Tube",
+            "lighting.AmbientLight", "lighting.DirectionalLight", "lighting.Light", "lighting.LightSource",
+            "lighting.PointLight", "lighting.SpotLight",
+            "scene.Scene",
+            "renderer.AntiAliasing", "renderer.CallingTest", "renderer.Camera", "renderer.CenterSampler",
+            "renderer.GridSampler", "renderer.ImageWriter", "renderer.InFlightFile", "renderer.LatticeSampler",
+            "renderer.PixelSampler", "renderer.Progress", "renderer.RayTracerBase", "renderer.RayTracerBasic",
+            "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
+            "renderer.RenderStats", "renderer.SampleStream", "renderer.ShadowCache", "renderer.SimpleRayTracer",
+            "renderer.TraceContext", "renderer.Transmittance");
+
+    private CourseClassGuard() {
+    }
+
+    /** The verdict for the class loader of this class, reached once: a class's first initialisation. */
+    private static final class Verdict {
+        /** The message, or null when every class of the library comes from where this one does. */
+        static final String SHADOWED = shadowed(CourseClassGuard.class.getClassLoader());
+    }
+
+    /**
+     * Internal: called by the library's entry classes before they do anything. The first call
+     * loads the library's classes (without initialising them) and compares their code sources;
+     * later calls read the verdict.
+     *
+     * @throws LinkageError naming the project's classes that shadow the library's, where they came
+     *                      from, and what to do
+     */
+    public static void check() {
+        String message = Verdict.SHADOWED;
+        if (message != null) throw new LinkageError(message);
+    }
+
+    /**
+     * @param loader the loader that loaded this class
+     * @return the message naming every library class that {@code loader} loads from somewhere
+     *         else than this class, or null when there is none (or nothing can be told: no loader,
+     *         no code source)
+     */
+    static String shadowed(ClassLoader loader) {
+        String library = location(CourseClassGuard.class);
+        if (loader == null || library == null) return null;
+        // location → package → simple names, sorted, so that the message reads in one order
+        Map<String, Map<String, List<String>>> found = new TreeMap<>();
+        for (String name : LIBRARY_CLASSES) {
+            String where;
+            try {
+                // Loaded, not initialised: most of them the first render loads anyway. Asking for
+                // the class file as a resource instead would search every module of the JDK for
+                // each name, which costs more.
+                where = location(Class.forName(name, false, loader));
+            } catch (ClassNotFoundException e) {
+                continue; // not in this build of the library (a shrunk jar)
+            } catch (LinkageError e) {
+                where = "a class file that does not load: " + e; // a project's class, broken
+            }
+            if (where == null || where.equals(library)) continue;
+            int dot = name.lastIndexOf('.');
+            found.computeIfAbsent(where, w -> new TreeMap<>())
+                    .computeIfAbsent(name.substring(0, dot), p -> new ArrayList<>()).add(name.substring(dot + 1));
+        }
+        if (found.isEmpty()) return null;
+        List<String> groups = new ArrayList<>();
+        found.forEach((where, packages) -> groups.add(names(packages) + " from " + where));
+        return "Your own course classes shadow the library's: " + String.join("; ", groups)
+                + ". The library (" + library + ") cannot run with them. Delete or move them (see README"
+                + " 'Moving an existing course project onto the library'): keep your tests and your own extra"
+                + " classes; then rebuild clean (mvn clean test, or your IDE's Rebuild Project).";
+    }
+
+    /**
+     * @return where a class was loaded from, as a reader knows it (a folder or a jar file), or null
+     *         when its loader does not say
+     */
+    static String location(Class<?> c) {
+        CodeSource source = c.getProtectionDomain().getCodeSource();
+        URL url = source == null ? null : source.getLocation();
+        return url == null ? null : display(url);
+    }
+
+    /** {@code primitives.{Point, Vector}, scene.Scene}: the names, a package's several in braces. */
+    private static String names(Map<String, List<String>> packages) {
+        List<String> parts = new ArrayList<>();
+        packages.forEach((pkg, classes) -> parts.add(pkg + "."
+                + (classes.size() == 1 ? classes.get(0) : "{" + String.join(", ", classes) + "}")));
+        return String.join(", ", parts);
+    }
+
+    /** A location URL as a path when it is a file's ({@code file:/a/b.jar} gives {@code /a/b.jar}); its text otherwise. */
+    static String display(URL url) {
+        if (url.getProtocol().equals("file")) {
+            try {
+                return Path.of(url.toURI()).toString();
+            } catch (URISyntaxException | IllegalArgumentException e) {
+                return url.toString();
+            }
+        }
+        return url.toString();
+    }
+}
