@@ -28,6 +28,8 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
+import app.Project;
+
 /**
  * The guard against a project's own course classes next to the library's: the library's entry
  * classes fail at once, with one message naming the project's classes, where they came from, and
@@ -151,7 +153,7 @@ class CourseClassGuardTest {
     @Test
     @DisplayName("the README quotes the message (folders aside) and has the section it points to")
     void readme(@TempDir Path dir) throws Exception {
-        String readme = Files.readString(Path.of("README.md"));
+        String readme = Files.readString(Project.file("README.md"));
         assertThat(readme).contains("\n## Moving an existing course project onto the library\n");
         Matcher quoted = Pattern.compile("\n(java\\.lang\\.LinkageError: Your own course classes[^\n]*)\n").matcher(readme);
         assertThat(quoted.find()).as("the README quotes the message").isTrue();
