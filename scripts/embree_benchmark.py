@@ -115,7 +115,7 @@ def embree(vertices, faces, origins, dirs, passes: int) -> dict:
         scene.run(o32[:1], d32[:1])                               # the first query commits (builds) the scene
         builds.append(time.perf_counter() - start)
     result = None
-    for _ in range(2):                                            # untimed, as the library's warm-up
+    for _ in range(3):                                            # untimed, as the library's warm-up
         result = scene.run(o32, d32, output=1)
     times = []
     for _ in range(passes):
