@@ -190,6 +190,7 @@ public class RayTracerBasic extends RayTracerBase {
 
     @Override
     void traceRay(TraceContext ctx) {
+        ctx.stopIfInterrupted(); // a pixel may take 65,536 camera samples
         Hit hit = ctx.hit(MAX_CALC_COLOR_LEVEL, Double.POSITIVE_INFINITY); // the camera ray's record
         if (!world.closestHit(hit)) {
             Color bg = scene.background;
@@ -318,6 +319,7 @@ public class RayTracerBasic extends RayTracerBase {
         double offset = rnd.nextDouble();
         double[] disk = ctx.disk;
         for (int i = 0; i < shadowSamples; ++i) {
+            ctx.stopIfInterrupted(); // a soft shadow may take millions of rays
             diskPoint(i, shadowSamples, offset, rnd, radius, disk);
             double sx = c.getX() + disk[0] * ax + disk[1] * bx;
             double sy = c.getY() + disk[0] * ay + disk[1] * by;
@@ -481,6 +483,7 @@ public class RayTracerBasic extends RayTracerBase {
         double sr = 0, sg = 0, sb = 0;
         double[] disk = ctx.disk;
         for (int i = 0; i < budget; ++i) {
+            ctx.stopIfInterrupted(); // a beam may take millions of rays
             diskPoint(i, budget, offset, rnd, spread, disk);
             double cx = disk[0], cy = disk[1];
             double dx = dirX + cx * ax + cy * bx;

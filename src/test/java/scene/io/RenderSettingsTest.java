@@ -152,8 +152,8 @@ class RenderSettingsTest {
     @DisplayName("the ray budget: samples per pixel × beam size × shadow samples at most 2^24")
     class RayBudget {
         @ParameterizedTest(name = "{0}")
-        @CsvSource({ "NONE, 1", "CORNERS, 5", "RANDOM, 12", "ADAPTIVE, 289" })
-        @DisplayName("samples per pixel of each mode (ADAPTIVE: its whole lattice at depth 3)")
+        @CsvSource({ "NONE, 1", "CORNERS, 5", "RANDOM, 12", "ADAPTIVE, 81" })
+        @DisplayName("samples per pixel of each mode (ADAPTIVE: its whole lattice at depth 3, (2^3 + 1)² points)")
         void samplesPerPixel(AntiAliasing mode, long samples) {
             RenderSettings s = RenderSettings.defaults("x").withAntiAliasingParameters(3, 4, 3, 8).withAntiAliasing(mode);
             assertThat(s.samplesPerPixel()).isEqualTo(samples);
