@@ -129,12 +129,14 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     /**
-     * Snapshots the scene for tracing: checks every light's settings (before any worker starts,
-     * so a bad light fails the render at once with its message) and builds the BVH, or reuses the
+     * Snapshots the scene for tracing: checks the nesting of its geometries
+     * ({@link geometries.Geometries#MAX_NESTING_DEPTH}) and every light's settings (before any
+     * worker starts, so a bad scene fails the render at once with its message) and builds the BVH, or reuses the
      * one an earlier render built over the same, unchanged shapes ({@link Bvh#of}).
      */
     @Override
     synchronized void prepare() {
+        scene.geometries.requireNestingWithinLimit(); // the flat walk recurses once per level
         for (LightSource light : scene.lights) light.validate();
         preparedGeometries = scene.geometries;
         preparedItems = scene.geometries.getItems().size();

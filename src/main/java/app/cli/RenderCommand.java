@@ -352,10 +352,8 @@ public final class RenderCommand implements Callable<Integer> {
      * one allocation that grows with the image) against the most memory this JVM may use.
      */
     private static String notEnoughMemory(RenderSettings s) {
-        long mb = 1 << 20;
-        long needed = ((long) s.width() * s.height() * Integer.BYTES + mb - 1) / mb;
-        return String.format(Locale.ROOT, "render: image %dx%d needs %d MB%s (render it smaller with --width or"
-                + " --height, or give Java more memory with -Xmx)", s.width(), s.height(), needed, maxMemory());
+        return "render: " + ImageWriter.memoryNeeded(s.width(), s.height())
+                + " (render it smaller with --width or --height, or give Java more memory with -Xmx)";
     }
 
     /** "; Java may use at most N MB here", or nothing when the JVM states no limit. */
