@@ -297,6 +297,9 @@ public final class Camera {
      *
      * @return the render's time and ray counts, as printed in the summary
      * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
+     * @throws java.util.ConcurrentModificationException  when the scene changed during the render
+     *                                                    (shapes or lights added, say): the image
+     *                                                    may mix two states and must not be written
      */
     public RenderStats render() {
         RenderStats stats = new RenderLoop(this).run();
@@ -311,6 +314,7 @@ public final class Camera {
      *
      * @return this camera, for chaining
      * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
+     * @throws java.util.ConcurrentModificationException  when the scene changed during the render
      */
     public Camera renderImage() {
         render();

@@ -73,9 +73,29 @@ final class RenderLoop {
 
     /**
      * As {@link #run()}; {@code prepare} false skips the tracer's preparation, for a caller that
-     * prepared it once for several loops (see {@link RegionRenderer}).
+     * prepared it once for several loops (see {@link RegionRenderer}, whose scene is its own).
+     * A render that prepares notes the scene first ({@link SceneStamp}) and compares at the end:
+     *
+     * @throws java.util.ConcurrentModificationException when the scene changed during the render
+     *                                                   (also when that made it fail otherwise)
      */
     RenderStats run(boolean prepare) {
+        if (!prepare) return render(false);
+        SceneStamp before = SceneStamp.of(camera.rayTracer().scene, image.getImageName());
+        RenderStats stats;
+        try {
+            stats = render(true);
+        } catch (CancellationException e) {
+            throw e;
+        } catch (RuntimeException | Error e) { // a list read while another thread adds to it, say
+            before.requireUnchanged(image.getImageName(), e);
+            throw e;
+        }
+        before.requireUnchanged(image.getImageName(), null);
+        return stats;
+    }
+
+    private RenderStats render(boolean prepare) {
         camera.requireRayBudget(); // the tracer's settings may have grown since the camera was built
         long t0 = System.nanoTime();
         if (prepare) camera.rayTracer().prepare();

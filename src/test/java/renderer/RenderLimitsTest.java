@@ -4,6 +4,15 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
+import java.io.OutputStream;
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.ConcurrentModificationException;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
@@ -11,8 +20,11 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 import geometries.Geometries;
+import geometries.Plane;
 import geometries.Sphere;
+import lighting.DirectionalLight;
 import primitives.Color;
+import primitives.Material;
 import primitives.Point;
 import primitives.Vector;
 import scene.Scene;
@@ -20,7 +32,8 @@ import scene.Scene;
 /**
  * What a render refuses with a message instead of a bare error: geometries nested deeper than
  * {@link Geometries#MAX_NESTING_DEPTH} (was a StackOverflowError), and an image larger than the
- * heap (was a bare OutOfMemoryError).
+ * heap (was a bare OutOfMemoryError); a scene changed during its render (was a torn image or a
+ * ConcurrentModificationException from inside the BVH's build).
  */
 class RenderLimitsTest {
     /** A scene whose one sphere sits {@code depth} lists below the scene's own list. */
@@ -114,6 +127,97 @@ class RenderLimitsTest {
         void figures() {
             assertThat(ImageWriter.bytesNeeded(40_000, 40_000)).isEqualTo(6_400_000_000L);
             assertThat(ImageWriter.memoryNeeded(1, 1)).startsWith("image 1x1 needs 1 MB");
+        }
+    }
+
+    @Nested
+    @DisplayName("a scene changed during its render: one clear failure, never a torn image")
+    class ConcurrentChange {
+        @Test
+        @DisplayName("a sphere and a light added mid-render fail it, naming the scene, the image and the change")
+        void addedMidRender() throws Exception {
+            Scene scene = TestScenes.everyEffect();
+            CountDownLatch started = new CountDownLatch(1);
+            Camera camera = TestScenes.camera(scene, new ImageWriter("changed", 48, 48))
+                    .setAntiAliasing(AntiAliasing.RANDOM, 4, 4).setMultithreading(2)
+                    .setDebugPrint(1).setOutput(new PrintStream(new OutputStream() {
+                        @Override
+                        public void write(int b) {
+                            started.countDown();
+                        }
+                    }, true)).build();
+            List<Throwable> thrown = new ArrayList<>();
+            Thread renderer = new Thread(() -> {
+                try {
+                    camera.renderImage();
+                } catch (Throwable t) {
+                    thrown.add(t);
+                }
+            }, "changed-scene-render");
+            renderer.start();
+            assertThat(started.await(20, TimeUnit.SECONDS)).as("render under way").isTrue();
+            scene.geometries.add(new Sphere(new Point(0, 0, 5), 1));
+            scene.lights.add(new DirectionalLight(new Color(10, 10, 10), new Vector(0, 0, -1)));
+            renderer.join(TimeUnit.SECONDS.toMillis(60)); // a liveness guard, not a timing assertion
+            assertThat(thrown).hasSize(1);
+            assertThat(thrown.get(0)).isInstanceOf(ConcurrentModificationException.class)
+                    .hasMessage("the scene 'every-effect' changed during the render of changed: its geometries were added"
+                            + " to (1 times) (a scene must not change while it renders; render it again when it is complete)");
+        }
+
+        /**
+         * Planes facing the camera, each nearer than the last, and directional lights along the
+         * view: every consistent state renders one uniform colour, so a torn image shows as two.
+         */
+        @ParameterizedTest(name = "bvh {0}, shared tracer")
+        @ValueSource(booleans = { true, false })
+        @DisplayName("renders in a loop while another thread adds shapes and lights: uniform images or the clear failure")
+        void tightLoop(boolean bvh) throws Exception {
+            Scene scene = new Scene("planes");
+            scene.geometries.add(plane(0));
+            scene.lights.add(new DirectionalLight(new Color(40, 40, 40), new Vector(0, 0, -1)));
+            RayTracerBasic shared = new RayTracerBasic(scene).setBvh(bvh);
+            AtomicBoolean done = new AtomicBoolean();
+            Thread adder = new Thread(() -> {
+                for (int k = 1; k <= 300; ++k) {
+                    scene.geometries.add(plane(k));
+                    if (k % 10 == 0) scene.lights.add(new DirectionalLight(new Color(k % 50, 5, 5), new Vector(0, 0, -1)));
+                    try {
+                        Thread.sleep(1);
+                    } catch (InterruptedException e) {
+                        break;
+                    }
+                }
+                done.set(true);
+            }, "scene-adder");
+            adder.start();
+            int renders = 0, refused = 0;
+            for (boolean last = false; !last; ) {
+                last = done.get(); // the render after the last change must succeed
+                ImageWriter image = new ImageWriter(16, 16);
+                Camera camera = TestScenes.camera(scene, image).setRayTracer(shared).setMultithreading(2).build();
+                ++renders;
+                try {
+                    camera.renderImage();
+                } catch (ConcurrentModificationException e) {
+                    assertThat(last).as("a render after the changes ended is refused").isFalse();
+                    assertThat(e).hasMessageStartingWith("the scene 'planes' changed during the render of (unnamed): ");
+                    ++refused;
+                    continue;
+                }
+                int first = image.getRgb(0, 0);
+                for (int y = 0; y < 16; ++y)
+                    for (int x = 0; x < 16; ++x)
+                        assertThat(image.getRgb(x, y)).as("render %d, pixel (%d,%d): one state only", renders, x, y)
+                                .isEqualTo(first);
+            }
+            adder.join();
+            assertThat(refused).isLessThan(renders);
+        }
+
+        private static Plane plane(int k) {
+            return (Plane) new Plane(new Point(0, 0, k * 0.01), new Vector(0, 0, 1))
+                    .setEmission(new Color(k % 200, 50, 100)).setMaterial(new Material().setKd(0.5));
         }
     }
 }
