@@ -5,6 +5,7 @@ import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -25,6 +26,7 @@ import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
 import scene.Scene;
+import scene.io.FileSource;
 import scene.io.Limits;
 import scene.io.LoadedScene;
 import scene.io.Messages;
@@ -113,6 +115,12 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = { "-q", "--quiet" }, description = "Print nothing but errors.")
     private boolean quiet;
 
+    @Option(names = "--mesh-root", paramLabel = "DIR",
+            description = { "The folder a scene file's meshes may be read from, sub-folders included. Default: the"
+                    + " scene file's own folder: a mesh path outside it (absolute, '../', a link leading out) or"
+                    + " without the .obj extension is refused unread. Local renders only." })
+    private Path meshRoot;
+
     // ===== Spark (issue 13): more scene files as frames, one option, and a branch into app.spark =====
     @Parameters(index = "1..*", arity = "0..*", paramLabel = "MORE",
             description = "With --spark: more scene files, rendered as the frames of one Spark job (one PNG each).")
@@ -194,7 +202,7 @@ public final class RenderCommand implements Callable<Integer> {
         if (spark != null || !frames.isEmpty()) return spark();
         Job job;
         try {
-            job = scene == null ? showcase() : load(scene);
+            job = scene == null ? showcase() : load(scene, meshRoot);
         } catch (SceneFormatException e) {
             err.println(e.getMessage());
             return BAD_INPUT;
@@ -295,6 +303,8 @@ public final class RenderCommand implements Callable<Integer> {
                 throw usage("--threads: " + e.getMessage());
             }
         }
+        if (meshRoot != null && !Files.isDirectory(meshRoot))
+            throw usage("--mesh-root must name a folder, got '" + meshRoot + "'");
         if (output != null) {
             Path name = output.getFileName();
             if (name == null || !name.toString().toLowerCase(Locale.ROOT).endsWith(".png"))
@@ -369,8 +379,8 @@ public final class RenderCommand implements Callable<Integer> {
     private record Job(Scene scene, Camera.Builder view, RenderSettings settings, String source) {
     }
 
-    private static Job load(Path file) throws IOException, SceneFormatException {
-        LoadedScene loaded = XmlSceneReader.read(file);
+    private static Job load(Path file, Path meshRoot) throws IOException, SceneFormatException {
+        LoadedScene loaded = XmlSceneReader.read(file, FileSource.DISK, meshRoot);
         return new Job(loaded.scene(), loaded.requireView(), loaded.settings(), file.toString());
     }
 

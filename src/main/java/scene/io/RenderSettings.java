@@ -1,5 +1,6 @@
 package scene.io;
 
+import java.util.Locale;
 import java.util.Objects;
 import java.util.function.Consumer;
 
@@ -241,7 +242,11 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * @throws IllegalArgumentException for a blank name, one longer than
      *                                  {@link #MAX_IMAGE_NAME_LENGTH}, or one with a path separator
      *                                  ({@code /} or {@code \}), a drive colon, {@code ..} or a
-     *                                  control character, naming it
+     *                                  control character, naming it; for one with an invisible
+     *                                  format character (Unicode category Cf: the bidirectional
+     *                                  overrides and isolates U+202A–U+202E and U+2066–U+2069, the
+     *                                  marks U+200E, U+200F and U+061C, U+200B, U+FEFF...), naming
+     *                                  its code point
      */
     public static String requireImageName(String name) {
         Objects.requireNonNull(name, "image name");
@@ -258,6 +263,10 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         }
         if (name.contains(".."))
             throw new IllegalArgumentException("the image name '" + name + "' contains '..' (a name, not a path, is expected)");
+        name.codePoints().filter(cp -> Character.getType(cp) == Character.FORMAT).findFirst().ifPresent(cp -> {
+            throw new IllegalArgumentException(String.format(Locale.ROOT, "the image name contains U+%04X, an invisible"
+                    + " or direction-changing character (the file name would display as something else)", cp));
+        });
         return name;
     }
 

@@ -204,6 +204,16 @@ class RenderSettingsTest {
             assertThat(RenderSettings.defaults(name).imageName()).isEqualTo(name);
         }
 
+        @ParameterizedTest(name = "U+{0}")
+        @CsvSource({ "202E", "202A", "2066", "2069", "200E", "200F", "061C", "200B", "FEFF", "2060" })
+        @DisplayName("refused: bidirectional controls and invisible format characters, naming the code point")
+        void invisible(String hex) {
+            String name = "invoice" + Character.toString(Integer.parseInt(hex, 16)) + "gnp.exe";
+            assertThatThrownBy(() -> RenderSettings.defaults(name)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("the image name contains U+" + hex + ", an invisible or direction-changing character"
+                            + " (the file name would display as something else)");
+        }
+
         @Test
         @DisplayName("at most 200 characters")
         void length() {
