@@ -19,8 +19,8 @@ import scene.io.SceneFormatException;
 /**
  * The command line's Spark render (see {@link SparkEntry}): the driver validates, then starts
  * Spark, renders and writes. Spark's own log is off unless {@code spark.log.level} is set (with
- * {@code --conf} of spark-submit or {@code -Dspark.log.level=WARN}), so that a failure is the
- * one line the command line promises; the cause is in the executors' logs.
+ * {@code --conf} of spark-submit or {@code -Dspark.log.level=WARN}; see {@link QuietLog}), so that
+ * a failure is the one line the command line promises; the cause is in the executors' logs.
  */
 final class SparkCommand {
     private SparkCommand() {
@@ -33,6 +33,7 @@ final class SparkCommand {
     /** As {@link #run(SparkRequest, PrintStream, PrintStream, PrintStream)}, with the tests' fault injection. */
     static int run(SparkRequest request, TileProbe probe, PrintStream progress, PrintStream out, PrintStream err) {
         long start = System.nanoTime();
+        QuietLog.unlessAsked(); // first: a bad input's exit must not be followed by Spark's shutdown lines
         List<SparkFrame> frames = new ArrayList<>();
         Map<Path, String> outputs = new HashMap<>();
         for (Path scene : request.scenes()) {
@@ -70,7 +71,6 @@ final class SparkCommand {
                     + "give a master URL such as --spark local[2], or " + SparkEntry.HOW);
             return SparkEntry.BAD_INPUT;
         }
-        if (!conf.contains("spark.log.level")) conf.set("spark.log.level", "OFF");
         try (JavaSparkContext spark = new JavaSparkContext(conf)) {
             new SparkRenderer(spark).setProbe(probe).setProgress(request.progressStep()).setOutput(progress)
                     .setSummary(request.summary()).render(frames);
