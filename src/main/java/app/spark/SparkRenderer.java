@@ -48,7 +48,14 @@ public final class SparkRenderer {
      */
     public static final int DEFAULT_TILE = 64;
 
+    /**
+     * The Spark setting of how long a job may go without any executor before the driver cancels
+     * it (a time, as {@code 120s} or {@code 5m}; default 120 s): see {@link #setExecutorTimeout}.
+     */
+    public static final String EXECUTOR_TIMEOUT = "spark.raytracer.executorTimeout";
+
     private final JavaSparkContext spark;
+    private double executorTimeout;
     private int tile = DEFAULT_TILE;
     private int partitions;
     private double progressStep;
@@ -59,6 +66,23 @@ public final class SparkRenderer {
     /** @param spark the context whose cluster renders */
     public SparkRenderer(JavaSparkContext spark) {
         this.spark = Objects.requireNonNull(spark, "spark context");
+        this.executorTimeout = spark.sc().getConf().getTimeAsSeconds(EXECUTOR_TIMEOUT, "120s");
+    }
+
+    /**
+     * How long a job may go without any executor (every worker lost, or none granted) before the
+     * driver cancels it with {@link SparkRenderException}; the progress says when it starts
+     * waiting. Spark itself would wait without end. A local master always has its executor.
+     *
+     * @param seconds the limit, &gt; 0 (default: {@value #EXECUTOR_TIMEOUT} of the context's
+     *                configuration, else 120)
+     * @return this renderer
+     * @throws IllegalArgumentException for a limit that is not positive
+     */
+    public SparkRenderer setExecutorTimeout(double seconds) {
+        if (!(seconds > 0)) throw new IllegalArgumentException("executor timeout must be positive seconds, got " + seconds);
+        this.executorTimeout = seconds;
+        return this;
     }
 
     /**
@@ -274,6 +298,11 @@ public final class SparkRenderer {
         spark.sc().addSparkListener(monitor);
         spark.setJobGroup(monitor.jobGroup(), label, false);
         TileProbe p = probe; // the task's closure captures locals only, not this renderer
+        ExecutorWatch watch = new ExecutorWatch(cluster(monitor.jobGroup()), executorTimeout, System::nanoTime,
+                line -> {
+                    if (progressStep > 0) out.println(label + ": " + line);
+                });
+        Thread watching = watching(watch, label);
         try {
             JavaRDD<List<TilePixels>> rendered = spark.parallelize(groups, groups.size()).map(g -> {
                 List<TilePixels> done = new ArrayList<>(g.size());
@@ -298,12 +327,43 @@ public final class SparkRenderer {
             Thread.currentThread().interrupt();
             throw new SparkRenderException(label + ": interrupted", e);
         } catch (Exception e) { // SparkException is checked in Java's eyes but undeclared
-            throw new SparkRenderException(label + ": " + firstLine(e), e);
+            String reason = watch.reason();
+            throw new SparkRenderException(label + ": " + (reason != null ? reason : firstLine(e)), e);
         } finally {
+            watching.interrupt();
             spark.clearJobGroup();
             spark.sc().removeSparkListener(monitor);
             scenes.destroy();
         }
+    }
+
+    /** The context's executors, the driver not counted (a local master counts as one), and its job group's cancel. */
+    private ExecutorWatch.Cluster cluster(String jobGroup) {
+        return new ExecutorWatch.Cluster() {
+            @Override
+            public int executors() {
+                return spark.sc().isLocal() ? 1 : spark.sc().statusTracker().getExecutorInfos().length - 1;
+            }
+
+            @Override
+            public void cancel(String reason) {
+                spark.sc().cancelJobGroup(jobGroup, reason);
+            }
+        };
+    }
+
+    /** A daemon thread that checks {@code watch} every half second until it is interrupted or cancels the job. */
+    private static Thread watching(ExecutorWatch watch, String label) {
+        Thread t = new Thread(() -> {
+            try {
+                while (!watch.check()) Thread.sleep(500);
+            } catch (InterruptedException e) {
+                // the job ended
+            }
+        }, "executor watch of " + label);
+        t.setDaemon(true);
+        t.start();
+        return t;
     }
 
     /**
