@@ -69,12 +69,13 @@ public final class RenderCommand implements Callable<Integer> {
             "                     (grid, adaptive, lens) x beam-size x shadow-samples",
             "  image              at most " + RenderSettings.MAX_PIXELS + " pixels, written to images/<name>.png:",
             "                     a name of at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH
-                    + " characters, no / \\ : or ..",
+                    + " characters, no / \\ : .. or invisible format characters (U+202E...)",
             "  scene file         at most " + Limits.MAX_SCENE_BYTES + " bytes, elements nested at most "
                     + Limits.MAX_NESTING_DEPTH + " deep,",
             "                     numbers at most " + magnitude(Limits.MAX_MAGNITUDE) + " in magnitude,",
             "                     sizes and factors 0 or at least " + magnitude(Limits.MIN_MAGNITUDE),
-            "  OBJ file           a regular file of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
+            "  OBJ file           a regular .obj file inside the scene file's folder (or --mesh-root),",
+            "                     of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
             "                     lines of at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters",
             "  memory             what does not fit in Java's heap (-Xmx) fails at once" };
 
