@@ -254,19 +254,19 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         if (name.length() > MAX_IMAGE_NAME_LENGTH)
             throw new IllegalArgumentException("the image name has " + name.length() + " characters, more than the limit of "
                     + MAX_IMAGE_NAME_LENGTH);
+        name.codePoints().filter(cp -> Character.getType(cp) == Character.FORMAT).findFirst().ifPresent(cp -> {
+            throw new IllegalArgumentException(String.format(Locale.ROOT, "the image name contains U+%04X, an invisible"
+                    + " or direction-changing character (the file name would display as something else)", cp));
+        });
         for (int i = 0; i < name.length(); ++i) {
             char c = name.charAt(i);
             if (c == '/' || c == '\\' || c == ':' || Character.isISOControl(c))
-                throw new IllegalArgumentException("the image name '" + name.replaceAll("\\p{Cntrl}", "?")
+                throw new IllegalArgumentException("the image name '" + name.replaceAll("[\\p{Cntrl}\\p{Cf}]", "?")
                         + "' is a path, not a name (it contains " + (Character.isISOControl(c) ? "a control character"
                                 : "'" + c + "'") + ")");
         }
         if (name.contains(".."))
             throw new IllegalArgumentException("the image name '" + name + "' contains '..' (a name, not a path, is expected)");
-        name.codePoints().filter(cp -> Character.getType(cp) == Character.FORMAT).findFirst().ifPresent(cp -> {
-            throw new IllegalArgumentException(String.format(Locale.ROOT, "the image name contains U+%04X, an invisible"
-                    + " or direction-changing character (the file name would display as something else)", cp));
-        });
         return name;
     }
 

@@ -231,6 +231,16 @@ class SceneFormatErrorTest {
         assertThat(catchThrowableOfType(IOException.class, () -> XmlSceneReader.read(file))).isNotNull();
     }
 
+    @Test
+    @DisplayName("an image name with a right-to-left override: refused, the message quoting it escaped, on one line")
+    void invisibleCharacterQuoted() throws IOException {
+        Path file = dir.resolve("rlo.xml");
+        Files.writeString(file, inScene("<image name=\"abc\u202Egnp&#10;x\"/>"));
+        SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+        assertThat(e.getMessage()).startsWith(file + ":2:10: <image name=\"abc\\u202Egnp\\u000Ax\">: the image name contains"
+                + " U+202E, an invisible or direction-changing character").doesNotContain("\u202E", "\n");
+    }
+
     @Nested
     @DisplayName("mesh files: OBJ files inside the scene file's folder only, refused unread otherwise")
     class MeshFiles {
