@@ -166,12 +166,17 @@ class SceneFormatErrorTest {
         assertThat(e.getReason()).contains(e.getCause().getMessage());
     }
 
+    /** Writes {@code content} into {@code file} and reads it, which must fail. */
+    private static SceneFormatException readFails(Path file, String content) throws IOException {
+        Files.writeString(file, content);
+        return catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+    }
+
     @Test
     @DisplayName("a mesh file that does not exist: reported at the file attribute, with the resolved path")
     void missingMesh() throws IOException {
         Path file = dir.resolve("mesh.xml");
-        Files.writeString(file, inGeometries("<mesh file=\"models/absent.obj\"/>"));
-        SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+        SceneFormatException e = readFails(file, inGeometries("<mesh file=\"models/absent.obj\"/>"));
         assertThat(e.getMessage()).isEqualTo(file + ":3:11: <mesh file=\"models/absent.obj\">: cannot read "
                 + dir.resolve("models/absent.obj") + ": no such file"
                 + " (expected an OBJ file; a relative path starts at the scene file's folder)");
@@ -235,8 +240,7 @@ class SceneFormatErrorTest {
     @DisplayName("an image name with a right-to-left override: refused, the message quoting it escaped, on one line")
     void invisibleCharacterQuoted() throws IOException {
         Path file = dir.resolve("rlo.xml");
-        Files.writeString(file, inScene("<image name=\"abc\u202Egnp&#10;x\"/>"));
-        SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+        SceneFormatException e = readFails(file, inScene("<image name=\"abc\u202Egnp&#10;x\"/>"));
         assertThat(e.getMessage()).startsWith(file + ":2:10: <image name=\"abc\\u202Egnp\\u000Ax\">: the image name contains"
                 + " U+202E, an invisible or direction-changing character").doesNotContain("\u202E", "\n");
     }
@@ -247,8 +251,7 @@ class SceneFormatErrorTest {
         private static final String QUAD = "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n";
 
         private SceneFormatException refused(Path scene, String mesh) throws IOException {
-            Files.writeString(scene, inGeometries("<mesh file=\"" + mesh + "\"/>"));
-            return catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(scene));
+            return readFails(scene, inGeometries("<mesh file=\"" + mesh + "\"/>"));
         }
 
         private String allowed() throws IOException {
