@@ -240,9 +240,9 @@ class SceneFormatErrorTest {
     @DisplayName("an image name with a right-to-left override: refused, the message quoting it escaped, on one line")
     void invisibleCharacterQuoted() throws IOException {
         Path file = dir.resolve("rlo.xml");
-        SceneFormatException e = readFails(file, inScene("<image name=\"abc\u202Egnp&#10;x\"/>"));
-        assertThat(e.getMessage()).startsWith(file + ":2:10: <image name=\"abc\\u202Egnp\\u000Ax\">: the image name contains"
-                + " U+202E, an invisible or direction-changing character").doesNotContain("\u202E", "\n");
+        assertThat(readFails(file, inScene("<image name=\"abc\u202Egnp&#10;x\"/>")).getMessage())
+                .startsWith(file + ":2:10: <image name=\"abc\\u202Egnp\\u000Ax\">: the image name contains U+202E, an"
+                        + " invisible or direction-changing character").doesNotContain("\u202E", "\n");
     }
 
     @Nested
