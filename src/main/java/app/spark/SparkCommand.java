@@ -71,7 +71,14 @@ final class SparkCommand {
                     + "give a master URL such as --spark local[2], or " + SparkEntry.HOW);
             return SparkEntry.BAD_INPUT;
         }
-        try (JavaSparkContext spark = new JavaSparkContext(conf)) {
+        JavaSparkContext started;
+        try {
+            started = new JavaSparkContext(conf);
+        } catch (RuntimeException e) { // a driver Spark refuses (too little memory), a master it cannot reach
+            err.println("render: cannot start Spark: " + SparkRenderer.firstLine(e));
+            return 1;
+        }
+        try (JavaSparkContext spark = started) {
             new SparkRenderer(spark).setProbe(probe).setProgress(request.progressStep()).setOutput(progress)
                     .setSummary(request.summary()).render(frames);
         } catch (SparkRenderException e) {

@@ -394,7 +394,7 @@ public final class SparkRenderer {
     }
 
     /** The first line of an exception's message (Spark's carry a stack trace), or its class. */
-    private static String firstLine(Throwable e) {
+    static String firstLine(Throwable e) {
         String m = e.getMessage();
         if (m == null || m.isBlank()) return e.getClass().getSimpleName();
         return m.lines().findFirst().orElse(m).trim();

@@ -32,7 +32,8 @@ class QuietSparkTest {
         for (String a : ManagementFactory.getRuntimeMXBean().getInputArguments())
             if (a.startsWith("--add-opens") || a.startsWith("-Djdk.") || a.startsWith("-Dio.netty")) command.add(a);
         command.addAll(jvm);
-        command.addAll(List.of("-Xmx512m", "-cp", System.getProperty("java.class.path"), "app.cli.Main"));
+        if (jvm.stream().noneMatch(a -> a.startsWith("-Xmx"))) command.add("-Xmx512m");
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), "app.cli.Main"));
         command.addAll(List.of(args));
         Process p = new ProcessBuilder(command).directory(dir.toFile())
                 .redirectOutput(dir.resolve("out.txt").toFile()).redirectError(dir.resolve("err.txt").toFile()).start();
@@ -70,5 +71,13 @@ class QuietSparkTest {
                 "--height", "16", "-o", dir.resolve("out.png").toString());
         assertThat(r.exitCode()).as(r.err()).isZero();
         assertThat(r.err()).contains("INFO SparkContext: Running Spark version");
+    }
+
+    @Test
+    @DisplayName("a driver Spark refuses (a 300 MB heap): exit 1 and one line")
+    void driverRefused() throws Exception {
+        Run r = main(List.of("-Xmx300m"), "--spark", "local[2]", scene().toString(), "-o", dir.resolve("out.png").toString());
+        assertThat(r.exitCode()).isEqualTo(1);
+        assertThat(r.err()).hasLineCount(1).startsWith("render: cannot start Spark: [INVALID_DRIVER_MEMORY] System memory");
     }
 }
