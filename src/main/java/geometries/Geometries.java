@@ -1,10 +1,14 @@
 package geometries;
 
 import java.lang.ref.SoftReference;
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.Deque;
+import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Objects;
+import java.util.Set;
 
 import primitives.Ray;
 
@@ -13,7 +17,17 @@ import primitives.Ray;
  * directly when the BVH is on: it indexes the leaves ({@link #collectLeaves}) in a {@link Bvh}.
  */
 public class Geometries extends Intersectable {
+    /**
+     * The deepest nesting of lists a render takes: a list is level 1, a list inside it level 2.
+     * The course's queries and the flat walk recurse once per level, so a much deeper chain
+     * overflows a thread's stack; a render refuses it at the start, naming the depth (see
+     * {@link #requireNestingWithinLimit()}). Scenes need a few levels.
+     */
+    public static final int MAX_NESTING_DEPTH = 1000;
+
     private final List<Intersectable> items = new ArrayList<>();
+    /** The number of {@link #add} calls so far; volatile, so that a render on another thread sees them. */
+    private volatile int changes;
     /**
      * The tree {@link Bvh#of} last built over these geometries, for the next render to reuse;
      * soft, so that a scene kept but no longer rendered gives the memory back when it is short.
@@ -29,7 +43,7 @@ public class Geometries extends Intersectable {
      * @throws NullPointerException naming the index of a null element
      */
     public Geometries(Intersectable... geometries) {
-        add(geometries);
+        append(geometries); // not the overridable add: a subclass is not initialised yet
     }
 
     /**
@@ -37,8 +51,87 @@ public class Geometries extends Intersectable {
      * @throws NullPointerException naming the index of a null element
      */
     public void add(Intersectable... geometries) {
-        for (int i = 0; i < geometries.length; ++i)
-            items.add(Objects.requireNonNull(geometries[i], "geometry #" + i + " to add is null"));
+        append(geometries);
+    }
+
+    private void append(Intersectable... geometries) {
+        for (int i = 0; i < geometries.length; ++i) {
+            Objects.requireNonNull(geometries[i], "geometry #" + i + " to add is null");
+            if (geometries[i] == this) throw new IllegalArgumentException("geometry #" + i + " to add is this list itself");
+        }
+        for (Intersectable g : geometries) items.add(g);
+        changes++;
+    }
+
+    /**
+     * How many times this list and the lists nested in it, at any depth, were added to: a render
+     * notes it when it starts and compares it when it ends, to tell that the scene changed while
+     * it rendered. Walks the nested lists without recursion, each once.
+     *
+     * @return the number of {@link #add} calls on this list and every list within it, so far
+     */
+    public long changeCount() {
+        long count = 0;
+        Set<Geometries> seen = Collections.newSetFromMap(new IdentityHashMap<>());
+        Deque<Geometries> todo = new ArrayDeque<>(List.of(this));
+        while (!todo.isEmpty()) {
+            Geometries g = todo.pop();
+            if (!seen.add(g)) continue;
+            count += g.changes;
+            for (int i = 0; i < g.items.size(); ++i)
+                if (g.items.get(i) instanceof Geometries nested) todo.push(nested);
+        }
+        return count;
+    }
+
+    /**
+     * @return the levels of lists: 1 for a list of shapes, 2 when one of them is a list of
+     *         shapes, and so on; more than the number of lists when one contains itself (counting
+     *         then stops)
+     */
+    public int nestingDepth() {
+        return nesting().depth();
+    }
+
+    /**
+     * Checks the nesting a render can take: at most {@link #MAX_NESTING_DEPTH} levels.
+     *
+     * @throws IllegalArgumentException naming the depth and the limit when the lists are nested
+     *                                  deeper, or saying so when a list contains itself
+     */
+    public void requireNestingWithinLimit() {
+        Nesting n = nesting();
+        if (n.depth() > n.lists()) // a chain longer than the lists goes round a cycle
+            throw new IllegalArgumentException("the geometries contain themselves: one of their " + n.lists()
+                    + " Geometries lists is nested in itself, which no render can walk");
+        if (n.depth() > MAX_NESTING_DEPTH) throw new IllegalArgumentException("the geometries are nested " + n.depth() + " levels deep (a Geometries in a"
+                + " Geometries ...), more than the limit of " + MAX_NESTING_DEPTH
+                + " (Geometries.MAX_NESTING_DEPTH): add the shapes to fewer, flatter lists");
+    }
+
+    /** The longest chain of nested lists, and the number of distinct lists. */
+    private record Nesting(int depth, int lists) {
+    }
+
+    /**
+     * Walks the lists level by level, each list once per level, without recursion. A chain longer
+     * than the number of lists goes round a cycle: the walk stops there.
+     */
+    private Nesting nesting() {
+        Set<Geometries> all = Collections.newSetFromMap(new IdentityHashMap<>());
+        all.add(this);
+        Set<Geometries> level = all;
+        int depth = 1;
+        while (true) {
+            Set<Geometries> next = Collections.newSetFromMap(new IdentityHashMap<>());
+            for (Geometries g : level)
+                for (int i = 0; i < g.items.size(); ++i)
+                    if (g.items.get(i) instanceof Geometries nested) next.add(nested);
+            if (next.isEmpty() || depth > all.size()) return new Nesting(depth, all.size());
+            all.addAll(next);
+            level = next;
+            ++depth;
+        }
     }
 
     /** @return a read-only view of the direct children */
@@ -111,8 +204,33 @@ public class Geometries extends Intersectable {
         tree = new SoftReference<>(built);
     }
 
+    /**
+     * The leaves of this list and of every list in it, in order, walked with a stack of its own
+     * rather than recursion: a chain of lists as deep as the memory holds does not overflow the
+     * thread's stack (a render refuses one deeper than {@link #MAX_NESTING_DEPTH} before).
+     */
     @Override
     void collectLeaves(List<Intersectable> out) {
-        for (Intersectable item : items) item.collectLeaves(out);
+        requireNestingWithinLimit(); // a list within itself would be walked without end
+        Deque<Geometries> lists = new ArrayDeque<>();
+        Deque<Integer> positions = new ArrayDeque<>();
+        lists.push(this);
+        positions.push(0);
+        while (!lists.isEmpty()) {
+            Geometries g = lists.peek();
+            int i = positions.pop();
+            if (i >= g.items.size()) {
+                lists.pop();
+                continue;
+            }
+            positions.push(i + 1);
+            Intersectable item = g.items.get(i);
+            if (item instanceof Geometries nested) {
+                lists.push(nested);
+                positions.push(0);
+            } else {
+                item.collectLeaves(out);
+            }
+        }
     }
 }

@@ -32,7 +32,7 @@ public final class Camera {
     /**
      * The most primary samples of one pixel from the RANDOM grid (columns × rows) or the depth of
      * field's lens samples: 65,536 (a 256×256 grid), so that the count fits an int and a pixel
-     * ends (ADAPTIVE's depth 6 stays below it, at most 129² lattice points).
+     * ends (ADAPTIVE's depth 6 stays below it, at most 65² lattice points).
      */
     public static final int MAX_SAMPLES_PER_PIXEL = 1 << 16;
 
@@ -284,6 +284,26 @@ public final class Camera {
         return seed;
     }
 
+    /**
+     * Holds this camera's sampling and its tracer's settings to {@link RayBudget#MAX_RAYS_PER_PIXEL}:
+     * when it is built, and again when a render starts (the tracer's beam size or shadow samples
+     * may have been raised since).
+     *
+     * @throws IllegalArgumentException naming the factors and their product when it is over
+     */
+    void requireRayBudget() {
+        requireRayBudget(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture, lensSamples, rayTracer);
+    }
+
+    private static void requireRayBudget(AntiAliasing antiAliasing, int gridColumns, int gridRows, int adaptiveDepth,
+                                         double aperture, int lensSamples, RayTracerBase rayTracer) {
+        long cameraRays = RayBudget.cameraRaysPerPixel(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture != 0,
+                lensSamples);
+        if (rayTracer instanceof RayTracerBasic basic)
+            RayBudget.require(antiAliasing, cameraRays, basic.getBeamSize(), basic.getShadowSamples());
+        else RayBudget.require(antiAliasing, cameraRays, 1, 1);
+    }
+
     int threads() {
         return threads;
     }
@@ -314,6 +334,9 @@ public final class Camera {
      *
      * @return the render's time and ray counts, as printed in the summary
      * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
+     * @throws java.util.ConcurrentModificationException  when the scene changed during the render
+     *                                                    (shapes or lights added, say): the image
+     *                                                    may mix two states and must not be written
      */
     public RenderStats render() {
         String name = imageLabel();
@@ -342,6 +365,7 @@ public final class Camera {
      *
      * @return this camera, for chaining
      * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
+     * @throws java.util.ConcurrentModificationException  when the scene changed during the render
      */
     public Camera renderImage() {
         render();
@@ -828,7 +852,11 @@ public final class Camera {
          * @throws MissingResourceException naming the location or direction when it is missing
          * @throws IllegalArgumentException when the view plane's size or distance is missing, when
          *                                  it or the resolution is not positive (naming the
-         *                                  value), or when the settings contradict each other
+         *                                  value), when the settings contradict each other, or
+         *                                  when a pixel would take more than
+         *                                  {@link RayBudget#MAX_RAYS_PER_PIXEL} rays (camera
+         *                                  samples × the tracer's beam size × shadow samples,
+         *                                  naming them)
          */
         public Camera build() {
             final String missing = "Missing rendering data";
@@ -857,8 +885,10 @@ public final class Camera {
                 Vector right = vTo.crossProduct(upHint).normalize();
                 vUp = right.crossProduct(vTo).normalize();
             }
-            ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
             RayTracerBase tracer = rayTracer != null ? rayTracer : RayTracerType.SIMPLE.create(new Scene("empty scene"));
+            // Before the image is allocated: a refused budget costs no memory.
+            requireRayBudget(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture, lensSamples, tracer);
+            ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
             return new Camera(this, vTo, vUp, writer, tracer);
         }
     }

@@ -38,6 +38,8 @@ public class ImageWriter {
      * @param nX        the number of columns, positive
      * @param nY        the number of rows, positive
      * @throws IllegalArgumentException for a blank name or a non-positive size
+     * @throws OutOfMemoryError         when the pixels do not fit the heap, naming the size, the
+     *                                  memory it needs and the most this JVM may use
      */
     public ImageWriter(String imageName, int nX, int nY) {
         this(nX, nY, checkName(imageName));
@@ -50,6 +52,8 @@ public class ImageWriter {
      * @param nX the number of columns, positive
      * @param nY the number of rows, positive
      * @throws IllegalArgumentException for a non-positive size
+     * @throws OutOfMemoryError         when the pixels do not fit the heap, naming the size, the
+     *                                  memory it needs and the most this JVM may use
      */
     public ImageWriter(int nX, int nY) {
         this(nX, nY, null);
@@ -64,7 +68,48 @@ public class ImageWriter {
         this.imageName = imageName;
         this.nX = nX;
         this.nY = nY;
-        this.pixels = new int[nX * nY];
+        this.pixels = allocate(nX, nY);
+    }
+
+    /**
+     * The pixel buffer, the one allocation that grows with the image. A lack of memory is caught
+     * at this very allocation, not guessed before it from the heap's free space (which the
+     * collector may still grow, or which may be too fragmented for one array): the error then
+     * names what was asked.
+     */
+    private static int[] allocate(int nX, int nY) {
+        try {
+            return new int[nX * nY];
+        } catch (OutOfMemoryError e) {
+            OutOfMemoryError named = new OutOfMemoryError(memoryNeeded(nX, nY)
+                    + " (render it smaller, or give Java more memory with -Xmx)");
+            named.initCause(e);
+            throw named;
+        }
+    }
+
+    /**
+     * What an image of nX × nY pixels needs, against what this JVM may use, for a one-line
+     * message: {@code image 40000x40000 needs 6104 MB; Java may use at most 2048 MB here}.
+     *
+     * @param nX the number of columns
+     * @param nY the number of rows
+     * @return the sentence, without advice (the caller knows how its user makes an image smaller)
+     */
+    public static String memoryNeeded(int nX, int nY) {
+        long mb = 1 << 20;
+        long max = Runtime.getRuntime().maxMemory();
+        return "image " + nX + "x" + nY + " needs " + (bytesNeeded(nX, nY) + mb - 1) / mb + " MB"
+                + (max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB here");
+    }
+
+    /**
+     * @param nX the number of columns
+     * @param nY the number of rows
+     * @return the bytes of the pixels of an nX × nY image: 4 a pixel
+     */
+    public static long bytesNeeded(int nX, int nY) {
+        return (long) nX * nY * Integer.BYTES;
     }
 
     private static String checkName(String imageName) {

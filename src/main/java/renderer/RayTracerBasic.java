@@ -129,12 +129,14 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     /**
-     * Snapshots the scene for tracing: checks every light's settings (before any worker starts,
-     * so a bad light fails the render at once with its message) and builds the BVH, or reuses the
+     * Snapshots the scene for tracing: checks the nesting of its geometries
+     * ({@link geometries.Geometries#MAX_NESTING_DEPTH}) and every light's settings (before any
+     * worker starts, so a bad scene fails the render at once with its message) and builds the BVH, or reuses the
      * one an earlier render built over the same, unchanged shapes ({@link Bvh#of}).
      */
     @Override
     synchronized void prepare() {
+        scene.geometries.requireNestingWithinLimit(); // the flat walk recurses once per level
         for (LightSource light : scene.lights) light.validate();
         preparedGeometries = scene.geometries;
         preparedItems = scene.geometries.getItems().size();
@@ -190,6 +192,7 @@ public class RayTracerBasic extends RayTracerBase {
 
     @Override
     void traceRay(TraceContext ctx) {
+        ctx.stopIfInterrupted(); // a pixel may take 65,536 camera samples
         Hit hit = ctx.hit(MAX_CALC_COLOR_LEVEL, Double.POSITIVE_INFINITY); // the camera ray's record
         if (!world.closestHit(hit)) {
             Color bg = scene.background;
@@ -318,6 +321,7 @@ public class RayTracerBasic extends RayTracerBase {
         double offset = rnd.nextDouble();
         double[] disk = ctx.disk;
         for (int i = 0; i < shadowSamples; ++i) {
+            ctx.stopIfInterrupted(); // a soft shadow may take millions of rays
             diskPoint(i, shadowSamples, offset, rnd, radius, disk);
             double sx = c.getX() + disk[0] * ax + disk[1] * bx;
             double sy = c.getY() + disk[0] * ay + disk[1] * by;
@@ -481,6 +485,7 @@ public class RayTracerBasic extends RayTracerBase {
         double sr = 0, sg = 0, sb = 0;
         double[] disk = ctx.disk;
         for (int i = 0; i < budget; ++i) {
+            ctx.stopIfInterrupted(); // a beam may take millions of rays
             diskPoint(i, budget, offset, rnd, spread, disk);
             double cx = disk[0], cy = disk[1];
             double dx = dirX + cx * ax + cy * bx;

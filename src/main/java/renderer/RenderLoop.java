@@ -69,7 +69,9 @@ final class RenderLoop {
      * Renders every pixel into the image writer.
      *
      * @throws CancellationException when the calling thread is interrupted (its interrupt flag is
-     *                               kept set); the workers stop within a tile
+     *                               kept set); the workers stop within a ray of a beam or a soft
+     *                               shadow (the library's tracer asks between them), or within a
+     *                               tile for a tracer of another kind
      * @throws RuntimeException      the first exception a worker fails with (the tracer's); the
      *                               other workers stop within a tile
      */
@@ -79,9 +81,30 @@ final class RenderLoop {
 
     /**
      * As {@link #run()}; {@code prepare} false skips the tracer's preparation, for a caller that
-     * prepared it once for several loops (see {@link RegionRenderer}).
+     * prepared it once for several loops (see {@link RegionRenderer}, whose scene is its own).
+     * A render that prepares notes the scene first ({@link SceneStamp}) and compares at the end:
+     *
+     * @throws java.util.ConcurrentModificationException when the scene changed during the render
+     *                                                   (also when that made it fail otherwise)
      */
     RenderStats run(boolean prepare) {
+        if (!prepare) return render(false);
+        SceneStamp before = SceneStamp.of(camera.rayTracer().scene, image.getImageName());
+        RenderStats stats;
+        try {
+            stats = render(true);
+        } catch (CancellationException e) {
+            throw e;
+        } catch (RuntimeException | Error e) { // a list read while another thread adds to it, say
+            before.requireUnchanged(image.getImageName(), e);
+            throw e;
+        }
+        before.requireUnchanged(image.getImageName(), null);
+        return stats;
+    }
+
+    private RenderStats render(boolean prepare) {
+        camera.requireRayBudget(); // the tracer's settings may have grown since the camera was built
         long t0 = System.nanoTime();
         if (prepare) camera.rayTracer().prepare();
         double prepareSeconds = (System.nanoTime() - t0) / 1e9;
@@ -105,7 +128,7 @@ final class RenderLoop {
             } catch (InterruptedException e) {
                 cancelled.set(true);
                 Thread.currentThread().interrupt();
-                throw new CancellationException("render of " + name + " was interrupted");
+                throw interrupted();
             } catch (ExecutionException e) {
                 cancelled.set(true);
                 // Not necessarily this future's exception: a worker stopped by another's failure
@@ -160,22 +183,26 @@ final class RenderLoop {
         return done;
     }
 
+    private CancellationException interrupted() {
+        return new CancellationException("render of " + name + " was interrupted");
+    }
+
     private Runnable worker(Progress progress) {
         return () -> {
             PixelSampler sampler = camera.newSampler();
             // One tile's pixels, written into the image when the tile is done.
             int[] tilePixels = new int[tile * tile];
             TraceContext ctx = new TraceContext(RayTracerBasic.MAX_CALC_COLOR_LEVEL, RayTracerBasic.MIN_CALC_COLOR_K);
+            ctx.interruptible = true;
             try {
                 for (int t = nextTile.getAndIncrement(); t < tileCount; t = nextTile.getAndIncrement()) {
-                    if (cancelled.get() || Thread.currentThread().isInterrupted()) {
-                        cancelled.set(true);
-                        throw new CancellationException("render of " + name + " was interrupted");
-                    }
+                    if (cancelled.get() || Thread.currentThread().isInterrupted()) throw interrupted();
                     progress.advance(renderTile(t, sampler, ctx, tilePixels));
                 }
             } catch (CancellationException e) {
-                throw e;
+                // From the tile loop, or from the tracer within a pixel: the others stop too.
+                cancelled.set(true);
+                throw interrupted();
             } catch (RuntimeException | Error e) {
                 // Stop the other workers at their next tile instead of finishing the image.
                 failure.compareAndSet(null, e);

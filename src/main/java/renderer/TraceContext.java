@@ -1,5 +1,7 @@
 package renderer;
 
+import java.util.concurrent.CancellationException;
+
 import geometries.Hit;
 
 /**
@@ -41,6 +43,12 @@ final class TraceContext {
     long cameraRays;
     long shadowRays;
     long secondaryRays;
+    /**
+     * Whether the tracer stops when the thread is interrupted (a render's worker): a pixel may
+     * take up to {@link RayBudget#MAX_RAYS_PER_PIXEL} rays, far longer than a render should go on
+     * after an interrupt, so the tracer asks between the rays of a beam or a soft shadow.
+     */
+    boolean interruptible;
 
     TraceContext(int levels, double threshold) {
         transmittance = new Transmittance(threshold);
@@ -59,6 +67,17 @@ final class TraceContext {
     /** The record a camera ray is written into: the top level's. */
     Hit cameraRay() {
         return hits[hits.length - 1];
+    }
+
+    /**
+     * Stops the pixel when this context belongs to a render and its thread was interrupted (the
+     * flag stays set for the render loop to see): a field read, no allocation while it goes on.
+     *
+     * @throws CancellationException when it stops
+     */
+    void stopIfInterrupted() {
+        if (interruptible && Thread.currentThread().isInterrupted())
+            throw new CancellationException("render was interrupted");
     }
 
     void addTo(RenderStats.Counter counter) {

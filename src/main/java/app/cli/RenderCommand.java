@@ -5,6 +5,7 @@ import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -25,6 +26,7 @@ import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
 import scene.Scene;
+import scene.io.FileSource;
 import scene.io.Limits;
 import scene.io.LoadedScene;
 import scene.io.Messages;
@@ -73,12 +75,13 @@ public final class RenderCommand implements Callable<Integer> {
             "                     (grid, adaptive, lens) x beam-size x shadow-samples",
             "  image              at most " + RenderSettings.MAX_PIXELS + " pixels, written to images/<name>.png:",
             "                     a name of at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH
-                    + " characters, no / \\ : or ..",
+                    + " characters, no / \\ : .. or invisible format characters (U+202E...)",
             "  scene file         at most " + Limits.MAX_SCENE_BYTES + " bytes, elements nested at most "
                     + Limits.MAX_NESTING_DEPTH + " deep,",
             "                     numbers at most " + magnitude(Limits.MAX_MAGNITUDE) + " in magnitude,",
             "                     sizes and factors 0 or at least " + magnitude(Limits.MIN_MAGNITUDE),
-            "  OBJ file           a regular file of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
+            "  OBJ file           a regular .obj file inside the scene file's folder (or --mesh-root),",
+            "                     of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
             "                     lines of at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters",
             "  memory             what does not fit in Java's heap (-Xmx) fails at once" };
 
@@ -118,6 +121,12 @@ public final class RenderCommand implements Callable<Integer> {
 
     @Option(names = { "-q", "--quiet" }, description = "Print nothing but errors.")
     private boolean quiet;
+
+    @Option(names = "--mesh-root", paramLabel = "DIR",
+            description = { "The folder a scene file's meshes may be read from, sub-folders included. Default: the"
+                    + " scene file's own folder: a mesh path outside it (absolute, '../', a link leading out) or"
+                    + " without the .obj extension is refused unread. Local renders only." })
+    private Path meshRoot;
 
     // ===== Spark (issue 13): more scene files as frames, one option, and a branch into app.spark =====
     @Parameters(index = "1..*", arity = "0..*", paramLabel = "MORE",
@@ -201,7 +210,7 @@ public final class RenderCommand implements Callable<Integer> {
         if (spark != null || !frames.isEmpty()) return spark();
         Job job;
         try {
-            job = scene == null ? showcase() : load(scene);
+            job = scene == null ? showcase() : load(scene, meshRoot);
         } catch (SceneFormatException e) {
             err.println(e.getMessage());
             return BAD_INPUT;
@@ -309,6 +318,8 @@ public final class RenderCommand implements Callable<Integer> {
                 throw usage("--threads: " + e.getMessage());
             }
         }
+        if (meshRoot != null && !Files.isDirectory(meshRoot))
+            throw usage("--mesh-root must name a folder, got '" + meshRoot + "'");
         if (output != null) {
             Path name = output.getFileName();
             if (name == null || !name.toString().toLowerCase(Locale.ROOT).endsWith(".png"))
@@ -366,10 +377,8 @@ public final class RenderCommand implements Callable<Integer> {
      * one allocation that grows with the image) against the most memory this JVM may use.
      */
     private static String notEnoughMemory(RenderSettings s) {
-        long mb = 1 << 20;
-        long needed = ((long) s.width() * s.height() * Integer.BYTES + mb - 1) / mb;
-        return String.format(Locale.ROOT, NAME + ": image %dx%d needs %d MB%s (render it smaller with --width or"
-                + " --height, or give Java more memory with -Xmx)", s.width(), s.height(), needed, maxMemory());
+        return NAME + ": " + ImageWriter.memoryNeeded(s.width(), s.height())
+                + " (render it smaller with --width or --height, or give Java more memory with -Xmx)";
     }
 
     /** "; Java may use at most N MB here", or nothing when the JVM states no limit. */
@@ -385,8 +394,8 @@ public final class RenderCommand implements Callable<Integer> {
     private record Job(Scene scene, Camera.Builder view, RenderSettings settings, String source) {
     }
 
-    private static Job load(Path file) throws IOException, SceneFormatException {
-        LoadedScene loaded = XmlSceneReader.read(file);
+    private static Job load(Path file, Path meshRoot) throws IOException, SceneFormatException {
+        LoadedScene loaded = XmlSceneReader.read(file, FileSource.DISK, meshRoot);
         return new Job(loaded.scene(), loaded.requireView(), loaded.settings(), file.toString());
     }
 

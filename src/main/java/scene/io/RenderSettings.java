@@ -8,6 +8,7 @@ import primitives.Color;
 import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
+import renderer.RayBudget;
 import renderer.RayTracerBasic;
 import scene.Scene;
 
@@ -63,10 +64,10 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
     /**
      * The ray budget of one pixel: {@link #samplesPerPixel()} × beam size × shadow samples at most
-     * this (2^24, 16,777,216), so that no setting, alone or multiplied by the others, makes a
-     * render that never ends. The defaults use 256; the showcase's adaptive depth 3, 20,736.
+     * this; the library's own limit, {@link RayBudget#MAX_RAYS_PER_PIXEL}, which the camera holds
+     * the Java API to as well.
      */
-    public static final long MAX_RAYS_PER_PIXEL = 1L << 24;
+    public static final long MAX_RAYS_PER_PIXEL = RayBudget.MAX_RAYS_PER_PIXEL;
     /** The longest image name, in characters (file names have at most 255 bytes). */
     public static final int MAX_IMAGE_NAME_LENGTH = 200;
 
@@ -107,14 +108,8 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         requireImageName(imageName);
         Objects.requireNonNull(gridColor, "grid colour");
         Objects.requireNonNull(antiAliasing, "anti-aliasing mode");
-        double rays = (double) samplesPerPixel(antiAliasing, aaColumns, aaRows, adaptiveDepth, focalDistance, dofSamples)
-                * beamSize * shadowSamples; // a double: the product of three ints may overflow a long
-        if (rays > MAX_RAYS_PER_PIXEL)
-            throw new IllegalArgumentException(String.format(Locale.ROOT,
-                    "%s sampling with %d samples per pixel × beam size %d × %d shadow samples is %.0f rays per pixel,"
-                            + " more than the limit of %d",
-                    antiAliasing, samplesPerPixel(antiAliasing, aaColumns, aaRows, adaptiveDepth, focalDistance, dofSamples),
-                    beamSize, shadowSamples, rays, MAX_RAYS_PER_PIXEL));
+        RayBudget.require(antiAliasing, samplesPerPixel(antiAliasing, aaColumns, aaRows, adaptiveDepth, focalDistance,
+                dofSamples), beamSize, shadowSamples);
         if (width < 1 || height < 1)
             throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
         long pixels = (long) width * height;
@@ -247,7 +242,11 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
      * @throws IllegalArgumentException for a blank name, one longer than
      *                                  {@link #MAX_IMAGE_NAME_LENGTH}, or one with a path separator
      *                                  ({@code /} or {@code \}), a drive colon, {@code ..} or a
-     *                                  control character, naming it
+     *                                  control character, naming it; for one with an invisible
+     *                                  format character (Unicode category Cf: the bidirectional
+     *                                  overrides and isolates U+202A–U+202E and U+2066–U+2069, the
+     *                                  marks U+200E, U+200F and U+061C, U+200B, U+FEFF...), naming
+     *                                  its code point
      */
     public static String requireImageName(String name) {
         Objects.requireNonNull(name, "image name");
@@ -255,10 +254,14 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         if (name.length() > MAX_IMAGE_NAME_LENGTH)
             throw new IllegalArgumentException("the image name has " + name.length() + " characters, more than the limit of "
                     + MAX_IMAGE_NAME_LENGTH);
+        name.codePoints().filter(cp -> Character.getType(cp) == Character.FORMAT).findFirst().ifPresent(cp -> {
+            throw new IllegalArgumentException(String.format(Locale.ROOT, "the image name contains U+%04X, an invisible"
+                    + " or direction-changing character (the file name would display as something else)", cp));
+        });
         for (int i = 0; i < name.length(); ++i) {
             char c = name.charAt(i);
             if (c == '/' || c == '\\' || c == ':' || Character.isISOControl(c))
-                throw new IllegalArgumentException("the image name '" + name.replaceAll("\\p{Cntrl}", "?")
+                throw new IllegalArgumentException("the image name '" + name.replaceAll("[\\p{Cntrl}\\p{Cf}]", "?")
                         + "' is a path, not a name (it contains " + (Character.isISOControl(c) ? "a control character"
                                 : "'" + c + "'") + ")");
         }
@@ -268,9 +271,10 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
     }
 
     /**
-     * The most primary rays one pixel may take: RANDOM's grid, ADAPTIVE's whole lattice of
-     * (2^(depth+1) + 1)² points (the worst case), CORNERS' five points, or without anti-aliasing
-     * the lens samples with depth of field and 1 without.
+     * The most primary rays one pixel may take, as the camera counts them
+     * ({@link RayBudget#cameraRaysPerPixel}): RANDOM's grid, ADAPTIVE's whole lattice of
+     * (2^depth + 1)² points (the worst case), CORNERS' five points, or without anti-aliasing the
+     * lens samples with depth of field and 1 without.
      *
      * @return the samples per pixel, as a long (a grid of two ints may overflow an int)
      */
@@ -280,15 +284,7 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
 
     private static long samplesPerPixel(AntiAliasing mode, int columns, int rows, int depth, double focalDistance,
             int dofSamples) {
-        return switch (mode) {
-            case RANDOM -> (long) columns * rows;
-            case ADAPTIVE -> {
-                long side = (1L << Math.min(Math.max(depth, 0) + 1, 30)) + 1;
-                yield side * side;
-            }
-            case CORNERS -> 5;
-            case NONE -> focalDistance > 0 ? dofSamples : 1;
-        };
+        return RayBudget.cameraRaysPerPixel(mode, columns, rows, depth, focalDistance > 0, dofSamples);
     }
 
     /** @return whether these settings ask for depth of field */

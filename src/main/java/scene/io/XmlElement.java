@@ -107,7 +107,23 @@ final class XmlElement {
 
     /** {@code <name attribute="value">}, for messages. */
     String quote(String attribute) {
-        return "<" + name + " " + attribute + "=\"" + attributes.get(attribute) + "\">";
+        return "<" + name + " " + attribute + "=\"" + visible(attributes.get(attribute)) + "\">";
+    }
+
+    /**
+     * {@code value} with its control and invisible format characters written as backslash-u escapes:
+     * a message quoting it stays one line and displays as the file holds it (a right-to-left
+     * override would reverse the rest of the line).
+     */
+    private static String visible(String value) {
+        if (value == null) return null;
+        StringBuilder b = new StringBuilder(value.length());
+        value.codePoints().forEach(cp -> {
+            if (Character.isISOControl(cp) || Character.getType(cp) == Character.FORMAT)
+                b.append(String.format(java.util.Locale.ROOT, "\\u%04X", cp));
+            else b.appendCodePoint(cp);
+        });
+        return b.toString();
     }
 
     /** An error at the start of this element's tag. */

@@ -22,10 +22,13 @@ import java.nio.CharBuffer;
 import java.nio.charset.CoderResult;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
+import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 import java.util.function.Consumer;
@@ -90,22 +93,26 @@ public final class XmlSceneReader {
             + Camera.MAX_SAMPLES_PER_PIXEL, n -> Camera.getBuilder().setDepthOfFieldSamples(n));
     private static final ValueType<Integer> SHININESS = INTEGER.narrowedBy("an integer ≥ 0",
             n -> new Material().setShininess(n));
-    private static final ValueType<String> IMAGE_NAME = TEXT.narrowedBy("a file name without /, \\, :, .. or"
-            + " control characters, at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH + " characters (the image goes"
+    private static final ValueType<String> IMAGE_NAME = TEXT.narrowedBy("a file name without /, \\, :, .., control"
+            + " characters or invisible format characters (U+202E...), at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH + " characters (the image goes"
             + " to images/<name>.png; only the command line's -o chooses another place)", RenderSettings::requireImageName);
 
     private final Path file;
     private final String fileName;
     private final FileSource files;
+    /** The folder meshes must lie in (absolute, normalized): the scene file's unless the caller chose another. */
+    private final Path meshRoot;
 
-    private XmlSceneReader(Path file, FileSource files) {
+    private XmlSceneReader(Path file, FileSource files, Path meshRoot) {
         this.file = file;
         this.fileName = file.toString();
         this.files = files;
+        this.meshRoot = (meshRoot != null ? meshRoot : file.toAbsolutePath().getParent()).toAbsolutePath().normalize();
     }
 
     /**
-     * Reads a scene file (UTF-8). Mesh files are found relative to the scene file's folder.
+     * Reads a scene file (UTF-8). Mesh files are found relative to the scene file's folder and
+     * must lie in it (see {@link #read(Path, FileSource, Path)}).
      *
      * @param file the scene file; messages name it as given
      * @return the scene, its view when the file has a camera, and its render settings
@@ -130,6 +137,27 @@ public final class XmlSceneReader {
      *                              regular file or is larger than the limit
      */
     public static LoadedScene read(Path file, FileSource files) throws IOException, SceneFormatException {
+        return read(file, files, null);
+    }
+
+    /**
+     * As {@link #read(Path, FileSource)}, with the folder the meshes must lie in. A scene file
+     * from someone else must not read other files of the machine: a mesh path is resolved against
+     * the scene file's folder, must stay inside {@code meshRoot} (by its path, and, when the file
+     * exists, by its real path, so that a link cannot lead out), and must name an OBJ file
+     * ({@code .obj}); otherwise the file is refused, unread, with one message naming the path.
+     *
+     * @param file     the scene file as the user named it
+     * @param files    where the bytes of {@code file} and of the meshes it references come from
+     * @param meshRoot the folder meshes may be read from, sub-folders included; null: the scene
+     *                 file's own folder
+     * @return the scene, its view and its settings
+     * @throws IOException          when {@code files} cannot give the scene file
+     * @throws SceneFormatException when its content is not a valid scene (a mesh outside the
+     *                              folder or not an OBJ file included), or the file is not a
+     *                              regular file or is larger than the limit
+     */
+    public static LoadedScene read(Path file, FileSource files, Path meshRoot) throws IOException, SceneFormatException {
         Objects.requireNonNull(file, "file");
         Objects.requireNonNull(files, "files");
         byte[] content;
@@ -139,7 +167,7 @@ public final class XmlSceneReader {
             throw new SceneFormatException(file.toString(), 0, 0, e.reason()
                     + " (expected an XML scene file within the limit; meshes go in OBJ files)");
         }
-        return parse(content, file, files);
+        return parse(content, file, files, meshRoot);
     }
 
     /**
@@ -147,13 +175,14 @@ public final class XmlSceneReader {
      * meshes come from the disk.
      */
     static LoadedScene read(byte[] content, Path file) throws SceneFormatException {
-        return parse(content, file, FileSource.DISK);
+        return parse(content, file, FileSource.DISK, null);
     }
 
-    private static LoadedScene parse(byte[] content, Path file, FileSource files) throws SceneFormatException {
+    private static LoadedScene parse(byte[] content, Path file, FileSource files, Path meshRoot)
+            throws SceneFormatException {
         String text = decodeUtf8(content, file.toString());
         if (text.startsWith("\uFEFF")) text = text.substring(1); // a byte-order mark is not content
-        XmlSceneReader reader = new XmlSceneReader(file, files);
+        XmlSceneReader reader = new XmlSceneReader(file, files, meshRoot);
         return reader.scene(XmlTreeBuilder.parse(text, reader.fileName));
     }
 
@@ -383,7 +412,7 @@ public final class XmlSceneReader {
      */
     private Geometry mesh(XmlElement e) throws SceneFormatException {
         String expected = "an OBJ file; a relative path starts at the scene file's folder";
-        Path obj = file.resolveSibling(e.required("file", TEXT));
+        Path obj = meshFile(e);
         try {
             // Decoded as ObjReader.read(Path) does: UTF-8, malformed bytes replaced (only comments
             // and names may hold them, and those are ignored).
@@ -402,6 +431,38 @@ public final class XmlSceneReader {
         } catch (IOException ex) {
             throw e.errorAt("file", e.quote("file") + ": cannot read " + obj + ": " + Messages.reason(ex) + " (expected " + expected + ")", ex);
         }
+    }
+
+    /**
+     * The mesh file of {@code e}, resolved against the scene file's folder, if it names an OBJ
+     * file inside {@link #meshRoot} (by its path, and by its real path when it exists).
+     */
+    private Path meshFile(XmlElement e) throws SceneFormatException {
+        String name = e.required("file", TEXT);
+        String allowed = " (expected an OBJ file inside " + meshRoot + "; the command line's --mesh-root DIR allows"
+                + " another folder)";
+        Path obj;
+        try {
+            obj = file.resolveSibling(name);
+        } catch (InvalidPathException ex) {
+            throw e.errorAt("file", e.quote("file") + ": not a path: " + ex.getReason() + allowed);
+        }
+        Path fileName = obj.getFileName();
+        if (fileName == null || !fileName.toString().toLowerCase(Locale.ROOT).endsWith(".obj"))
+            throw e.errorAt("file", e.quote("file") + ": " + obj + " is not an OBJ file (its name does not end in .obj)"
+                    + allowed);
+        if (!obj.toAbsolutePath().normalize().startsWith(meshRoot))
+            throw e.errorAt("file", e.quote("file") + ": " + obj + " is outside the folder meshes are read from" + allowed);
+        boolean linkedOut;
+        try {
+            linkedOut = Files.exists(obj) && !obj.toRealPath().startsWith(meshRoot.toRealPath());
+        } catch (IOException ex) { // gone meanwhile, or unreadable: reading it says so
+            linkedOut = false;
+        }
+        if (linkedOut)
+            throw e.errorAt("file", e.quote("file") + ": " + obj + " leads outside the folder meshes are read from"
+                    + " (through a link)" + allowed);
+        return obj;
     }
 
     /**

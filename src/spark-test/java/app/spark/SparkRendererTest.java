@@ -2,6 +2,7 @@ package app.spark;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -229,5 +230,52 @@ class SparkRendererTest {
         assertThat(lines.get(3)).contains("100.0%  24/24 tiles");
         assertThat(lines.get(4)).startsWith("spark render showcase 83x61 [ADAPTIVE depth 3 threshold 8.0, ")
                 .contains(" 24 tiles ", "1 executor, 24 tasks, 0 retries");
+    }
+
+    @Nested
+    @DisplayName("the driver's memory: the images allocated, and the results' size checked, before the job")
+    class DriverMemory {
+        @Test
+        @DisplayName("an image larger than the driver's heap: refused, naming the MB and --driver-memory")
+        void imageTooLarge() throws Exception {
+            assumeTrue(ImageWriter.bytesNeeded(40_000, 40_000) > Runtime.getRuntime().maxMemory(), "the heap is above 6.4 GB");
+            SparkFrame frame = SparkFrame.read(GLOSSY);
+            frame = frame.withSettings(frame.settings().withImage("huge", 40_000, 40_000)).withOutput(dir.resolve("huge.png"));
+            List<SparkFrame> frames = List.of(frame);
+            // (With the default spark.driver.maxResultSize this job is refused for its results first.)
+            assertThatThrownBy(() -> SparkRenderer.allocate("spark render huge", frames)).isInstanceOf(SparkRenderException.class)
+                    .hasMessage("spark render huge: the driver cannot hold the image: image 40000x40000 needs 6104 MB; Java"
+                            + " may use at most " + (Runtime.getRuntime().maxMemory() >> 20) + " MB here (give the driver"
+                            + " more memory with spark-submit --driver-memory, or -Xmx for a local master; or render it"
+                            + " smaller)");
+        }
+
+        @Test
+        @DisplayName("the job's images are allocated before it starts: one per frame, of its size")
+        void allocated() throws Exception {
+            SparkFrame frame = SparkFrame.read(GLOSSY);
+            List<ImageWriter> images = SparkRenderer.allocate("x", List.of(frame.withSettings(frame.settings().withImage("a", 30, 20)),
+                    frame.withSettings(frame.settings().withImage("b", 10, 40))));
+            assertThat(images).extracting(ImageWriter::getNx, ImageWriter::getNy)
+                    .containsExactly(org.assertj.core.groups.Tuple.tuple(30, 20), org.assertj.core.groups.Tuple.tuple(10, 40));
+        }
+
+        @Test
+        @DisplayName("pixels beyond spark.driver.maxResultSize (1 GiB by default): refused before any task, naming the setting")
+        void resultsTooLarge() throws Exception {
+            SparkFrame frame = SparkFrame.read(GLOSSY);
+            frame = frame.withSettings(frame.settings().withImage("large", 17_000, 17_000)).withOutput(dir.resolve("large.png"));
+            List<SparkFrame> frames = List.of(frame);
+            SparkRenderer counting = renderer().setProbe(t -> {
+                throw new IllegalStateException("a task started");
+            });
+            assertThatThrownBy(() -> counting.render(frames)).isInstanceOf(SparkRenderException.class)
+                    .hasMessage("spark render large: the job's results are 1103 MB of pixels, more than"
+                            + " spark.driver.maxResultSize (1024 MB) lets the driver receive: raise it (spark-submit --conf"
+                            + " spark.driver.maxResultSize=3g, or 0 for no limit) or render it smaller");
+            assertThat(dir.resolve("large.png")).doesNotExist();
+            SparkRenderer.requireResultSize("x", frames, 0); // 0: no limit
+            SparkRenderer.requireResultSize("x", frames, 2L << 30);
+        }
     }
 }

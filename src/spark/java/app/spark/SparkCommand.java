@@ -20,8 +20,8 @@ import scene.io.SceneFormatException;
 /**
  * The command line's Spark render (see {@link SparkEntry}): the driver validates, then starts
  * Spark, renders and writes. Spark's own log is off unless {@code spark.log.level} is set (with
- * {@code --conf} of spark-submit or {@code -Dspark.log.level=WARN}), so that a failure is the
- * one line the command line promises; the cause is in the executors' logs.
+ * {@code --conf} of spark-submit or {@code -Dspark.log.level=WARN}; see {@link QuietLog}), so that
+ * a failure is the one line the command line promises; the cause is in the executors' logs.
  */
 final class SparkCommand {
     private SparkCommand() {
@@ -34,6 +34,7 @@ final class SparkCommand {
     /** As {@link #run(SparkRequest, PrintStream, PrintStream, PrintStream)}, with the tests' fault injection. */
     static int run(SparkRequest request, TileProbe probe, PrintStream progress, PrintStream out, PrintStream err) {
         long start = System.nanoTime();
+        QuietLog.unlessAsked(); // first: a bad input's exit must not be followed by Spark's shutdown lines
         List<SparkFrame> frames = new ArrayList<>();
         Map<Path, String> outputs = new HashMap<>();
         for (Path scene : request.scenes()) {
@@ -71,8 +72,14 @@ final class SparkCommand {
                     + "give a master URL such as --spark local[2], or " + SparkEntry.HOW);
             return SparkEntry.BAD_INPUT;
         }
-        if (!conf.contains("spark.log.level")) conf.set("spark.log.level", "OFF");
-        try (JavaSparkContext spark = new JavaSparkContext(conf)) {
+        JavaSparkContext started;
+        try {
+            started = new JavaSparkContext(conf);
+        } catch (RuntimeException e) { // a driver Spark refuses (too little memory), a master it cannot reach
+            err.println("raytracer: cannot start Spark: " + SparkRenderer.firstLine(e));
+            return 1;
+        }
+        try (JavaSparkContext spark = started) {
             new SparkRenderer(spark).setProbe(probe).setProgress(request.progressStep()).setOutput(progress)
                     .setSummary(request.summary()).render(frames);
         } catch (SparkRenderException e) {

@@ -2,6 +2,7 @@ package app.spark;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.io.Serializable;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
@@ -9,6 +10,8 @@ import java.util.List;
 import java.util.Objects;
 import java.util.UUID;
 
+import org.apache.spark.TaskContext;
+import org.apache.spark.api.java.JavaRDD;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.broadcast.Broadcast;
 
@@ -16,6 +19,11 @@ import renderer.ImageWriter;
 import renderer.Progress;
 import scene.io.RenderSettings;
 import scene.io.SceneFormatException;
+import scala.Function2;
+import scala.collection.Iterator;
+import scala.jdk.javaapi.CollectionConverters;
+import scala.reflect.ClassTag$;
+import scala.runtime.BoxedUnit;
 
 /**
  * Renders scene files on a Spark cluster, byte for byte as the local renderer does. The driver
@@ -28,8 +36,10 @@ import scene.io.SceneFormatException;
  * changes a pixel.
  *
  * <p>Many images (an animation's frames) are one job: their tiles are the tasks, so small frames
- * are one tile each and large frames are split. The results come back to the driver at the end
- * of the job, so the driver needs memory for all the images of one call (4 bytes a pixel).
+ * are one tile each and large frames are split. Each task's tiles go into the images as they
+ * arrive, so the driver needs memory for the images of one call (4 bytes a pixel), allocated
+ * before the job starts (a driver without it refuses at once), and the job's pixels must pass
+ * {@code spark.driver.maxResultSize} (default 1 GiB; checked before the job too).
  */
 public final class SparkRenderer {
     /**
@@ -38,7 +48,14 @@ public final class SparkRenderer {
      */
     public static final int DEFAULT_TILE = 64;
 
+    /**
+     * The Spark setting of how long a job may go without any executor before the driver cancels
+     * it (a time, as {@code 120s} or {@code 5m}; default 120 s): see {@link #setExecutorTimeout}.
+     */
+    public static final String EXECUTOR_TIMEOUT = "spark.raytracer.executorTimeout";
+
     private final JavaSparkContext spark;
+    private double executorTimeout;
     private int tile = DEFAULT_TILE;
     private int partitions;
     private double progressStep;
@@ -54,6 +71,23 @@ public final class SparkRenderer {
     public SparkRenderer(JavaSparkContext spark) {
         requireSupportedJava();
         this.spark = Objects.requireNonNull(spark, "spark context");
+        this.executorTimeout = spark.sc().getConf().getTimeAsSeconds(EXECUTOR_TIMEOUT, "120s");
+    }
+
+    /**
+     * How long a job may go without any executor (every worker lost, or none granted) before the
+     * driver cancels it with {@link SparkRenderException}; the progress says when it starts
+     * waiting. Spark itself would wait without end. A local master always has its executor.
+     *
+     * @param seconds the limit, &gt; 0 (default: {@value #EXECUTOR_TIMEOUT} of the context's
+     *                configuration, else 120)
+     * @return this renderer
+     * @throws IllegalArgumentException for a limit that is not positive
+     */
+    public SparkRenderer setExecutorTimeout(double seconds) {
+        if (!(seconds > 0)) throw new IllegalArgumentException("executor timeout must be positive seconds, got " + seconds);
+        this.executorTimeout = seconds;
+        return this;
     }
 
     /**
@@ -153,7 +187,10 @@ public final class SparkRenderer {
      * @param frames the images to render, at least one
      * @return what the job did
      * @throws SparkRenderException  when a task failed more often than Spark retries it; no PNG
-     *                               was written
+     *                               was written. Before anything starts: when the images' pixels
+     *                               are more than {@code spark.driver.maxResultSize}, or the images
+     *                               do not fit the driver's heap (one line naming the MB and the
+     *                               setting to raise)
      * @throws java.io.UncheckedIOException when a PNG cannot be written
      * @throws IllegalArgumentException for an empty list
      */
@@ -170,23 +207,20 @@ public final class SparkRenderer {
             broadcastBytes += f.frame().files().size();
         }
         String label = "spark render " + (frames.size() == 1 ? frames.get(0).settings().imageName() : frames.size() + " frames");
+        // Before anything starts: the results must pass Spark's limit, and the images fit the driver.
+        requireResultSize(label, frames, spark.sc().getConf().getSizeAsBytes(MAX_RESULT_SIZE, "1g"));
+        Assembly assembly = new Assembly(allocate(label, frames), tiles.size());
         Progress progress = new Progress(label, tiles.size(), "tiles", progressStep, out);
         List<List<Tile>> groups = groups(tiles, partitions == 0 ? tiles.size() : Math.min(partitions, tiles.size()));
         JobMonitor monitor = new JobMonitor("raytracer-" + UUID.randomUUID(),
                 groups.stream().mapToInt(List::size).toArray(), progress);
 
-        List<TilePixels> results = run(new FrameSet(sent), groups, monitor, label);
+        run(new FrameSet(sent), groups, monitor, label, assembly);
         double renderSeconds = (System.nanoTime() - start) / 1e9;
-        long pixels = write(frames, results);
+        long pixels = write(frames, assembly.images);
 
-        double[] tileSeconds = new double[results.size()];
-        long rays = 0;
-        for (int i = 0; i < results.size(); ++i) {
-            tileSeconds[i] = results.get(i).seconds();
-            rays += results.get(i).rays();
-        }
-        Arrays.sort(tileSeconds);
-        SparkRenderStats stats = new SparkRenderStats(renderSeconds, frames.size(), pixels, tiles.size(), rays,
+        double[] tileSeconds = assembly.tileSeconds();
+        SparkRenderStats stats = new SparkRenderStats(renderSeconds, frames.size(), pixels, tiles.size(), assembly.rays,
                 broadcastBytes, monitor.executors(), monitor.attempts(), monitor.retries(), tileSeconds);
         if (summary) {
             RenderSettings s = frames.get(0).settings();
@@ -196,53 +230,167 @@ public final class SparkRenderer {
         return stats;
     }
 
+    /** Spark's limit of the results of one job, on the driver (default 1g; 0: none). */
+    static final String MAX_RESULT_SIZE = "spark.driver.maxResultSize";
+
+    /**
+     * Refuses a job whose pixels alone are more than {@code limit} bytes ({@value #MAX_RESULT_SIZE};
+     * 0: no limit): Spark would abort it when the results passed the limit, after rendering that
+     * much on the cluster.
+     *
+     * @throws SparkRenderException naming the bytes, the limit and how to raise it
+     */
+    static void requireResultSize(String label, List<SparkFrame> frames, long limit) {
+        long bytes = 0;
+        for (SparkFrame f : frames) bytes += ImageWriter.bytesNeeded(f.settings().width(), f.settings().height());
+        if (limit <= 0 || bytes <= limit) return;
+        long mb = 1 << 20, gb = 1 << 30;
+        throw new SparkRenderException(label + ": the job's results are " + (bytes + mb - 1) / mb + " MB of pixels, more than "
+                + MAX_RESULT_SIZE + " (" + limit / mb + " MB) lets the driver receive: raise it (spark-submit --conf "
+                + MAX_RESULT_SIZE + "=" + ((bytes + gb - 1) / gb + 1) + "g, or 0 for no limit) or render it smaller", null);
+    }
+
+    /**
+     * The images of the job, allocated before it starts, so that a driver without the memory for
+     * them refuses at once instead of after the cluster rendered every tile.
+     *
+     * @throws SparkRenderException naming the image, the memory it needs and how to give it
+     */
+    static List<ImageWriter> allocate(String label, List<SparkFrame> frames) {
+        List<ImageWriter> images = new ArrayList<>(frames.size());
+        for (SparkFrame f : frames) {
+            try {
+                images.add(f.settings().newImageWriter());
+            } catch (OutOfMemoryError e) {
+                images.clear(); // the memory of the frames before goes back
+                RenderSettings s = f.settings();
+                throw new SparkRenderException(label + ": the driver cannot hold the image: "
+                        + ImageWriter.memoryNeeded(s.width(), s.height()) + (frames.size() > 1 ? " for this frame alone"
+                        : "") + " (give the driver more memory with spark-submit --driver-memory, or -Xmx for a local"
+                        + " master; or render it smaller)", e);
+            }
+        }
+        return images;
+    }
+
+    /**
+     * Puts each partition's tiles into the images as its result arrives (on Spark's scheduler
+     * thread), so that the driver holds the images and the results in flight, not every tile of
+     * the job besides; keeps what the summary needs of them.
+     */
+    private static final class Assembly {
+        final List<ImageWriter> images;
+        private final double[] seconds;
+        private int tiles;
+        long rays;
+
+        Assembly(List<ImageWriter> images, int tileCount) {
+            this.images = images;
+            this.seconds = new double[tileCount];
+        }
+
+        synchronized void add(List<TilePixels> results) {
+            for (TilePixels r : results) {
+                Tile t = r.tile();
+                images.get(t.frame()).writeTile(t.x0(), t.y0(), t.x1() - t.x0(), t.y1() - t.y0(), r.rgb());
+                seconds[tiles++] = r.seconds();
+                rays += r.rays();
+            }
+        }
+
+        synchronized double[] tileSeconds() {
+            double[] sorted = Arrays.copyOf(seconds, tiles);
+            Arrays.sort(sorted);
+            return sorted;
+        }
+    }
+
     /**
      * The Spark job: broadcasts the frames, renders every group of tiles in a task of its own and
-     * brings the pixels back.
+     * hands each group's pixels to {@code assembly} as they arrive.
      *
      * @throws SparkRenderException when the job fails (a task failed every attempt)
      */
-    private List<TilePixels> run(FrameSet frames, List<List<Tile>> groups, JobMonitor monitor, String label) {
+    private void run(FrameSet frames, List<List<Tile>> groups, JobMonitor monitor, String label, Assembly assembly) {
         Broadcast<FrameSet> scenes = spark.broadcast(frames);
         spark.sc().addSparkListener(monitor);
         spark.setJobGroup(monitor.jobGroup(), label, false);
         TileProbe p = probe; // the task's closure captures locals only, not this renderer
+        ExecutorWatch watch = new ExecutorWatch(cluster(monitor.jobGroup()), executorTimeout, System::nanoTime,
+                line -> {
+                    if (progressStep > 0) out.println(label + ": " + line);
+                });
+        Thread watching = watching(watch, label);
         try {
-            List<TilePixels> results = spark.parallelize(groups, groups.size()).flatMap(g -> {
+            JavaRDD<List<TilePixels>> rendered = spark.parallelize(groups, groups.size()).map(g -> {
                 List<TilePixels> done = new ArrayList<>(g.size());
                 for (Tile t : g) {
                     p.beforeTile(t);
                     done.add(scenes.value().render(t));
                 }
-                return done.iterator();
-            }).collect();
+                return done;
+            });
+            List<Object> all = new ArrayList<>(groups.size());
+            for (int i = 0; i < groups.size(); ++i) all.add(i);
+            spark.sc().runJob(rendered.rdd(), (Function2<TaskContext, Iterator<List<TilePixels>>, List<TilePixels>> & Serializable)
+                            (context, partition) -> partition.next(),
+                    CollectionConverters.asScala(all).toSeq(),
+                    (Function2<Object, List<TilePixels>, BoxedUnit> & Serializable) (index, result) -> {
+                        assembly.add(result);
+                        return BoxedUnit.UNIT;
+                    },
+                    ClassTag$.MODULE$.apply(List.class));
             monitor.awaitAll(10_000);
-            return results;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new SparkRenderException(label + ": interrupted", e);
         } catch (Exception e) { // SparkException is checked in Java's eyes but undeclared
-            throw new SparkRenderException(label + ": " + firstLine(e), e);
+            String reason = watch.reason();
+            throw new SparkRenderException(label + ": " + (reason != null ? reason : firstLine(e)), e);
         } finally {
+            watching.interrupt();
             spark.clearJobGroup();
             spark.sc().removeSparkListener(monitor);
             scenes.destroy();
         }
     }
 
+    /** The context's executors, the driver not counted (a local master counts as one), and its job group's cancel. */
+    private ExecutorWatch.Cluster cluster(String jobGroup) {
+        return new ExecutorWatch.Cluster() {
+            @Override
+            public int executors() {
+                return spark.sc().isLocal() ? 1 : spark.sc().statusTracker().getExecutorInfos().length - 1;
+            }
+
+            @Override
+            public void cancel(String reason) {
+                spark.sc().cancelJobGroup(jobGroup, reason);
+            }
+        };
+    }
+
+    /** A daemon thread that checks {@code watch} every half second until it is interrupted or cancels the job. */
+    private static Thread watching(ExecutorWatch watch, String label) {
+        Thread t = new Thread(() -> {
+            try {
+                while (!watch.check()) Thread.sleep(500);
+            } catch (InterruptedException e) {
+                // the job ended
+            }
+        }, "executor watch of " + label);
+        t.setDaemon(true);
+        t.start();
+        return t;
+    }
+
     /**
-     * Assembles each frame from its tiles, draws the grid its settings may ask for and writes its
+     * Draws the grid each frame's settings may ask for over its assembled image and writes its
      * PNG atomically.
      *
      * @return the pixels of all frames
      */
-    private static long write(List<SparkFrame> frames, List<TilePixels> results) {
-        List<ImageWriter> images = new ArrayList<>(frames.size());
-        for (SparkFrame f : frames) images.add(f.settings().newImageWriter());
-        for (TilePixels r : results) {
-            Tile t = r.tile();
-            images.get(t.frame()).writeTile(t.x0(), t.y0(), t.x1() - t.x0(), t.y1() - t.y0(), r.rgb());
-        }
+    private static long write(List<SparkFrame> frames, List<ImageWriter> images) {
         long pixels = 0;
         for (int i = 0; i < frames.size(); ++i) {
             SparkFrame f = frames.get(i);
@@ -264,7 +412,7 @@ public final class SparkRenderer {
     }
 
     /** The first line of an exception's message (Spark's carry a stack trace), or its class. */
-    private static String firstLine(Throwable e) {
+    static String firstLine(Throwable e) {
         String m = e.getMessage();
         if (m == null || m.isBlank()) return e.getClass().getSimpleName();
         return m.lines().findFirst().orElse(m).trim();

@@ -87,8 +87,8 @@ class UntrustedInputTest {
                         "no ray through the view plane"),
                 Arguments.of("a 65536x65536 grid", "<render><anti-aliasing mode=\"random\" grid=\"65536 65536\"/></render>",
                         "2:38", "has 4294967296 samples per pixel, more than the limit of 65536"),
-                Arguments.of("adaptive depth 6 × beams of 64 × 16 shadow samples",
-                        "<render beam-size=\"64\"><anti-aliasing mode=\"adaptive\" depth=\"6\"/></render>", "2:55",
+                Arguments.of("adaptive depth 6 × beams of 256 × 16 shadow samples",
+                        "<render beam-size=\"256\"><anti-aliasing mode=\"adaptive\" depth=\"6\"/></render>", "2:56",
                         "more than the limit of 16777216"),
                 Arguments.of("65536 lens samples", "<render><depth-of-field focal-distance=\"10\" aperture=\"1\""
                         + " samples=\"65537\"/></render>", "2:58", "depth-of-field samples must be from 1 to 65536"),
@@ -119,7 +119,28 @@ class UntrustedInputTest {
         @DisplayName("<mesh file=\"/dev/zero\"/>: refused before reading")
         void device() throws IOException {
             Path file = write("scene.xml", scene("<geometries><mesh file=\"/dev/zero\"/></geometries>"));
-            assertRefused(render(file), file, ":2:19", "/dev/zero:0: not a regular file");
+            assertRefused(render(file), file, ":2:19", "/dev/zero is not an OBJ file");
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @ValueSource(strings = { "/etc/passwd", "/proc/self/status", "../outside.obj" })
+        @DisplayName("a mesh that is not an OBJ file inside the scene's folder: refused unread, exit 2")
+        void outside(String mesh) throws IOException {
+            Path file = write("scene.xml", scene("<geometries><mesh file=\"" + mesh + "\"/></geometries>"));
+            assertRefused(render(file), file, ":2:19", mesh.endsWith(".obj") ? "is outside the folder meshes are read from"
+                    : "is not an OBJ file");
+        }
+
+        @Test
+        @DisplayName("--mesh-root DIR reads meshes from another folder")
+        void meshRoot() throws IOException {
+            Path models = Files.createDirectories(dir.resolve("models"));
+            Files.writeString(models.resolve("tri.obj"), "v 0 0 -5\nv 1 0 -5\nv 0 1 -5\nf 1 2 3\n");
+            Path scenes = Files.createDirectories(dir.resolve("scenes"));
+            Path file = Files.writeString(scenes.resolve("scene.xml"), scene("<geometries><mesh file=\"../models/tri.obj\"/></geometries>"));
+            assertThat(run(file.toString(), "-q", "-o", dir.resolve("out.png").toString()).exitCode()).isEqualTo(RenderCommand.BAD_INPUT);
+            Run r = run(file.toString(), "-q", "--mesh-root", dir.toString(), "-o", dir.resolve("out.png").toString());
+            assertThat(r.exitCode()).as(r.err()).isZero();
         }
 
         @Test

@@ -152,8 +152,8 @@ class RenderSettingsTest {
     @DisplayName("the ray budget: samples per pixel × beam size × shadow samples at most 2^24")
     class RayBudget {
         @ParameterizedTest(name = "{0}")
-        @CsvSource({ "NONE, 1", "CORNERS, 5", "RANDOM, 12", "ADAPTIVE, 289" })
-        @DisplayName("samples per pixel of each mode (ADAPTIVE: its whole lattice at depth 3)")
+        @CsvSource({ "NONE, 1", "CORNERS, 5", "RANDOM, 12", "ADAPTIVE, 81" })
+        @DisplayName("samples per pixel of each mode (ADAPTIVE: its whole lattice at depth 3, (2^3 + 1)² points)")
         void samplesPerPixel(AntiAliasing mode, long samples) {
             RenderSettings s = RenderSettings.defaults("x").withAntiAliasingParameters(3, 4, 3, 8).withAntiAliasing(mode);
             assertThat(s.samplesPerPixel()).isEqualTo(samples);
@@ -202,6 +202,16 @@ class RenderSettingsTest {
         @DisplayName("accepted")
         void accepted(String name) {
             assertThat(RenderSettings.defaults(name).imageName()).isEqualTo(name);
+        }
+
+        @ParameterizedTest(name = "U+{0}")
+        @CsvSource({ "202E", "202A", "2066", "2069", "200E", "200F", "061C", "200B", "FEFF", "2060" })
+        @DisplayName("refused: bidirectional controls and invisible format characters, naming the code point")
+        void invisible(String hex) {
+            String name = "invoice" + Character.toString(Integer.parseInt(hex, 16)) + "gnp.exe";
+            assertThatThrownBy(() -> RenderSettings.defaults(name)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("the image name contains U+" + hex + ", an invisible or direction-changing character"
+                            + " (the file name would display as something else)");
         }
 
         @Test

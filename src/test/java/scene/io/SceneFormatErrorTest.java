@@ -11,6 +11,7 @@ import java.util.Arrays;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
@@ -165,12 +166,17 @@ class SceneFormatErrorTest {
         assertThat(e.getReason()).contains(e.getCause().getMessage());
     }
 
+    /** Writes {@code content} into {@code file} and reads it, which must fail. */
+    private static SceneFormatException readFails(Path file, String content) throws IOException {
+        Files.writeString(file, content);
+        return catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+    }
+
     @Test
     @DisplayName("a mesh file that does not exist: reported at the file attribute, with the resolved path")
     void missingMesh() throws IOException {
         Path file = dir.resolve("mesh.xml");
-        Files.writeString(file, inGeometries("<mesh file=\"models/absent.obj\"/>"));
-        SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+        SceneFormatException e = readFails(file, inGeometries("<mesh file=\"models/absent.obj\"/>"));
         assertThat(e.getMessage()).isEqualTo(file + ":3:11: <mesh file=\"models/absent.obj\">: cannot read "
                 + dir.resolve("models/absent.obj") + ": no such file"
                 + " (expected an OBJ file; a relative path starts at the scene file's folder)");
@@ -228,5 +234,78 @@ class SceneFormatErrorTest {
     void missingFile() {
         Path file = dir.resolve("absent.xml");
         assertThat(catchThrowableOfType(IOException.class, () -> XmlSceneReader.read(file))).isNotNull();
+    }
+
+    @Test
+    @DisplayName("an image name with a right-to-left override: refused, the message quoting it escaped, on one line")
+    void invisibleCharacterQuoted() throws IOException {
+        Path file = dir.resolve("rlo.xml");
+        assertThat(readFails(file, inScene("<image name=\"abc\u202Egnp&#10;x\"/>")).getMessage())
+                .startsWith(file + ":2:10: <image name=\"abc\\u202Egnp\\u000Ax\">: the image name contains U+202E, an"
+                        + " invisible or direction-changing character").doesNotContain("\u202E", "\n");
+    }
+
+    @Nested
+    @DisplayName("mesh files: OBJ files inside the scene file's folder only, refused unread otherwise")
+    class MeshFiles {
+        private static final String QUAD = "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3\n";
+
+        private SceneFormatException refused(Path scene, String mesh) throws IOException {
+            return readFails(scene, inGeometries("<mesh file=\"" + mesh + "\"/>"));
+        }
+
+        private String allowed() throws IOException {
+            return " (expected an OBJ file inside " + dir.toAbsolutePath().normalize()
+                    + "; the command line's --mesh-root DIR allows another folder)";
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @CsvSource({ "/etc/passwd", "/proc/self/status", "cube.txt", "models" })
+        @DisplayName("not an OBJ file by its name: refused before it is opened")
+        void notObj(String mesh) throws IOException {
+            Path scene = dir.resolve("scene.xml");
+            SceneFormatException e = refused(scene, mesh);
+            Path resolved = scene.resolveSibling(mesh);
+            assertThat(e.getMessage()).isEqualTo(scene + ":3:11: <mesh file=\"" + mesh + "\">: " + resolved
+                    + " is not an OBJ file (its name does not end in .obj)" + allowed());
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @CsvSource({ "../outside.obj", "/tmp/outside.obj", "sub/../../outside.obj" })
+        @DisplayName("outside the scene's folder by its path: refused")
+        void outside(String mesh) throws IOException {
+            Files.writeString(dir.getParent().resolve("outside.obj"), QUAD);
+            Path scene = dir.resolve("scene.xml");
+            SceneFormatException e = refused(scene, mesh);
+            assertThat(e.getMessage()).isEqualTo(scene + ":3:11: <mesh file=\"" + mesh + "\">: " + scene.resolveSibling(mesh)
+                    + " is outside the folder meshes are read from" + allowed());
+        }
+
+        @Test
+        @DisplayName("a link inside the folder that leads out: refused")
+        void link() throws IOException {
+            Path target = Files.writeString(Files.createTempFile("outside", ".obj"), QUAD);
+            try {
+                Files.createSymbolicLink(dir.resolve("link.obj"), target);
+                Path scene = dir.resolve("scene.xml");
+                assertThat(refused(scene, "link.obj").getMessage()).isEqualTo(scene + ":3:11: <mesh file=\"link.obj\">: "
+                        + dir.resolve("link.obj") + " leads outside the folder meshes are read from (through a link)" + allowed());
+            } finally {
+                Files.delete(target);
+            }
+        }
+
+        @Test
+        @DisplayName("a sub-folder is inside; another root allows a file beside the scene's folder")
+        void inside() throws Exception {
+            Files.createDirectories(dir.resolve("models"));
+            Files.writeString(dir.resolve("models/quad.OBJ"), QUAD);
+            Path scene = dir.resolve("scenes/scene.xml");
+            Files.createDirectories(scene.getParent());
+            Files.writeString(scene, inGeometries("<mesh file=\"../models/quad.OBJ\"/>"));
+            assertThat(catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(scene)).getMessage())
+                    .contains("is outside the folder meshes are read from");
+            assertThat(XmlSceneReader.read(scene, FileSource.DISK, dir).scene().geometries.getItems()).hasSize(1);
+        }
     }
 }
