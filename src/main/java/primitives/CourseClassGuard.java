@@ -40,9 +40,9 @@ public final class CourseClassGuard {
             "scene.Scene",
             "renderer.AntiAliasing", "renderer.CallingTest", "renderer.Camera", "renderer.CenterSampler",
             "renderer.GridSampler", "renderer.ImageWriter", "renderer.InFlightFile", "renderer.LatticeSampler",
-            "renderer.PixelSampler", "renderer.Progress", "renderer.RayTracerBase", "renderer.RayTracerBasic",
+            "renderer.PixelSampler", "renderer.Progress", "renderer.RayBudget", "renderer.RayTracerBase", "renderer.RayTracerBasic",
             "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
-            "renderer.RenderStats", "renderer.SampleStream", "renderer.ShadowCache", "renderer.SimpleRayTracer",
+            "renderer.RenderStats", "renderer.SampleStream", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
             "renderer.TraceContext", "renderer.Transmittance");
 
     private CourseClassGuard() {

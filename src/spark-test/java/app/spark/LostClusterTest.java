@@ -36,6 +36,7 @@ import scala.Option;
  * executor; the driver, which Spark would leave waiting without end, cancels the job once it has
  * had no executor for the timeout, and says so in one line.
  */
+@EnabledWhereSparkRuns
 class LostClusterTest {
     @TempDir
     Path dir;

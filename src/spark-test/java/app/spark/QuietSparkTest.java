@@ -18,6 +18,7 @@ import org.junit.jupiter.api.io.TempDir;
  * A Spark render on the command line, in a JVM of its own as a user starts it: nothing on stderr
  * from Spark or the JVM on success or bad input; Spark's log when {@code spark.log.level} asks.
  */
+@EnabledWhereSparkRuns
 class QuietSparkTest {
     @TempDir
     Path dir;
