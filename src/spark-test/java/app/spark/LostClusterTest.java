@@ -27,6 +27,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 import scala.Option;
 
+import app.Project;
+
 /**
  * A real cluster on loopback: Spark's standalone master and one worker started in this JVM
  * (127.0.0.1, ports chosen by the system; their web UIs on 127.0.0.1 through SPARK_LOCAL_IP),
@@ -66,7 +68,7 @@ class LostClusterTest {
                 .set(SparkRenderer.EXECUTOR_TIMEOUT, "5s");
         ByteArrayOutputStream progress = new ByteArrayOutputStream();
         try (JavaSparkContext spark = new JavaSparkContext(driver)) {
-            SparkFrame frame = SparkFrame.read(Path.of("scenes/glossy.xml"));
+            SparkFrame frame = SparkFrame.read(Project.file("scenes/glossy.xml"));
             frame = frame.withSettings(frame.settings().withImage("lost", 64, 64)).withOutput(dir.resolve("lost.png"));
             List<SparkFrame> frames = List.of(frame);
             SparkRenderer renderer = new SparkRenderer(spark).setTileSize(16).setProgress(50)

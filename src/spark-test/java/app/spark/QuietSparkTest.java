@@ -14,6 +14,8 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 
+import app.Project;
+
 /**
  * A Spark render on the command line, in a JVM of its own as a user starts it: nothing on stderr
  * from Spark or the JVM on success or bad input; Spark's log when {@code spark.log.level} asks.
@@ -43,7 +45,7 @@ class QuietSparkTest {
     }
 
     private Path scene() throws IOException {
-        return Files.copy(Path.of("scenes/glossy.xml").toAbsolutePath(), dir.resolve("glossy.xml"));
+        return Files.copy(Project.file("scenes/glossy.xml").toAbsolutePath(), dir.resolve("glossy.xml"));
     }
 
     @Test
