@@ -125,7 +125,7 @@ public final class RenderCommand implements Callable<Integer> {
     @Option(names = "--mesh-root", paramLabel = "DIR",
             description = { "The folder a scene file's meshes may be read from, sub-folders included. Default: the"
                     + " scene file's own folder: a mesh path outside it (absolute, '../', a link leading out) or"
-                    + " without the .obj extension is refused unread. Local renders only." })
+                    + " without the .obj extension is refused unread." })
     private Path meshRoot;
 
     // ===== Spark (issue 13): more scene files as frames, one option, and a branch into app.spark =====
@@ -301,7 +301,7 @@ public final class RenderCommand implements Callable<Integer> {
             step = BAR_STEP;
         }
         try {
-            return runner.get().run(new SparkRequest(spark, scenes, this::override, output, step, !quiet), progress, out, err);
+            return runner.get().run(new SparkRequest(spark, scenes, this::override, output, step, !quiet, meshRoot), progress, out, err);
         } finally {
             if (bar != null) bar.finish();
         }

@@ -19,9 +19,10 @@ import scene.io.RenderSettings;
  * @param output       the PNG to write, for a single scene; null: images/&lt;image name&gt;.png
  * @param progressStep percent between progress lines; 0: none
  * @param summary      whether to print the summary and the "wrote" lines
+ * @param meshRoot     the folder the scenes' meshes may be read from; null: each scene file's own
  */
 public record SparkRequest(String master, List<Path> scenes, UnaryOperator<RenderSettings> settings, Path output,
-                           double progressStep, boolean summary) {
+                           double progressStep, boolean summary, Path meshRoot) {
     /** The master value that defers to spark-submit's {@code --master}. */
     public static final String SUBMIT = "submit";
 
@@ -34,6 +35,7 @@ public record SparkRequest(String master, List<Path> scenes, UnaryOperator<Rende
      * @param output       the PNG of a single scene; null for the default
      * @param progressStep percent between progress lines; 0: none
      * @param summary      whether to print the summary and the "wrote" lines
+     * @param meshRoot     the folder the scenes' meshes may be read from; null: each scene file's own
      * @throws IllegalArgumentException for no scene, or an output with several scenes
      */
     public SparkRequest {
@@ -44,5 +46,21 @@ public record SparkRequest(String master, List<Path> scenes, UnaryOperator<Rende
         if (output != null && scenes.size() > 1)
             throw new IllegalArgumentException("one output file for " + scenes.size()
                     + " scenes: several frames are written to images/<image name>.png each");
+    }
+
+    /**
+     * A request whose meshes lie in each scene file's own folder.
+     *
+     * @param master       the Spark master URL, or {@value #SUBMIT}
+     * @param scenes       the scene files, at least one
+     * @param settings     the changes to each file's settings
+     * @param output       the PNG of a single scene; null for the default
+     * @param progressStep percent between progress lines; 0: none
+     * @param summary      whether to print the summary and the "wrote" lines
+     * @throws IllegalArgumentException for no scene, or an output with several scenes
+     */
+    public SparkRequest(String master, List<Path> scenes, UnaryOperator<RenderSettings> settings, Path output,
+                        double progressStep, boolean summary) {
+        this(master, scenes, settings, output, progressStep, summary, null);
     }
 }

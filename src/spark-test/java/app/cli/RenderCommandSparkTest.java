@@ -153,4 +153,25 @@ class RenderCommandSparkTest {
         assertThat(run.out()).as("no progress, no summary: no task ran").isEmpty();
         assertThat(dir.resolve("x.png")).doesNotExist();
     }
+
+    @Test
+    @EnabledWhereSparkRuns
+    @DisplayName("--mesh-root: a mesh outside the scene's folder is refused on the driver without it, and with it renders the local bytes")
+    void meshRoot() throws IOException {
+        Path meshes = Files.createDirectories(dir.resolve("meshes")), scenes = Files.createDirectories(dir.resolve("scenes"));
+        Files.writeString(meshes.resolve("tri.obj"), "v -10 -8 -60\nv 10 -8 -60\nv 0 10 -60\nf 1 2 3\n");
+        Path scene = scenes.resolve("mesh.xml");
+        Files.writeString(scene, Cli.SMALL.replace("<geometries>", "<geometries>\n<mesh file=\"../meshes/tri.obj\" emission=\"40 200 40\"/>")
+                .replace("<image name=\"small\"", "<image name=\"" + PREFIX + "mesh\""));
+        Run refused = run("--spark", "local[2]", scene.toString(), "-o", dir.resolve("refused.png").toString());
+        assertThat(refused.exitCode()).isEqualTo(2);
+        assertThat(refused.err()).hasLineCount(1).contains("is outside the folder meshes are read from");
+        assertThat(refused.out()).as("no task ran").isEmpty();
+
+        Run local = run(scene.toString(), "--mesh-root", dir.toString(), "-o", dir.resolve("local.png").toString());
+        Run spark = run("--spark", "local[2]", scene.toString(), "--mesh-root", dir.toString(), "-o", dir.resolve("spark.png").toString());
+        assertThat(local.exitCode()).as(local.err()).isZero();
+        assertThat(spark.exitCode()).as(spark.err()).isZero();
+        assertThat(Files.readAllBytes(dir.resolve("spark.png"))).isEqualTo(Files.readAllBytes(dir.resolve("local.png")));
+    }
 }

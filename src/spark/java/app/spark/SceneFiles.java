@@ -23,11 +23,14 @@ final class SceneFiles implements Serializable {
     private static final long serialVersionUID = 1L;
 
     private final String scene;
+    /** The folder meshes may come from, as the driver was given it; null: the scene's own. */
+    private final String meshRoot;
     /** Path (as resolved by the reader) → content; insertion order is reading order. */
     private final LinkedHashMap<String, byte[]> contents;
 
-    private SceneFiles(String scene, LinkedHashMap<String, byte[]> contents) {
+    private SceneFiles(String scene, String meshRoot, LinkedHashMap<String, byte[]> contents) {
         this.scene = scene;
+        this.meshRoot = meshRoot;
         this.contents = contents;
     }
 
@@ -38,18 +41,20 @@ final class SceneFiles implements Serializable {
     /**
      * Reads and validates a scene file from the disk, keeping the bytes of every file read.
      *
+     * @param meshRoot the folder meshes may be read from; null: the scene file's own folder
      * @throws IOException          when the scene file cannot be read
-     * @throws SceneFormatException when it is not a valid scene (a mesh that cannot be read included)
+     * @throws SceneFormatException when it is not a valid scene (a mesh that cannot be read, or
+     *                              outside the folder, included)
      */
-    static Captured read(Path scene) throws IOException, SceneFormatException {
+    static Captured read(Path scene, Path meshRoot) throws IOException, SceneFormatException {
         Objects.requireNonNull(scene, "scene");
         LinkedHashMap<String, byte[]> contents = new LinkedHashMap<>();
         LoadedScene loaded = XmlSceneReader.read(scene, (file, maxBytes) -> {
             byte[] bytes = FileSource.DISK.readAllBytes(file, maxBytes);
             contents.put(file.toString(), bytes);
             return bytes;
-        });
-        return new Captured(loaded, new SceneFiles(scene.toString(), contents));
+        }, meshRoot);
+        return new Captured(loaded, new SceneFiles(scene.toString(), meshRoot == null ? null : meshRoot.toString(), contents));
     }
 
     /**
@@ -64,7 +69,7 @@ final class SceneFiles implements Serializable {
             byte[] bytes = contents.get(file.toString());
             if (bytes == null) throw new NoSuchFileException(file.toString(), null, "not sent with the scene");
             return bytes;
-        });
+        }, meshRoot == null ? null : Path.of(meshRoot));
     }
 
     /** @return the scene file as the user named it */

@@ -40,7 +40,7 @@ final class SparkCommand {
         for (Path scene : request.scenes()) {
             SparkFrame frame;
             try {
-                frame = SparkFrame.read(scene);
+                frame = SparkFrame.read(scene, request.meshRoot());
             } catch (SceneFormatException e) {
                 err.println(e.getMessage());
                 return SparkEntry.BAD_INPUT;

@@ -44,7 +44,24 @@ public final class SparkFrame {
      * @throws IllegalArgumentException when the camera refuses a value of the file
      */
     public static SparkFrame read(Path scene) throws IOException, SceneFormatException {
-        SceneFiles.Captured captured = SceneFiles.read(scene);
+        return read(scene, null);
+    }
+
+    /**
+     * As {@link #read(Path)}, with the folder the scene's meshes may be read from (the command
+     * line's {@code --mesh-root}); the executors hold the meshes to the same folder.
+     *
+     * @param scene    the scene file (XML); its meshes are found relative to its folder
+     * @param meshRoot the folder meshes may be read from, sub-folders included; null: the scene
+     *                 file's own folder
+     * @return the frame
+     * @throws IOException              when the scene file cannot be read
+     * @throws SceneFormatException     when it is not a valid scene (a mesh outside the folder
+     *                                  included), with the local renderer's one-line message
+     * @throws IllegalArgumentException when the camera refuses a value of the file
+     */
+    public static SparkFrame read(Path scene, Path meshRoot) throws IOException, SceneFormatException {
+        SceneFiles.Captured captured = SceneFiles.read(scene, meshRoot);
         captured.loaded().requireView(); // no camera: the reader's error at <scene>, here on the driver
         RenderSettings settings = captured.loaded().settings();
         return new SparkFrame(captured, settings, defaultOutput(settings));
