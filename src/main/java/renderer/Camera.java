@@ -64,7 +64,7 @@ public final class Camera {
     private final double debugPrint; // percent between progress lines; 0: none
     private final boolean summary;
     private final PrintStream output;
-    /** Told of each finished render (issue 28: a test's report); by default nobody. */
+    /** Told of each finished render (a test's report, for example); by default nobody. */
     private final BiConsumer<? super Camera, ? super RenderStats> renderListener;
     // Per camera ray these are constants: computed once here, by the very operations the ray
     // used to repeat (so the rays keep their bits), off the path of every camera ray: two of

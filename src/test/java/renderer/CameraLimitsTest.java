@@ -7,7 +7,7 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
 
 /**
- * The camera's stated limits (issue 16): threads and samples per pixel, each refused when set,
+ * The camera's stated limits: threads and samples per pixel, each refused when set,
  * naming the value and the limit.
  */
 class CameraLimitsTest {

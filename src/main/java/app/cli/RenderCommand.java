@@ -128,7 +128,7 @@ public final class RenderCommand implements Callable<Integer> {
                     + " without the .obj extension is refused unread." })
     private Path meshRoot;
 
-    // ===== Spark (issue 13): more scene files as frames, one option, and a branch into app.spark =====
+    // ===== Spark: more scene files as frames, one option, and a branch into app.spark =====
     @Parameters(index = "1..*", arity = "0..*", paramLabel = "MORE",
             description = "With --spark: more scene files, rendered as the frames of one Spark job (one PNG each).")
     private List<Path> frames = new ArrayList<>();

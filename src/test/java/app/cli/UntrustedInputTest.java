@@ -27,7 +27,7 @@ import scene.io.Limits;
 import scene.io.RenderSettings;
 
 /**
- * Scene files and options as a hostile user would write them (issue 16): each ends in exit code
+ * Scene files and options as a hostile user would write them: each ends in exit code
  * 2 and one line naming the place and the limit, at load, before anything is rendered, and leaves
  * no file behind; memory and signals are tried in a new JVM.
  */
