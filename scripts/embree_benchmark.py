@@ -13,9 +13,10 @@ Run from the project root after `mvn -q -Pbench compile` (the script does it unl
     .venv/bin/python scripts/embree_benchmark.py                 # every mesh, 5 passes
     .venv/bin/python scripts/embree_benchmark.py --meshes teapot,sphere-1e4 --passes 3
 
-One thread: both processes are pinned to one core (taskset -c 0), so Embree's builder (TBB)
-and the library's both get one thread. Two threads: both cores, the library's trace on two
-workers; embreex traces on the calling thread only, so Embree's two-thread row gives its build.
+One thread: Embree's process is pinned to one core (taskset -c 0), so its builder (TBB) gets one
+thread; the library builds and traces on one thread by itself (Bvh.build(scene, 1), one worker),
+its JVM left free to compile on the other core. Two threads: both cores, the library's trace on
+two workers; embreex traces on the calling thread only, so Embree's two-thread row gives its build.
 """
 from __future__ import annotations
 
@@ -115,7 +116,7 @@ def embree(vertices, faces, origins, dirs, passes: int) -> dict:
         scene.run(o32[:1], d32[:1])                               # the first query commits (builds) the scene
         builds.append(time.perf_counter() - start)
     result = None
-    for _ in range(3):                                            # untimed, as the library's warm-up
+    for _ in range(5):                                            # untimed, as the library's warm-up
         result = scene.run(o32, d32, output=1)
     times = []
     for _ in range(passes):
@@ -128,8 +129,10 @@ def embree(vertices, faces, origins, dirs, passes: int) -> dict:
 
 def library(mesh_file: Path, rays_file: Path, threads: int, passes: int, classpath: str) -> dict:
     out = mesh_file.with_suffix(f".lib{threads}.t")
-    cpus = "0" if threads == 1 else "0,1"
-    command = ["taskset", "-c", cpus, "java", "-Xmx8g", "-cp", classpath, "bench.MeshRays",
+    # Not pinned: the library's build and trace use exactly `threads` threads by themselves, and
+    # pinning the JVM to one core would put its JIT compiler and GC threads on the tracing core
+    # (passes then varied 3x within one process).
+    command = ["java", "-Xmx8g", "-cp", classpath, "bench.MeshRays",
                str(mesh_file), str(rays_file), str(threads), str(passes), str(out)]
     line = subprocess.run(command, check=True, capture_output=True, text=True).stdout.strip().splitlines()[-1]
     result = json.loads(line)

@@ -36,7 +36,7 @@ public final class MeshRays {
     /** Rays a worker claims at a time: whole image rows of a 512-wide view, in order. */
     private static final int CHUNK = 2048;
     /** Untimed passes first, so that the timed ones run compiled code. */
-    private static final int WARM_UP = 3;
+    private static final int WARM_UP = 5;
 
     private MeshRays() {
     }
