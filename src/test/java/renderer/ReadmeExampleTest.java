@@ -46,7 +46,6 @@ import app.Project;
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class ReadmeExampleTest {
     private static final Path README = Project.file("README.md");
-    private static final Pattern JAVA_BLOCK = Pattern.compile("^```java\\n(.*?)^```$", Pattern.MULTILINE | Pattern.DOTALL);
     private static final Pattern CLASS_NAME = Pattern.compile("^(?:public\\s+)?(?:final\\s+)?class\\s+(\\w+)", Pattern.MULTILINE);
 
     private List<String> blocks;
@@ -116,8 +115,13 @@ class ReadmeExampleTest {
     }
 
     static List<String> javaBlocks(String markdown) {
+        return blocks(markdown, "java");
+    }
+
+    /** The fenced blocks of {@code language} ({@code java}, {@code xml}) in {@code markdown}, in order. */
+    static List<String> blocks(String markdown, String language) {
         List<String> found = new ArrayList<>();
-        Matcher m = JAVA_BLOCK.matcher(markdown);
+        Matcher m = Pattern.compile("^```" + language + "\\n(.*?)^```$", Pattern.MULTILINE | Pattern.DOTALL).matcher(markdown);
         while (m.find()) found.add(m.group(1));
         return found;
     }

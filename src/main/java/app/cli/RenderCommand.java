@@ -58,10 +58,6 @@ public final class RenderCommand implements Callable<Integer> {
     public static final int BAD_INPUT = 2;
     /** The name that starts each error line. */
     static final String NAME = "raytracer";
-    /** How to get a command line that renders on Spark, for the one-line error of a build without it. */
-    static final String SPARK_BUILD = "build it with 'mvn -q -Pspark package -DskipTests' and run it with"
-            + " 'spark-submit --class app.cli.Main target/raytracer.jar --spark submit SCENE', or on this machine with"
-            + " 'mvn -q -Pspark compile exec:exec -Dspark.args=\"--spark local[2] SCENE\"' (see README.md, Spark)";
     /** Percent between progress lines when the output is not a terminal. */
     private static final double LOG_STEP = 10;
     /** Percent between redraws of the terminal progress bar. */
@@ -289,7 +285,7 @@ public final class RenderCommand implements Callable<Integer> {
                 .findFirst();
         if (runner.isEmpty()) {
             err.println(NAME + ": --spark needs the command line built with Spark, which this jar was not: "
-                    + SPARK_BUILD);
+                    + SparkRunner.HOW_TO_RUN);
             return BAD_INPUT;
         }
         PrintStream progress = out;

@@ -11,6 +11,14 @@ import java.io.PrintStream;
  */
 public interface SparkRunner {
     /**
+     * How to render on Spark, for the one-line errors of a jar or class path without it: the one
+     * wording of the command line and of the Spark entry point.
+     */
+    String HOW_TO_RUN = "build it with 'mvn -q -Pspark package -DskipTests' and run it with"
+            + " 'spark-submit --class app.cli.Main target/raytracer.jar --spark submit SCENE', or on this machine with"
+            + " 'mvn -q -Pspark compile exec:exec -Dspark.args=\"--spark local[2] SCENE\"' (see README.md, Spark)";
+
+    /**
      * Renders on Spark as {@code request} says.
      *
      * @param request  what to render

@@ -14,6 +14,7 @@ import org.apache.spark.SparkConf;
 import org.apache.spark.api.java.JavaSparkContext;
 
 import app.cli.SparkRequest;
+import app.cli.SparkRunner;
 import scene.io.Messages;
 import scene.io.SceneFormatException;
 
@@ -69,7 +70,7 @@ final class SparkCommand {
         if (!request.master().equals(SparkRequest.SUBMIT)) conf.setMaster(request.master());
         else if (!conf.contains("spark.master")) {
             err.println("raytracer: --spark " + SparkRequest.SUBMIT + " takes the master of spark-submit, and there is none: "
-                    + "give a master URL such as --spark local[2], or " + SparkEntry.HOW);
+                    + "give a master URL such as --spark local[2], or " + SparkRunner.HOW_TO_RUN);
             return SparkEntry.BAD_INPUT;
         }
         JavaSparkContext started;

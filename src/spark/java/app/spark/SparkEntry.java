@@ -16,9 +16,6 @@ import app.cli.SparkRunner;
 public final class SparkEntry implements SparkRunner {
     /** Exit code of bad input (as the command line's). */
     static final int BAD_INPUT = 2;
-    /** How to run with Spark, for the one-line error. */
-    static final String HOW = "run it with 'mvn -q -Pspark compile exec:exec -Dspark.args=\"--spark local[2] SCENE\"'"
-            + " or 'spark-submit --class app.cli.Main target/raytracer.jar --spark submit SCENE' (see README.md, Spark)";
 
     /** The service the command line loads with {@link java.util.ServiceLoader}. */
     public SparkEntry() {
@@ -42,7 +39,7 @@ public final class SparkEntry implements SparkRunner {
     @Override
     public int run(SparkRequest request, PrintStream progress, PrintStream out, PrintStream err) {
         if (!available()) {
-            err.println("raytracer: --spark needs Apache Spark on the class path, which the runnable jar leaves out: " + HOW);
+            err.println("raytracer: --spark needs Apache Spark on the class path, which the runnable jar leaves out: " + HOW_TO_RUN);
             return BAD_INPUT;
         }
         Optional<String> jdk = SparkJdk.unsupported();

@@ -1,19 +1,18 @@
-package app;
+package renderer;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 import javax.xml.parsers.DocumentBuilderFactory;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Test;
+
+import app.Project;
 
 /**
  * The starter the README prints is the one the build proves: the integration test
@@ -26,11 +25,7 @@ class ReadmeStarterTest {
     private static final Path STARTER = Project.file("src/it/starter");
 
     private static List<String> blocks(String language) throws IOException {
-        Matcher m = Pattern.compile("^```" + language + "\\n(.*?)^```$", Pattern.MULTILINE | Pattern.DOTALL)
-                .matcher(Files.readString(README));
-        List<String> found = new ArrayList<>();
-        while (m.find()) found.add(m.group(1));
-        return found;
+        return ReadmeExampleTest.blocks(Files.readString(README), language);
     }
 
     private static String projectVersion() throws Exception {
