@@ -86,11 +86,11 @@ public final class BoundingBox {
      * The slab test. Works for axis-parallel rays and rays starting inside. For an axis the ray
      * is parallel to, the inverse must be +∞ (use {@link #inverse}; a −∞ is turned into +∞
      * here): then a = (min − o)·∞ ≤ b = (max − o)·∞, and when the origin lies on a slab plane the
-     * 0·∞ = NaN lands on the side that the comparisons below ignore. With −∞ the NaN would land
-     * in a while b = −∞ empties the interval: a ray grazing a face would miss.
+     * 0·∞ = NaN lands on the side that {@link #enter} and {@link #exit} ignore. With −∞ the NaN
+     * would land in a while b = −∞ empties the interval: a ray grazing a face would miss.
      *
      * The ray is passed as doubles, precomputed once per ray, because the BVH walk tests many
-     * boxes against the same ray.
+     * boxes against the same ray (with the same kernel, on its float nodes).
      *
      * @param ox    the ray head's x
      * @param oy    the ray head's y

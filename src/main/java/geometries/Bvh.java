@@ -219,7 +219,7 @@ public final class Bvh extends Intersectable {
         if (!(entry(0, ox, oy, oz, ix, iy, iz, hit.t) < hit.t)) return found;
         // A walk already in progress on this record (this one's caller, through a user's shape
         // that walks a tree of its own with the record) owns the record's stack: this one then
-        // takes arrays of its own. Rare (only user shapes do it), so the common walk stays as it was.
+        // takes arrays of its own. Rare (only user shapes do it), so the common walk allocates nothing.
         boolean nested = hit.walking;
         int[] stack;
         double[] stackT;

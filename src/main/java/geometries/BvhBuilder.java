@@ -20,7 +20,10 @@ import java.util.concurrent.RecursiveAction;
  * bounds, in {@link #index}) run in chunks on the same pool.
  */
 final class BvhBuilder {
-    /** Primitives a leaf may hold before a split is forced (fewer only when the SAH prefers a leaf). */
+    /**
+     * The most primitives a leaf holds: a larger node is always split; one this small is split
+     * only when the SAH finds a split cheaper than testing its primitives.
+     */
     private static final int MAX_LEAF = 4;
     /** Nodes with more primitives than this are binned along their widest axis only. */
     private static final int FULL_SEARCH_LIMIT = 1 << 16;

@@ -98,9 +98,12 @@ public abstract class Geometry extends Intersectable {
     }
 
     /**
-     * The normal the renderer uses: {@link #normalAt(Hit)}, unless a user's subclass of a library
-     * shape redefines {@link #getNormal(Point)} below the class that computes the normal in
-     * doubles; then that override is asked, as it was before the doubles form existed.
+     * The normal the renderer uses: {@link #normalAt(Hit)}, unless {@link #getNormal(Point)} is
+     * redefined below the class that computes the normal in doubles ({@code HookCheck}); then
+     * {@code getNormal} is asked, so that a user's subclass that overrides it gets its own normal
+     * while one that does not keeps the library's (both held by {@code HitTest}). The library's
+     * {@link Cylinder} is such a class too: its {@code getNormal} sits below {@link Tube}'s
+     * {@code normalAt}, so a cylinder is shaded with the normal of the surface nearest the point.
      */
     final void surfaceNormal(Hit hit) {
         if (courseNormal) courseNormal(hit);
