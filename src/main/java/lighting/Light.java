@@ -15,11 +15,12 @@ abstract class Light {
     /** The emitted intensity, on the colour scale (0..255 per channel is "full"). */
     protected final Color intensity;
     /** {@link #isLibraryLight()}, fixed per object: the doubles forms read it for every shaded point. */
-    private final boolean library = LIGHTS.contains(this);
+    private final boolean library;
 
     protected Light(Color intensity) {
         CourseClassGuard.check();
         this.intensity = Objects.requireNonNull(intensity, "light intensity");
+        this.library = LIGHTS.contains(this);
     }
 
     /**
