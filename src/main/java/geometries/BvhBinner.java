@@ -6,7 +6,7 @@ package geometries;
  * node's range; the cheapest split is then found by sweeping each axis from both ends.
  *
  * <p>A split's cost is {@link #sahCost}, relative to testing the parent's primitives, from the
- * children's {@link #halfArea half areas}: the one formula of every search, the direct one of a
+ * children's {@link #halfArea(double, double, double) half areas}: the one formula of every search, the direct one of a
  * two-primitive node included, so that both searches choose the same split.
  */
 final class BvhBinner {
@@ -15,15 +15,16 @@ final class BvhBinner {
     /** Cost of visiting a node relative to testing one primitive, for the SAH. */
     private static final double TRAVERSAL_COST = 1.0;
 
+    /** Per axis, whether the node being split is searched along it (set by the builder per node). */
     final boolean[] searched = new boolean[3];
     /** The node being split: per axis, its centroids' lowest value and their extent. */
     final double[] lowOf = new double[3];
     final double[] extentOf = new double[3];
-    final int[] binCount = new int[3 * BINS];
-    final double[] binBox = new double[3 * BINS * 6];
-    final double[] rightArea = new double[BINS];
+    private final int[] binCount = new int[3 * BINS];
+    private final double[] binBox = new double[3 * BINS * 6];
+    private final double[] rightArea = new double[BINS];
     /** Per axis, the bins {@link #bin} filled, as bits; the search empties them again. */
-    final int[] occupied = new int[3];
+    private final int[] occupied = new int[3];
     /** The cheapest split a search found: its cost, last left bin (−1 for none) and axis. */
     double bestCost;
     int bestBin;
@@ -149,7 +150,7 @@ final class BvhBinner {
      * Fills the searched axes' bins, which are empty, from slots [start, end), in one pass
      * over the range (each slot's bounds are read once for all axes).
      */
-    void bin(double[] bounds, double[] centroid, int start, int end, double[] lowOf, double[] extentOf) {
+    private void bin(double[] bounds, double[] centroid, int start, int end, double[] lowOf, double[] extentOf) {
         boolean sx = searched[0], sy = searched[1], sz = searched[2];
         double lx = lowOf[0], ly = lowOf[1], lz = lowOf[2];
         double kx = BINS / extentOf[0], ky = BINS / extentOf[1], kz = BINS / extentOf[2];

@@ -217,7 +217,7 @@ final class BvhBuilder {
      * Records primitive {@code index} of {@code leaf} in slot {@code i}; its bounds are
      * {@code box[at..at + 6)} (min xyz, max xyz), padded here as {@link BoundingBox#padded()} does.
      */
-    void addPrimitive(int i, Intersectable leaf, int index, double[] box, int at) {
+    private void addPrimitive(int i, Intersectable leaf, int index, double[] box, int at) {
         slotOwner[i] = leaf;
         slotPrim[i] = index;
         order[i] = i;
@@ -237,13 +237,13 @@ final class BvhBuilder {
     }
 
     /** Sets the bounds at {@code at} of {@code out} to those of slots [from, to). */
-    void unite(double[] out, int at, int from, int to) {
+    private void unite(double[] out, int at, int from, int to) {
         resetBounds(out, at);
         for (int i = from; i < to; ++i) growBounds(out, at, bounds, centroid, i);
     }
 
     /** Sets {@code out} to the union of the bounds in {@code parts}, {@link #BOUNDS} doubles each. */
-    void unite(double[] out, double[] parts) {
+    private void unite(double[] out, double[] parts) {
         resetBounds(out, 0);
         for (int at = 0; at < parts.length; at += BOUNDS) {
             for (int a = 0; a < 3; ++a) {
@@ -256,7 +256,7 @@ final class BvhBuilder {
     }
 
     /** Builds the tree over all slots, whose bounds are {@code rootBounds} (as {@link #unite} gives them). */
-    void build(double[] rootBounds) {
+    private void build(double[] rootBounds) {
         int n = total;
         scratchOrder = new int[n];
         scratchBounds = new double[n * 6];
