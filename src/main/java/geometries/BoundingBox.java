@@ -72,12 +72,6 @@ public final class BoundingBox {
                 Math.max(Math.max(Math.abs(minY), Math.abs(maxY)), Math.max(Math.abs(minZ), Math.abs(maxZ)))));
     }
 
-    /** Half the surface area (the SAH cost only needs ratios). */
-    double halfArea() {
-        double dx = maxX - minX, dy = maxY - minY, dz = maxZ - minZ;
-        return dx * dy + dy * dz + dz * dx;
-    }
-
     /**
      * The inverse of a direction component for the slab test: 1/d, except that a negative zero
      * (which {@code scale(-1)} of an axis-parallel vector produces) or a negative component too
@@ -92,11 +86,11 @@ public final class BoundingBox {
      * The slab test. Works for axis-parallel rays and rays starting inside. For an axis the ray
      * is parallel to, the inverse must be +∞ (use {@link #inverse}; a −∞ is turned into +∞
      * here): then a = (min − o)·∞ ≤ b = (max − o)·∞, and when the origin lies on a slab plane the
-     * 0·∞ = NaN lands on the side that the comparisons below ignore. With −∞ the NaN would land
-     * in a while b = −∞ empties the interval: a ray grazing a face would miss.
+     * 0·∞ = NaN lands on the side that {@link #enter} and {@link #exit} ignore. With −∞ the NaN
+     * would land in a while b = −∞ empties the interval: a ray grazing a face would miss.
      *
      * The ray is passed as doubles, precomputed once per ray, because the BVH walk tests many
-     * boxes against the same ray.
+     * boxes against the same ray (with the same kernel, on its float nodes).
      *
      * @param ox    the ray head's x
      * @param oy    the ray head's y
@@ -111,23 +105,51 @@ public final class BoundingBox {
         if (invDx == Double.NEGATIVE_INFINITY) invDx = Double.POSITIVE_INFINITY; // 1/-0.0 from a caller
         if (invDy == Double.NEGATIVE_INFINITY) invDy = Double.POSITIVE_INFINITY;
         if (invDz == Double.NEGATIVE_INFINITY) invDz = Double.POSITIVE_INFINITY;
-        double t0 = 0, t1 = tMax;
-        double a = (minX - ox) * invDx, b = (maxX - ox) * invDx;
-        if (a > b) { double s = a; a = b; b = s; }
-        // Comparisons written so that NaN (origin on a slab plane of a parallel ray) keeps the interval.
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        a = (minY - oy) * invDy;
-        b = (maxY - oy) * invDy;
-        if (a > b) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
-        a = (minZ - oz) * invDz;
-        b = (maxZ - oz) * invDz;
-        if (a > b) { double s = a; a = b; b = s; }
-        if (a > t0) t0 = a;
-        if (b < t1) t1 = b;
+        double t0 = enter(0, minX, maxX, ox, invDx), t1 = exit(tMax, minX, maxX, ox, invDx);
+        t0 = enter(t0, minY, maxY, oy, invDy);
+        t1 = exit(t1, minY, maxY, oy, invDy);
+        t0 = enter(t0, minZ, maxZ, oz, invDz);
+        t1 = exit(t1, minZ, maxZ, oz, invDz);
         return t0 <= t1;
+    }
+
+    /*
+     * The slab test's kernel, one axis at a time: the segment [t0, t1] of the ray that lies in
+     * every slab seen so far is narrowed by the slab [min, max] of one more axis. The ray enters
+     * that slab at the smaller of a = (min − o)·inv and b = (max − o)·inv and leaves it at the
+     * larger. Each comparison is written so that a NaN (0·∞: the origin on a slab plane of a ray
+     * parallel to it, with inv = +∞ as inverse() gives it) leaves the bound as it was: then the
+     * ray grazes the face and still counts as inside. The callers, this box's intersects and a
+     * tree's node test (Bvh), narrow enter and exit axis by axis; the two share a, b and the
+     * comparison a > b, which the compiler computes once.
+     */
+
+    /**
+     * @param t0  the entry distance so far (0 at first: the segment starts at the ray head)
+     * @param min the slab's lower bound on this axis
+     * @param max the slab's upper bound on this axis
+     * @param o   the ray head's coordinate on this axis
+     * @param inv 1 / the direction's component on this axis, +∞ for 0 ({@link #inverse})
+     * @return the later of {@code t0} and the distance at which the ray enters the slab
+     */
+    static double enter(double t0, double min, double max, double o, double inv) {
+        double a = (min - o) * inv, b = (max - o) * inv;
+        double near = a > b ? b : a;
+        return near > t0 ? near : t0;
+    }
+
+    /**
+     * @param t1  the exit distance so far (the segment's far end, tMax, at first)
+     * @param min the slab's lower bound on this axis
+     * @param max the slab's upper bound on this axis
+     * @param o   the ray head's coordinate on this axis
+     * @param inv 1 / the direction's component on this axis, +∞ for 0 ({@link #inverse})
+     * @return the earlier of {@code t1} and the distance at which the ray leaves the slab
+     */
+    static double exit(double t1, double min, double max, double o, double inv) {
+        double a = (min - o) * inv, b = (max - o) * inv;
+        double far = a > b ? a : b;
+        return far < t1 ? far : t1;
     }
 
     @Override

@@ -166,20 +166,10 @@ public class Geometries extends Intersectable {
     }
 
     @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        return closestHit(hit.setRay(ray));
-    }
-
-    @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         for (int i = 0, n = items.size(); i < n; ++i)
             if (!items.get(i).visitHits(query, maxDistance, visitor)) return false;
         return true;
-    }
-
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        return visitHits(Hit.of(ray), maxDistance, visitor);
     }
 
     /** @return the union of the children's boxes; null when empty or when any child is unbounded */

@@ -1,9 +1,9 @@
 package geometries;
 
 import java.util.Objects;
-import java.util.Set;
 
 import primitives.Color;
+import primitives.LibraryClasses;
 import primitives.Material;
 import primitives.Point;
 import primitives.Vector;
@@ -16,23 +16,38 @@ public abstract class Geometry extends Intersectable {
     private Color emission = Color.BLACK;
     private Material material = new Material();
     /** Whether {@link #surfaceNormal} asks {@link #getNormal(Point)} (see there); fixed per class. */
-    private final boolean courseNormal = COURSE_NORMAL.get(getClass());
+    private final boolean courseNormal = HookCheck.redefinesNormal(getClass());
 
-    /** The library's own shapes: see {@link #isLibraryShape()}. */
-    private static final Set<Class<?>> LIBRARY = Set.of(Sphere.class, Triangle.class, Polygon.class, TriangleMesh.class,
+    /** The library's shapes whose queries are one intersection test each: all but the mesh. */
+    private static final LibraryClasses PRIMITIVES = LibraryClasses.of(Sphere.class, Triangle.class, Polygon.class,
             Plane.class, Tube.class, Cylinder.class);
+    /** The library's own shapes: the one list behind {@link #isLibraryShape()}. */
+    private static final LibraryClasses SHAPES = PRIMITIVES.and(TriangleMesh.class);
 
     /**
      * Whether this is one of the library's own shapes, not a subclass of one: its geometry is fixed
      * when it is made (its emission and material may still change) and its queries have no side
      * effects, so what a renderer learnt of it (a tree over it, that it blocks a light) holds from
-     * one ray or render to the next. A class of yours may move its shape, or count its calls, so
-     * nothing is kept for it.
+     * one ray or render to the next, and a tree may test it from packed copies of its numbers. A
+     * class of yours may move its shape, or count its calls, so nothing is kept for it.
      *
      * @return true for an instance of exactly one of the library's shape classes
      */
     public final boolean isLibraryShape() {
-        return LIBRARY.contains(getClass());
+        return SHAPES.contains(this);
+    }
+
+    /**
+     * Internal, for the renderer's shadow cache: whether this is a {@link #isLibraryShape()
+     * library shape} whose queries are one intersection test, so that asking it again costs no
+     * more than a tree's test of one primitive. Every library shape but a mesh, whose queries
+     * loop over its triangles.
+     *
+     * @return true for an instance of exactly one of the library's shape classes other than
+     *         {@link TriangleMesh}
+     */
+    public final boolean isLibraryPrimitive() {
+        return PRIMITIVES.contains(this);
     }
 
     /** @return the light the surface gives off by itself; black by default */
@@ -83,9 +98,12 @@ public abstract class Geometry extends Intersectable {
     }
 
     /**
-     * The normal the renderer uses: {@link #normalAt(Hit)}, unless a user's subclass of a library
-     * shape redefines {@link #getNormal(Point)} below the class that computes the normal in
-     * doubles; then that override is asked, as it was before the doubles form existed.
+     * The normal the renderer uses: {@link #normalAt(Hit)}, unless {@link #getNormal(Point)} is
+     * redefined below the class that computes the normal in doubles ({@code HookCheck}); then
+     * {@code getNormal} is asked, so that a user's subclass that overrides it gets its own normal
+     * while one that does not keeps the library's (both held by {@code HitTest}). The library's
+     * {@link Cylinder} is such a class too: its {@code getNormal} sits below {@link Tube}'s
+     * {@code normalAt}, so a cylinder is shaded with the normal of the surface nearest the point.
      */
     final void surfaceNormal(Hit hit) {
         if (courseNormal) courseNormal(hit);
@@ -99,16 +117,4 @@ public abstract class Geometry extends Intersectable {
         hit.normal[2] = n.getZ();
     }
 
-    /**
-     * Per class, found once by reflection: whether {@code getNormal(Point)} is declared in a
-     * class strictly below the one that declares {@code normalAt(Hit)} (a library shape's).
-     */
-    private static final ClassValue<Boolean> COURSE_NORMAL = new ClassValue<>() {
-        @Override
-        protected Boolean computeValue(Class<?> type) {
-            Class<?> doubles = HookCheck.declaring(type, Geometry.class, "normalAt", Hit.class);
-            Class<?> course = HookCheck.declaring(type, Geometry.class, "getNormal", Point.class);
-            return doubles != Geometry.class && course != doubles && doubles.isAssignableFrom(course);
-        }
-    };
 }

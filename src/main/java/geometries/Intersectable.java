@@ -6,6 +6,7 @@ import java.util.Objects;
 
 import lighting.LightSource;
 import primitives.CourseClassGuard;
+import primitives.LibraryClasses;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
@@ -21,16 +22,26 @@ import primitives.Vector;
  * the any-hit walk {@link #visitHits(Ray, double, HitVisitor)} for shadow rays, neither of which
  * builds a list; and the same two queries of a ray held in a {@link Hit} as doubles
  * ({@link #closestHit(Hit)}, {@link #visitHits(Hit, double, HitVisitor)}), which is how the
- * renderer calls them, without a {@link Ray} object per ray. The library's shapes implement the
- * doubles form once; their {@code Ray} forms load the ray into a record and call it.</li>
+ * renderer calls them, without a {@link Ray} object per ray.</li>
  * </ul>
- * Both faces accept a hit at distance {@code t} when {@code alignZero(t) > 0}, so the two always
- * agree. A subclass written by a user only needs one of the three course years' hooks
+ * The two forms of each lean query are joined here, once: the library's shapes implement the
+ * doubles form, and their {@code Ray} form loads the ray into a record and asks it; a user's own
+ * shape is asked through its course hook, and its doubles form makes the {@code Ray} and asks
+ * that. Both faces accept a hit at distance {@code t} when {@code alignZero(t) > 0}, so the two
+ * always agree. A subclass written by a user only needs one of the three course years' hooks
  * ({@link #findGeoIntersectionsHelper}, {@link #calculateIntersectionsHelper},
  * {@link #calcIntersectionsHelper}); every year's query method and the lean path then fall back
  * to it (correct, but allocating).
  */
-public abstract class Intersectable {
+public abstract class Intersectable extends BvhLeaf {
+    /**
+     * The library's classes that implement the doubles forms of the lean queries themselves: an
+     * instance of one, or of a user's subclass of one, answers the {@code Ray} forms through them.
+     * Any other class (a user's shape written on {@link Geometry} or {@code Intersectable}) answers
+     * them through its course hook, even when it overrides a doubles form too.
+     */
+    private static final LibraryClasses ANSWERS_HITS = LibraryClasses.of(Sphere.class, SingleHitGeometry.class,
+            Tube.class, TriangleMesh.class, Geometries.class, Bvh.class);
 
     /**
      * A hit point together with the geometry it lies on (the 2023–24 course's hit record). Value
@@ -281,14 +292,15 @@ public abstract class Intersectable {
     /**
      * The lean closest-hit query. {@code hit.t} is the current upper bound: a hit nearer than it
      * (and with {@code alignZero(t) > 0}) replaces the record. The library's shapes answer it with
-     * {@link #closestHit(Hit)} (the ray loaded into the record); by default, for users' own
-     * shapes, it takes the nearest of {@link #findGeoIntersectionsHelper}'s list.
+     * {@link #closestHit(Hit)} (the ray loaded into the record); a user's own shape, by default,
+     * with the nearest of {@link #findGeoIntersectionsHelper}'s list.
      *
      * @param ray the ray to intersect
      * @param hit the record to update; its {@code t} is the upper bound
      * @return true when {@code hit} was updated
      */
     public boolean closestHit(Ray ray, Hit hit) {
+        if (ANSWERS_HITS.containsAncestorOf(this)) return closestHit(hit.setRay(ray));
         List<GeoPoint> list = findGeoIntersectionsHelper(ray, hit.t);
         if (list == null) return false;
         boolean found = false;
@@ -314,6 +326,7 @@ public abstract class Intersectable {
      * @param hit the record holding the query ray; its {@code t} is the upper bound
      * @return true when {@code hit} was updated
      */
+    @Override
     public boolean closestHit(Hit hit) {
         Ray ray = hit.ray();
         boolean found = closestHit(ray, hit);
@@ -326,6 +339,8 @@ public abstract class Intersectable {
     /**
      * The any-hit walk: calls {@code visitor} for every intersection with {@code alignZero(t) > 0}
      * and {@code alignZero(t - maxDistance) <= 0}, in no particular order, until it returns false.
+     * The library's shapes answer it with {@link #visitHits(Hit, double, HitVisitor)}; a user's own
+     * shape, by default, with {@link #findGeoIntersectionsHelper}'s list.
      *
      * @param ray         the ray to intersect
      * @param maxDistance the largest distance from the ray head that counts
@@ -333,6 +348,7 @@ public abstract class Intersectable {
      * @return false when the visitor stopped the walk
      */
     public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+        if (ANSWERS_HITS.containsAncestorOf(this)) return visitHits(Hit.of(ray), maxDistance, visitor);
         List<GeoPoint> list = findGeoIntersectionsHelper(ray, maxDistance);
         if (list == null) return true;
         Point head = ray.getHead();
@@ -352,81 +368,15 @@ public abstract class Intersectable {
      * @param visitor     called with each hit's geometry and distance
      * @return false when the visitor stopped the walk
      */
+    @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         return visitHits(query.ray(), maxDistance, visitor);
     }
 
     /** @return the axis-aligned box enclosing this shape, or null when it is unbounded */
+    @Override
     public BoundingBox getBoundingBox() {
         return null;
-    }
-
-    /**
-     * Adds to {@code out} the leaves an acceleration structure should index: the intersectable
-     * itself by default; containers add their children's leaves.
-     */
-    void collectLeaves(List<Intersectable> out) {
-        out.add(this);
-    }
-
-    /** How many independently bounded primitives this leaf holds (a mesh: its triangles). */
-    int primitiveCount() {
-        return 1;
-    }
-
-    /**
-     * The bounds of primitive {@code prim} of a leaf of several ({@link #primitiveCount()} &gt; 1).
-     * A leaf of one primitive is its own box: the builder uses the {@link #getBoundingBox()} it
-     * has already asked for (a shape may compute its box on every call), which for a mesh of one
-     * triangle is that triangle's box, the same numbers.
-     */
-    BoundingBox primitiveBounds(int prim) {
-        return getBoundingBox();
-    }
-
-    /** {@link #packedKind()}: not packed, a tree calls this leaf's own hooks. */
-    static final byte OWN = 0;
-    /** {@link #packedKind()}: a sphere, packed as its centre (x, y, z) and its radius squared. */
-    static final byte SPHERE = 1;
-    /** {@link #packedKind()}: a triangle, packed as its first vertex and its two edges from it. */
-    static final byte TRIANGLE = 2;
-    /** Doubles per packed primitive. */
-    static final int PACKED = 9;
-
-    /**
-     * How a tree may keep this leaf's primitives: {@link #OWN} (the default: it calls the hooks),
-     * or a kind it tests from {@link #pack packed} numbers with the same arithmetic as the hooks,
-     * so with the same hits, bit for bit, without reaching the object. Only the library's own
-     * scattered objects (a sphere, a triangle) are packed, and never a subclass, which may
-     * override the hooks; a mesh keeps its triangles in arrays already.
-     */
-    byte packedKind() {
-        return OWN;
-    }
-
-    /** Writes primitive {@code prim}'s numbers of its {@link #packedKind()} into {@code out[at..at + PACKED)}. */
-    void pack(int prim, double[] out, int at) {
-        throw new UnsupportedOperationException(getClass().getName() + " is not packed");
-    }
-
-    /** {@link #closestHit(Hit)} restricted to primitive {@code prim}. */
-    boolean closestHit(int prim, Hit hit) {
-        return closestHit(hit);
-    }
-
-    /** {@link #visitHits(Hit, double, HitVisitor)} restricted to primitive {@code prim}. */
-    boolean visitHits(int prim, Hit query, double maxDistance, HitVisitor visitor) {
-        return visitHits(query, maxDistance, visitor);
-    }
-
-    /** {@link #closestHit(int, Hit)} with the ray as an object (for tests). */
-    final boolean closestHit(int prim, Ray ray, Hit hit) {
-        return closestHit(prim, hit.setRay(ray));
-    }
-
-    /** {@link #visitHits(int, Hit, double, HitVisitor)} with the ray as an object (for tests). */
-    final boolean visitHits(int prim, Ray ray, double maxDistance, HitVisitor visitor) {
-        return visitHits(prim, Hit.of(ray), maxDistance, visitor);
     }
 
     /** @return true when {@code t} is a valid hit distance below the strict bound {@code tMax} */

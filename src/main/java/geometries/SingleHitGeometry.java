@@ -25,19 +25,9 @@ abstract class SingleHitGeometry extends Geometry {
     }
 
     @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        return closestHit(hit.setRay(ray));
-    }
-
-    @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         double t = distanceTo(query);
         return !within(t, maxDistance) || visitor.visit(this, t);
-    }
-
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        return visitHits(Hit.of(ray), maxDistance, visitor);
     }
 
     @Override

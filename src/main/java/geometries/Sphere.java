@@ -107,11 +107,6 @@ public class Sphere extends Geometry {
     }
 
     @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        return closestHit(hit.setRay(ray));
-    }
-
-    @Override
     public boolean closestHit(Hit hit) {
         double t = distance(hit, center.getX(), center.getY(), center.getZ(), radiusSquared);
         if (!inRange(t, hit.t)) return false;
@@ -135,7 +130,7 @@ public class Sphere extends Geometry {
 
     @Override
     byte packedKind() {
-        return getClass() == Sphere.class ? SPHERE : OWN;
+        return isLibraryShape() ? SPHERE : OWN; // a subclass may override the queries the packed copy stands for
     }
 
     @Override
@@ -144,11 +139,6 @@ public class Sphere extends Geometry {
         out[at + 1] = center.getY();
         out[at + 2] = center.getZ();
         out[at + 3] = radiusSquared;
-    }
-
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        return visitHits(Hit.of(ray), maxDistance, visitor);
     }
 
     @Override

@@ -53,7 +53,7 @@ public class Triangle extends Polygon {
 
     @Override
     byte packedKind() {
-        return getClass() == Triangle.class ? TRIANGLE : OWN;
+        return isLibraryShape() ? TRIANGLE : OWN; // a subclass may override the queries the packed copy stands for
     }
 
     /** The kernel's arguments: the first vertex and the two edges from it. */

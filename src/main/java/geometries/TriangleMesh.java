@@ -287,21 +287,11 @@ public class TriangleMesh extends Geometry {
     }
 
     @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        return closestHit(hit.setRay(ray));
-    }
-
-    @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!mayHit(query, Double.POSITIVE_INFINITY)) return true;
         for (int k = 0, n = triangleCount(); k < n; ++k)
             if (!visitHits(k, query, maxDistance, visitor)) return false;
         return true;
-    }
-
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        return visitHits(Hit.of(ray), maxDistance, visitor);
     }
 
     @Override

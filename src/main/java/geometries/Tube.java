@@ -226,18 +226,8 @@ public class Tube extends Geometry {
     }
 
     @Override
-    public boolean closestHit(Ray ray, Hit hit) {
-        return closestHit(hit.setRay(ray));
-    }
-
-    @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         return intersect(query, maxDistance, Objects.requireNonNull(visitor, "visitor"));
-    }
-
-    @Override
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        return visitHits(Hit.of(ray), maxDistance, visitor);
     }
 
     @Override

@@ -3,5 +3,35 @@
  * queries and the renderer's lean ones (a closest hit into a reused {@link geometries.Hit}, an
  * any-hit walk for shadows); {@link geometries.Geometries} puts its bounded members into a
  * {@link geometries.Bvh}.
+ *
+ * <p>Roles in this package:
+ * <ul>
+ * <li>The course's face, which scene tests call and users extend: {@code Intersectable} (the
+ * queries, the three course years' hooks and hit records), {@code Geometry} (emission, material,
+ * normal), the shapes {@code Sphere}, {@code Plane}, {@code Polygon}, {@code Triangle},
+ * {@code Tube}, {@code Cylinder}, {@code TriangleMesh}, and the list {@code Geometries}.
+ * {@code Intersectable} joins the two forms of each lean query once: the library's shapes
+ * implement the doubles form, a user's shape its course hook.</li>
+ * <li>The renderer's side: {@code Hit}, the per-thread record a query fills without allocating;
+ * {@code HitVisitor}, which receives an any-hit walk's hits; {@code Bvh}, which the tracer asks
+ * for ({@code Bvh.of(scene.geometries)}) and then queries like any intersectable; and
+ * {@code BoundingBox}, whose slab test ({@code enter}, {@code exit}) the tree's node test shares.</li>
+ * <li>Internal, package-private: {@code BvhLeaf}, what a tree asks of its leaves (the superclass of
+ * {@code Intersectable}, out of the course's sight); {@code BvhBuilder}, which builds a tree
+ * (called by {@code Bvh}'s factories) with the surface-area heuristic of {@code BvhBinner};
+ * {@code BvhNodes}, the only code that knows the node array's layout (the builder writes it, the
+ * walks read it); {@code SingleHitGeometry}, the queries of a shape crossed at most once (plane,
+ * polygon, triangle); {@code HookCheck}, which finds by reflection the course methods a class
+ * redefines; {@code Ranges}, the build's parallel loops.</li>
+ * </ul>
+ * Whether an object is exactly one of the library's shapes, which the library then trusts with
+ * arithmetic of its own, is decided by one rule, {@code primitives.LibraryClasses}, through
+ * {@code Geometry.isLibraryShape()}.
+ *
+ * <p>Invariants the tests hold: the two faces of every shape agree, the same distances bit for bit
+ * ({@code HitTest}, {@code RayFormTest}, the contract tests); a tree and the flat list give the same
+ * closest hits and the same visits ({@code BvhTest}), and the same tree for any number of build
+ * threads; a user's subclass that overrides a course method is asked through it
+ * ({@code BvhTest}, {@code HitTest}, {@code LibraryClassesTest}).
  */
 package geometries;

@@ -11,12 +11,6 @@ public class DirectionalLight extends Light implements LightSource {
     private final Vector direction;
 
     /**
-     * Whether this is exactly a library {@code DirectionalLight}: a user's subclass may override
-     * the object forms, which its doubles forms then ask.
-     */
-    private final boolean library = getClass() == DirectionalLight.class;
-
-    /**
      * A light at infinity (the sun): the same intensity and direction at every point, no attenuation.
      *
      * @param intensity the intensity at every point, non-negative
@@ -45,7 +39,7 @@ public class DirectionalLight extends Light implements LightSource {
 
     @Override
     public void getIntensity(double x, double y, double z, double[] out) {
-        if (!library) {
+        if (!isLibraryLight()) {
             LightSource.super.getIntensity(x, y, z, out);
             return;
         }
@@ -56,7 +50,7 @@ public class DirectionalLight extends Light implements LightSource {
 
     @Override
     public void getL(double x, double y, double z, double[] out) {
-        if (!library) {
+        if (!isLibraryLight()) {
             LightSource.super.getL(x, y, z, out);
             return;
         }
@@ -67,6 +61,6 @@ public class DirectionalLight extends Light implements LightSource {
 
     @Override
     public double getDistance(double x, double y, double z) {
-        return library ? Double.POSITIVE_INFINITY : LightSource.super.getDistance(x, y, z);
+        return isLibraryLight() ? Double.POSITIVE_INFINITY : LightSource.super.getDistance(x, y, z);
     }
 }

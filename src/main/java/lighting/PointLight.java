@@ -17,12 +17,6 @@ import primitives.Vector;
 public class PointLight extends Light implements LightSource {
     /** Where the light is, in scene coordinates; the centre of its disk when it has a radius. */
     protected final Point position;
-    /**
-     * Whether this is exactly a library light ({@code PointLight} or {@code SpotLight}). A user's
-     * subclass may override the object forms ({@link #getIntensity(Point)}, {@link #getL(Point)},
-     * {@link #getDistance(Point)}, {@link #attenuation(Point)}): its doubles forms then ask them.
-     */
-    private final boolean library = getClass() == PointLight.class || getClass() == SpotLight.class;
     private double kC = 1;
     private double kL = 0;
     private double kQ = 0;
@@ -175,7 +169,7 @@ public class PointLight extends Light implements LightSource {
 
     /** {@link #attenuation(Point)} of the point (x, y, z): the one computation. */
     final double attenuation(double x, double y, double z) {
-        if (!library) return attenuation(new Point(x, y, z));
+        if (!isLibraryLight()) return attenuation(new Point(x, y, z));
         return attenuationHere(x, y, z);
     }
 
@@ -211,7 +205,7 @@ public class PointLight extends Light implements LightSource {
 
     @Override
     public void getIntensity(double x, double y, double z, double[] out) {
-        if (!library) {
+        if (!isLibraryLight()) {
             LightSource.super.getIntensity(x, y, z, out);
             return;
         }
@@ -230,7 +224,7 @@ public class PointLight extends Light implements LightSource {
 
     @Override
     public void getL(double x, double y, double z, double[] out) {
-        if (!library) {
+        if (!isLibraryLight()) {
             LightSource.super.getL(x, y, z, out);
             return;
         }
@@ -262,7 +256,7 @@ public class PointLight extends Light implements LightSource {
 
     @Override
     public double getDistance(double x, double y, double z) {
-        if (!library) return LightSource.super.getDistance(x, y, z);
+        if (!isLibraryLight()) return LightSource.super.getDistance(x, y, z);
         return Math.sqrt(distanceSquared(x, y, z));
     }
 }

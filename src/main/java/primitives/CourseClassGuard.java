@@ -29,8 +29,9 @@ public final class CourseClassGuard {
      */
     static final List<String> LIBRARY_CLASSES = List.of(
             "primitives.Color", "primitives.Double3", "primitives.Material", "primitives.Point", "primitives.Ray",
-            "primitives.Util", "primitives.Vector",
-            "geometries.BoundingBox", "geometries.Bvh", "geometries.Cylinder", "geometries.Geometries",
+            "primitives.LibraryClasses", "primitives.Util", "primitives.Vector",
+            "geometries.BoundingBox", "geometries.Bvh", "geometries.BvhBinner", "geometries.BvhBuilder",
+            "geometries.BvhLeaf", "geometries.BvhNodes", "geometries.Cylinder", "geometries.Geometries",
             "geometries.Geometry", "geometries.Hit", "geometries.HitVisitor", "geometries.HookCheck",
             "geometries.Intersectable", "geometries.Plane", "geometries.Polygon", "geometries.Ranges",
             "geometries.SingleHitGeometry", "geometries.Sphere", "geometries.Triangle", "geometries.TriangleMesh",

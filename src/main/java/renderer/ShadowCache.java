@@ -6,7 +6,6 @@ import geometries.Geometry;
 import geometries.Hit;
 import geometries.HitVisitor;
 import geometries.Intersectable;
-import geometries.TriangleMesh;
 import primitives.Double3;
 
 /**
@@ -42,7 +41,7 @@ final class ShadowCache implements HitVisitor {
         world.visitHits(shadow, distance, tr);
         Geometry occluder = tr.opaque;
         // A mesh is kept out: asking it again would be a walk of its own over its triangles.
-        if (occluder == null || !occluder.isLibraryShape() || occluder instanceof TriangleMesh) return;
+        if (occluder == null || !occluder.isLibraryPrimitive()) return;
         if (light >= last.length) last = Arrays.copyOf(last, light + 1);
         last[light] = occluder;
     }

@@ -584,7 +584,7 @@ class BvhTest {
                 16777217, -16777217, 3.4028235677973366e38, 1e39, -1e39, 1e300, -1e300 })
         @DisplayName("a bound becomes the nearest float on its outer side")
         void roundedOutward(double d) {
-            float below = Bvh.floatBelow(d), above = Bvh.floatAbove(d);
+            float below = BvhNodes.floatBelow(d), above = BvhNodes.floatAbove(d);
             assertThat((double) below).as("lower bound of %s", d).isLessThanOrEqualTo(d);
             assertThat((double) Math.nextUp(below)).as("the float above the lower bound of %s", d).isGreaterThan(d);
             assertThat((double) above).as("upper bound of %s", d).isGreaterThanOrEqualTo(d);
@@ -723,13 +723,13 @@ class BvhTest {
         @DisplayName("only the library's own sphere and triangle pack; subclasses, polygons and meshes keep their hooks")
         void kinds() {
             Point a = new Point(0, 0, 0), b = new Point(1, 0, 0), c = new Point(0, 1, 0);
-            assertThat(new Sphere(a, 1).packedKind()).isEqualTo(Intersectable.SPHERE);
-            assertThat(new Triangle(a, b, c).packedKind()).isEqualTo(Intersectable.TRIANGLE);
-            assertThat(new Ghost(a, 1).packedKind()).isEqualTo(Intersectable.OWN);
-            assertThat(new GhostTriangle(a, b, c).packedKind()).isEqualTo(Intersectable.OWN);
-            assertThat(new Polygon(a, b, c).packedKind()).isEqualTo(Intersectable.OWN);
+            assertThat(new Sphere(a, 1).packedKind()).isEqualTo(BvhLeaf.SPHERE);
+            assertThat(new Triangle(a, b, c).packedKind()).isEqualTo(BvhLeaf.TRIANGLE);
+            assertThat(new Ghost(a, 1).packedKind()).isEqualTo(BvhLeaf.OWN);
+            assertThat(new GhostTriangle(a, b, c).packedKind()).isEqualTo(BvhLeaf.OWN);
+            assertThat(new Polygon(a, b, c).packedKind()).isEqualTo(BvhLeaf.OWN);
             assertThat(new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, new int[] { 0, 1, 2 }).packedKind())
-                    .isEqualTo(Intersectable.OWN);
+                    .isEqualTo(BvhLeaf.OWN);
         }
 
         @Test
