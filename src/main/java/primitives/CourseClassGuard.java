@@ -29,7 +29,7 @@ public final class CourseClassGuard {
      */
     static final List<String> LIBRARY_CLASSES = List.of(
             "primitives.Color", "primitives.Double3", "primitives.Material", "primitives.Point", "primitives.Ray",
-            "primitives.Util", "primitives.Vector",
+            "primitives.Rgb", "primitives.Util", "primitives.Vector",
             "geometries.BoundingBox", "geometries.Bvh", "geometries.Cylinder", "geometries.Geometries",
             "geometries.Geometry", "geometries.Hit", "geometries.HitVisitor", "geometries.HookCheck",
             "geometries.Intersectable", "geometries.Plane", "geometries.Polygon", "geometries.Ranges",
@@ -43,7 +43,7 @@ public final class CourseClassGuard {
             "renderer.PixelSampler", "renderer.Progress", "renderer.RayBudget", "renderer.RayTracerBase", "renderer.RayTracerBasic",
             "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
             "renderer.RenderStats", "renderer.SampleStream", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
-            "renderer.TraceContext", "renderer.Transmittance");
+            "renderer.TraceContext", "renderer.Transmittance", "renderer.WhittedShader");
 
     private CourseClassGuard() {
     }
