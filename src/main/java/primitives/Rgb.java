@@ -235,13 +235,14 @@ public final class Rgb {
 
     /**
      * @return this value as a colour
-     * @throws IllegalArgumentException for a negative or non-finite channel, as {@link Color#Color(double, double, double)}
+     * @throws IllegalArgumentException for a negative or non-finite channel, as
+     *                                  {@link Color#Color(double, double, double)}
      */
     public Color toColor() {
         return new Color(r, g, b);
     }
 
-    /** @return this colour packed as 0xRRGGBB, each channel clamped to 0..255 ({@link Color#toRgb(double, double, double)}) */
+    /** @return this colour packed as 0xRRGGBB, each channel clamped to 0..255, as {@link Color#toRgb()} */
     public int packed() {
         return Color.toRgb(r, g, b);
     }

@@ -233,8 +233,8 @@ public final class Camera {
     /**
      * Traces the camera ray through image point (px, py), in pixels from the image's top-left
      * corner (pixel (x, y)'s centre is (x + 0.5, y + 0.5)), and returns the colour seen (the
-     * context's, valid until its next trace). The ray is written into {@link TraceContext#cameraRay()} as
-     * doubles: no object per ray. With depth of field, the lens point is drawn from
+     * context's, valid until its next trace). The ray is written into
+     * {@link TraceContext#cameraRay()} as doubles: no object per ray. With depth of field, the lens point is drawn from
      * {@code ctx.random}, which the sampler has positioned for this sample.
      */
     Rgb trace(double px, double py, TraceContext ctx) {

@@ -41,11 +41,15 @@ public class RayTracerBasic extends RayTracerBase {
     public static final int MAX_CALC_COLOR_LEVEL = 10;
     /** Below this accumulated coefficient (in every channel) a contribution is not traced. */
     public static final double MIN_CALC_COLOR_K = 0.001;
+
     private boolean useBvh = true;
     private int beamSize = 16;
     private int shadowSamples = 16;
 
-    /** The shading over the scene as prepare() snapshot it (the BVH or the flat list, the lights); null until then. */
+    /**
+     * The shading over the scene as the last prepare() took it (the BVH or the flat list, the
+     * lights, these settings); null before, and after a setting changed.
+     */
     private volatile WhittedShader shader;
     /** What the prepared state was made from, to notice a scene changed between direct calls. */
     private Object preparedGeometries;

@@ -12,7 +12,6 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 
-
 /**
  * The one render loop. The image is cut into square tiles; workers claim tiles from an atomic
  * counter (no lock per pixel) and sample every pixel of a tile with their own
