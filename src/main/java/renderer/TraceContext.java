@@ -51,24 +51,19 @@ final class TraceContext {
         for (int i = 0; i < this.levels.length; ++i) this.levels[i] = new Level(i, i == 0 ? null : this.levels[i - 1]);
     }
 
-    /** The hit record for recursion level {@code level}, reset to the bound {@code tMax} (its ray stays). */
-    Hit hit(int level, double tMax) {
-        return levels[level].hit.reset(tMax);
-    }
-
-    /** The scratch of recursion level {@code level}. */
-    Level level(int level) {
-        return levels[level];
+    /** The camera ray's level, the highest: the levels below it are reached through {@link Level#below}. */
+    Level top() {
+        return levels[levels.length - 1];
     }
 
     /** The record a camera ray is written into: the top level's. */
     Hit cameraRay() {
-        return levels[levels.length - 1].hit;
+        return top().hit;
     }
 
     /** Where the colour seen along the camera ray is left: the top level's colour. */
     Rgb cameraColour() {
-        return levels[levels.length - 1].colour;
+        return top().colour;
     }
 
     /**

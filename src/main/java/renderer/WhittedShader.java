@@ -1,6 +1,5 @@
 package renderer;
 
-import static renderer.RayTracerBasic.MAX_CALC_COLOR_LEVEL;
 import static renderer.RayTracerBasic.MIN_CALC_COLOR_K;
 
 import geometries.Geometry;
@@ -37,7 +36,7 @@ final class WhittedShader {
     /** The scene's geometry as the render queries it: a BVH or the flat list. */
     private final Intersectable world;
     private final LightSource[] lights;
-    /** Rays of a glossy or diffuse-glass beam below which no beam has been traced yet. */
+    /** Rays of the first glossy or diffuse-glass beam on a camera ray's path (each bounce below it traces one). */
     private final int beamSize;
     /** Shadow rays toward a light with a radius. */
     private final int shadowSamples;
@@ -58,7 +57,7 @@ final class WhittedShader {
      */
     Rgb shadeCameraRay(TraceContext ctx) {
         ctx.stopIfInterrupted(); // a pixel may take 65,536 camera samples
-        Level top = ctx.level(MAX_CALC_COLOR_LEVEL);
+        Level top = ctx.top();
         Hit hit = top.hit.reset(Double.POSITIVE_INFINITY);
         if (!world.closestHit(hit)) return top.colour.set(scene.background);
         Double3 kA = hit.getGeometry().getMaterial().kA; // ambient = I_A·kA(light)·kA(material)
