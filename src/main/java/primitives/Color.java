@@ -3,6 +3,8 @@ package primitives;
 /**
  * An immutable RGB colour with non-negative components on the 0..255 scale of the course.
  * Components may exceed 255 while light accumulates; {@link #getColor()} clamps when writing.
+ * Its arithmetic is {@link Rgb}'s per-channel kernels, which the renderer's in-place accumulator
+ * uses too, so both give the same bits.
  * {@link #equals(Object)} is the 2025–26 course's, with a tolerance, for students' tests; the
  * library itself compares colours with {@link #distance(Color)}.
  * Serializable so that render settings can travel to the machines of a cluster.
@@ -94,9 +96,9 @@ public final class Color implements java.io.Serializable {
     public Color add(Color... colors) {
         double rr = r, gg = g, bb = b;
         for (Color c : colors) {
-            rr += c.r;
-            gg += c.g;
-            bb += c.b;
+            rr = Rgb.sum(rr, c.r);
+            gg = Rgb.sum(gg, c.g);
+            bb = Rgb.sum(bb, c.b);
         }
         return new Color(rr, gg, bb, true);
     }
@@ -109,7 +111,7 @@ public final class Color implements java.io.Serializable {
      * @return the channel-wise sum
      */
     public Color add(Color c) {
-        return new Color(r + c.r, g + c.g, b + c.b, true);
+        return new Color(Rgb.sum(r, c.r), Rgb.sum(g, c.g), Rgb.sum(b, c.b), true);
     }
 
     /**
@@ -120,7 +122,7 @@ public final class Color implements java.io.Serializable {
     public Color scale(double k) {
         if (!(k >= 0) || Double.isInfinite(k))
             throw new IllegalArgumentException("colour scale factor must be finite and non-negative, got " + k);
-        return new Color(r * k, g * k, b * k, true);
+        return new Color(Rgb.product(r, k), Rgb.product(g, k), Rgb.product(b, k), true);
     }
 
     /**
@@ -134,7 +136,7 @@ public final class Color implements java.io.Serializable {
         if (!(k.d1 >= 0) || !(k.d2 >= 0) || !(k.d3 >= 0)
                 || Double.isInfinite(k.d1) || Double.isInfinite(k.d2) || Double.isInfinite(k.d3))
             throw new IllegalArgumentException("colour scale factors must be finite and non-negative, got " + k);
-        return new Color(r * k.d1, g * k.d2, b * k.d3, true);
+        return new Color(Rgb.product(r, k.d1), Rgb.product(g, k.d2), Rgb.product(b, k.d3), true);
     }
 
     /**
@@ -144,7 +146,7 @@ public final class Color implements java.io.Serializable {
      */
     public Color reduce(int k) {
         if (k <= 0) throw new IllegalArgumentException("colour reduce factor must be positive, got " + k);
-        return new Color(r / k, g / k, b / k, true);
+        return new Color(Rgb.quotient(r, k), Rgb.quotient(g, k), Rgb.quotient(b, k), true);
     }
 
     /**
@@ -157,7 +159,7 @@ public final class Color implements java.io.Serializable {
     public Color reduce(double k) {
         if (!(k > 0) || Double.isInfinite(k))
             throw new IllegalArgumentException("colour reduce factor must be a positive finite number, got " + k);
-        return new Color(r / k, g / k, b / k, true);
+        return new Color(Rgb.quotient(r, k), Rgb.quotient(g, k), Rgb.quotient(b, k), true);
     }
 
     /**

@@ -29,7 +29,7 @@ public final class CourseClassGuard {
      */
     static final List<String> LIBRARY_CLASSES = List.of(
             "primitives.Color", "primitives.Double3", "primitives.Material", "primitives.Point", "primitives.Ray",
-            "primitives.LibraryClasses", "primitives.Util", "primitives.Vector",
+            "primitives.LibraryClasses", "primitives.Rgb", "primitives.Util", "primitives.Vector",
             "geometries.BoundingBox", "geometries.Bvh", "geometries.BvhBinner", "geometries.BvhBuilder",
             "geometries.BvhLeaf", "geometries.BvhNodes", "geometries.Cylinder", "geometries.Geometries",
             "geometries.Geometry", "geometries.Hit", "geometries.HitVisitor", "geometries.HookCheck",
@@ -44,7 +44,7 @@ public final class CourseClassGuard {
             "renderer.PixelSampler", "renderer.Progress", "renderer.RayBudget", "renderer.RayTracerBase", "renderer.RayTracerBasic",
             "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
             "renderer.RenderStats", "renderer.SampleStream", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
-            "renderer.TraceContext", "renderer.Transmittance");
+            "renderer.TraceContext", "renderer.Transmittance", "renderer.WhittedShader");
 
     private CourseClassGuard() {
     }

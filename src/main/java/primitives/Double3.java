@@ -3,6 +3,7 @@ package primitives;
 /**
  * An immutable triple of doubles: per-channel coefficients (kD, kS, kT, kR, attenuation factors).
  * {@link #equals(Object)} is tolerant: components equal within {@link Util#isZero(double)}.
+ * Its arithmetic is {@link Rgb}'s per-channel kernels, shared with {@link Color}.
  */
 public final class Double3 {
     final double d1;
@@ -80,7 +81,7 @@ public final class Double3 {
      * @return the component-wise sum
      */
     public Double3 add(Double3 rhs) {
-        return new Double3(d1 + rhs.d1, d2 + rhs.d2, d3 + rhs.d3);
+        return new Double3(Rgb.sum(d1, rhs.d1), Rgb.sum(d2, rhs.d2), Rgb.sum(d3, rhs.d3));
     }
 
     /**
@@ -96,7 +97,7 @@ public final class Double3 {
      * @return this triple times {@code k}
      */
     public Double3 scale(double k) {
-        return new Double3(d1 * k, d2 * k, d3 * k);
+        return new Double3(Rgb.product(d1, k), Rgb.product(d2, k), Rgb.product(d3, k));
     }
 
     /**
@@ -104,7 +105,7 @@ public final class Double3 {
      * @return this triple divided by {@code k}
      */
     public Double3 reduce(double k) {
-        return new Double3(d1 / k, d2 / k, d3 / k);
+        return new Double3(Rgb.quotient(d1, k), Rgb.quotient(d2, k), Rgb.quotient(d3, k));
     }
 
     /**
@@ -114,7 +115,7 @@ public final class Double3 {
      * @return (d1·rhs.d1, d2·rhs.d2, d3·rhs.d3)
      */
     public Double3 product(Double3 rhs) {
-        return new Double3(d1 * rhs.d1, d2 * rhs.d2, d3 * rhs.d3);
+        return new Double3(Rgb.product(d1, rhs.d1), Rgb.product(d2, rhs.d2), Rgb.product(d3, rhs.d3));
     }
 
     /**
@@ -122,7 +123,7 @@ public final class Double3 {
      * @return true when all three components are below {@code k}
      */
     public boolean lowerThan(double k) {
-        return d1 < k && d2 < k && d3 < k;
+        return Rgb.allBelow(d1, d2, d3, k);
     }
 
     /**
@@ -135,7 +136,7 @@ public final class Double3 {
 
     /** @return true when every component is exactly zero (the cheap test for "no contribution") */
     public boolean isZero() {
-        return d1 == 0 && d2 == 0 && d3 == 0;
+        return Rgb.allZero(d1, d2, d3);
     }
 
     @Override

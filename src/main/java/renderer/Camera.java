@@ -13,6 +13,7 @@ import primitives.Color;
 import primitives.CourseClassGuard;
 import primitives.Point;
 import primitives.Ray;
+import primitives.Rgb;
 import primitives.Util;
 import primitives.Vector;
 import scene.Scene;
@@ -231,12 +232,12 @@ public final class Camera {
 
     /**
      * Traces the camera ray through image point (px, py), in pixels from the image's top-left
-     * corner (pixel (x, y)'s centre is (x + 0.5, y + 0.5)), and leaves the colour seen in
-     * {@code ctx.r, ctx.g, ctx.b}. The ray is written into {@link TraceContext#cameraRay()} as
-     * doubles: no object per ray. With depth of field, the lens point is drawn from
+     * corner (pixel (x, y)'s centre is (x + 0.5, y + 0.5)), and returns the colour seen (the
+     * context's, valid until its next trace). The ray is written into
+     * {@link TraceContext#cameraRay()} as doubles: no object per ray. With depth of field, the lens point is drawn from
      * {@code ctx.random}, which the sampler has positioned for this sample.
      */
-    void trace(double px, double py, TraceContext ctx) {
+    Rgb trace(double px, double py, TraceContext ctx) {
         double xOffset = (px - halfNx) * pixelWidth;
         double yOffset = -(py - halfNy) * pixelHeight;
         ctx.cameraRays++;
@@ -245,8 +246,7 @@ public final class Camera {
         if (aperture == 0) {
             // new Ray(location, direction): the direction goes through the same normalization.
             ctx.cameraRay().setRay(location.getX(), location.getY(), location.getZ(), d[0], d[1], d[2]);
-            rayTracer.traceRay(ctx);
-            return;
+            return rayTracer.traceRay(ctx);
         }
         // Thin lens: every ray through the lens meets the pinhole ray where it crosses the focal plane.
         double t = focalDistance / (d[0] * vTo.getX() + d[1] * vTo.getY() + d[2] * vTo.getZ());
@@ -258,7 +258,7 @@ public final class Camera {
         double ly = location.getY() + vRight.getY() * lu + vUp.getY() * lv;
         double lz = location.getZ() + vRight.getZ() * lu + vUp.getZ() * lv;
         ctx.cameraRay().setRay(lx, ly, lz, fx - lx, fy - ly, fz - lz);
-        rayTracer.traceRay(ctx);
+        return rayTracer.traceRay(ctx);
     }
 
     /** A new sampler (one per worker) for this camera's anti-aliasing settings. */

@@ -1,5 +1,7 @@
 package renderer;
 
+import primitives.Rgb;
+
 /**
  * {@link AntiAliasing#NONE}: rays through the pixel centre: one, or with depth of field one per
  * lens sample (each from its own stream).
@@ -7,6 +9,7 @@ package renderer;
 final class CenterSampler implements PixelSampler {
     private final Camera camera;
     private final int samples;
+    private final Rgb pixel = new Rgb();
 
     CenterSampler(Camera camera, int samples) {
         this.camera = camera;
@@ -14,22 +17,16 @@ final class CenterSampler implements PixelSampler {
     }
 
     @Override
-    public void sample(int x, int y, TraceContext ctx) {
+    public Rgb sample(int x, int y, TraceContext ctx) {
         if (samples == 1) {
             ctx.random.reset(camera.seed(), x, y, 0);
-            camera.trace(x + 0.5, y + 0.5, ctx);
-            return;
+            return camera.trace(x + 0.5, y + 0.5, ctx);
         }
-        double r = 0, g = 0, b = 0;
+        Rgb sum = pixel.setZero();
         for (int s = 0; s < samples; ++s) {
             ctx.random.reset(camera.seed(), x, y, s);
-            camera.trace(x + 0.5, y + 0.5, ctx);
-            r += ctx.r;
-            g += ctx.g;
-            b += ctx.b;
+            sum.add(camera.trace(x + 0.5, y + 0.5, ctx));
         }
-        ctx.r = r / samples;
-        ctx.g = g / samples;
-        ctx.b = b / samples;
+        return sum.reduce(samples);
     }
 }

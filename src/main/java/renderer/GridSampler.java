@@ -1,5 +1,7 @@
 package renderer;
 
+import primitives.Rgb;
+
 /**
  * {@link AntiAliasing#RANDOM}: the pixel cut into columns × rows cells, one ray through a random
  * point of each cell (jittered, so the samples are stratified and never line up).
@@ -8,6 +10,7 @@ final class GridSampler implements PixelSampler {
     private final Camera camera;
     private final int columns;
     private final int rows;
+    private final Rgb pixel = new Rgb();
 
     GridSampler(Camera camera, int columns, int rows) {
         this.camera = camera;
@@ -16,23 +19,17 @@ final class GridSampler implements PixelSampler {
     }
 
     @Override
-    public void sample(int x, int y, TraceContext ctx) {
-        double r = 0, g = 0, b = 0;
+    public Rgb sample(int x, int y, TraceContext ctx) {
+        Rgb sum = pixel.setZero();
         SampleStream rnd = ctx.random;
         for (int row = 0, s = 0; row < rows; ++row) {
             for (int col = 0; col < columns; ++col, ++s) {
                 rnd.reset(camera.seed(), x, y, s);
                 double px = x + (col + rnd.nextDouble()) / columns;
                 double py = y + (row + rnd.nextDouble()) / rows;
-                camera.trace(px, py, ctx);
-                r += ctx.r;
-                g += ctx.g;
-                b += ctx.b;
+                sum.add(camera.trace(px, py, ctx));
             }
         }
-        int n = columns * rows;
-        ctx.r = r / n;
-        ctx.g = g / n;
-        ctx.b = b / n;
+        return sum.reduce(columns * rows);
     }
 }

@@ -2,6 +2,8 @@ package renderer;
 
 import java.util.Arrays;
 
+import primitives.Rgb;
+
 /**
  * {@link AntiAliasing#CORNERS} and {@link AntiAliasing#ADAPTIVE}: samples on a fixed lattice of
  * {@code R} points per pixel side, cached per tile so that a point shared by neighbouring pixels
@@ -41,6 +43,7 @@ final class LatticeSampler implements PixelSampler {
     private int generation;
     private int originX, originY; // global lattice coordinates of the tile's top-left point
     private final double[] sum = new double[3]; // the adaptive accumulator, reused per pixel
+    private final Rgb pixel = new Rgb();
 
     /**
      * @param maxDepth  the adaptive subdivision depth (ignored for CORNERS)
@@ -91,36 +94,34 @@ final class LatticeSampler implements PixelSampler {
         if (stamp[i] != generation) {
             SampleStream rnd = ctx.random;
             rnd.reset(camera.seed(), gx, gy, -perPixel);
+            Rgb c;
             if (adaptive) { // jittered within its cell of the lattice: see the class comment
                 double jx = rnd.nextDouble() - 0.5, jy = rnd.nextDouble() - 0.5;
-                camera.trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
+                c = camera.trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
             } else {
-                camera.trace((double) gx / perPixel, (double) gy / perPixel, ctx);
+                c = camera.trace((double) gx / perPixel, (double) gy / perPixel, ctx);
             }
-            cr[i] = ctx.r;
-            cg[i] = ctx.g;
-            cb[i] = ctx.b;
+            cr[i] = c.r();
+            cg[i] = c.g();
+            cb[i] = c.b();
             stamp[i] = generation;
         }
         return i;
     }
 
     @Override
-    public void sample(int x, int y, TraceContext ctx) {
+    public Rgb sample(int x, int y, TraceContext ctx) {
         int gx = x * perPixel, gy = y * perPixel;
         if (!adaptive) {
             int m = point(gx + 1, gy + 1, ctx);
             int a = point(gx, gy, ctx), b = point(gx + 2, gy, ctx), c = point(gx, gy + 2, ctx), d = point(gx + 2, gy + 2, ctx);
-            ctx.r = (cr[m] + cr[a] + cr[b] + cr[c] + cr[d]) / 5;
-            ctx.g = (cg[m] + cg[a] + cg[b] + cg[c] + cg[d]) / 5;
-            ctx.b = (cb[m] + cb[a] + cb[b] + cb[c] + cb[d]) / 5;
-            return;
+            return pixel.set((cr[m] + cr[a] + cr[b] + cr[c] + cr[d]) / 5,
+                    (cg[m] + cg[a] + cg[b] + cg[c] + cg[d]) / 5,
+                    (cb[m] + cb[a] + cb[b] + cb[c] + cb[d]) / 5);
         }
         sum[0] = sum[1] = sum[2] = 0;
         square(gx, gy, perPixel, 0, 1.0, ctx);
-        ctx.r = sum[0];
-        ctx.g = sum[1];
-        ctx.b = sum[2];
+        return pixel.set(sum[0], sum[1], sum[2]);
     }
 
     /**

@@ -1,5 +1,7 @@
 package renderer;
 
+import primitives.Rgb;
+
 /**
  * A sampling strategy: the colour of one pixel from as many camera samples as it chooses. One
  * instance per worker thread (it may keep scratch state); the render loop calls
@@ -10,6 +12,6 @@ interface PixelSampler {
     default void beginTile(int x0, int y0, int x1, int y1) {
     }
 
-    /** Samples pixel (column x, row y) and leaves its colour in {@code ctx.r, ctx.g, ctx.b}. */
-    void sample(int x, int y, TraceContext ctx);
+    /** Samples pixel (column x, row y): @return its colour, valid until the next call */
+    Rgb sample(int x, int y, TraceContext ctx);
 }

@@ -7,6 +7,7 @@ import primitives.Color;
 import primitives.CourseClassGuard;
 import primitives.Point;
 import primitives.Ray;
+import primitives.Rgb;
 import primitives.Vector;
 import scene.Scene;
 
@@ -52,16 +53,15 @@ public abstract class RayTracerBase {
     }
 
     /**
-     * The render loop's entry: traces the camera ray held in {@link TraceContext#cameraRay()}
-     * and leaves the colour seen in {@code ctx.r, ctx.g, ctx.b}, using the worker's scratch
-     * state and the sample's random stream. Tracers outside this package get
-     * {@link #traceRay(Hit)}.
+     * The render loop's entry: traces the camera ray held in {@link TraceContext#cameraRay()},
+     * using the worker's scratch state and the sample's random stream. Tracers outside this
+     * package get {@link #traceRay(Hit)}.
+     *
+     * @return the colour seen, on the 0..255 scale: the context's {@link TraceContext#cameraColour()},
+     *         valid until its next trace
      */
-    void traceRay(TraceContext ctx) {
-        Color c = traceRay(ctx.cameraRay());
-        ctx.r = c.getR();
-        ctx.g = c.getG();
-        ctx.b = c.getB();
+    Rgb traceRay(TraceContext ctx) {
+        return ctx.cameraColour().set(traceRay(ctx.cameraRay()));
     }
 
     /** A short description of the tracer's settings for the render summary. */

@@ -12,8 +12,6 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 
-import primitives.Color;
-
 /**
  * The one render loop. The image is cut into square tiles; workers claim tiles from an atomic
  * counter (no lock per pixel) and sample every pixel of a tile with their own
@@ -173,8 +171,7 @@ final class RenderLoop {
         int done = 0;
         for (int y = ty0; y < ty1; ++y)
             for (int x = tx0; x < tx1; ++x) {
-                sampler.sample(x, y, ctx);
-                tilePixels[done++] = Color.toRgb(ctx.r, ctx.g, ctx.b);
+                tilePixels[done++] = sampler.sample(x, y, ctx).packed();
             }
         // Into the image once the tile is done, not pixel by pixel: the workers' stores on the
         // cache lines that neighbouring tiles share made 2-thread renders a few per cent slower,

@@ -35,7 +35,7 @@ final class ShadowCache implements HitVisitor {
     void trace(Intersectable world, Hit shadow, double distance, int light, Transmittance tr) {
         tr.reset();
         if (blocks(light, shadow, distance)) {
-            tr.r = tr.g = tr.b = 0;
+            tr.product.setZero();
             return;
         }
         world.visitHits(shadow, distance, tr);

@@ -3,41 +3,36 @@ package renderer;
 import java.util.concurrent.CancellationException;
 
 import geometries.Hit;
+import primitives.Rgb;
 
 /**
- * One worker's scratch state: the random stream of the current sample, reusable hit records (one
- * per recursion level, so that a reflection's query does not overwrite its caller's), the
- * doubles the shading keeps instead of objects, and ray counters. Owned by exactly one thread;
- * never shared.
+ * One worker's scratch state: the random stream of the current sample, the shader's per-level
+ * records ({@link Level}: hit, colours, bounces) and per-light scratch, all allocated once and
+ * reused for every ray, and ray counters. Owned by exactly one thread; never shared.
  */
 final class TraceContext {
     final SampleStream random = new SampleStream();
+    /** The any-hit walk's product of kT along the current shadow ray. */
     final Transmittance transmittance;
     final ShadowCache shadowCache = new ShadowCache();
     /** Scratch for one point of a disk (soft-shadow light disks, glossy aim disks). */
     final double[] disk = new double[2];
     /** Scratch for a vector: a camera ray's direction, a cross product. */
     final double[] vector = new double[3];
-    /** Scratch for a light's direction at a shaded point. */
+    /** A light's unit direction toward the shaded point, as {@code LightSource.getL} writes it. */
     final double[] light = new double[3];
-    /** Scratch for a light's intensity at a shaded point. */
-    final double[] intensity = new double[3];
-    /** The colour of the local effects of the point being shaded. */
-    final double[] local = new double[3];
-    /** The transparency (product of kT) toward the light being shaded. */
-    final double[] transparency = new double[3];
-    /**
-     * Per recursion level: the colour the last calcColor, global-effects, beam or secondary step
-     * of that level produced (each is read at once by its caller).
-     */
-    final double[] red;
-    final double[] green;
-    final double[] blue;
-    /** The colour of the last camera sample (a camera trace), then of the pixel (a sampler). */
-    double r;
-    double g;
-    double b;
-    private final Hit[] hits;
+    /** A light's intensity at the shaded point, as {@code LightSource.getIntensity} writes it. */
+    final double[] lightIntensity = new double[3];
+    /** The same intensity, as the shader multiplies it (0..255 scale). */
+    final Rgb intensity = new Rgb();
+    /** The Phong factor of the light being shaded: kD·|n·l| + kS·max(0, −r·v)^shininess, per channel. */
+    final Rgb phong = new Rgb();
+    /** The light arriving directly at the point being shaded (emission aside), summed over the lights. */
+    final Rgb local = new Rgb();
+    /** The mean transparency (product of kT) over a soft shadow's rays toward one light. */
+    final Rgb transparency = new Rgb();
+    /** Indexed by recursion level: the camera ray's at {@code levels.length - 1}, one less per bounce. */
+    private final Level[] levels;
     /** The query record of shadow rays: only its ray is used (an any-hit walk records no hit). */
     final Hit shadow = new Hit();
     long cameraRays;
@@ -52,21 +47,23 @@ final class TraceContext {
 
     TraceContext(int levels, double threshold) {
         transmittance = new Transmittance(threshold);
-        hits = new Hit[levels + 1];
-        for (int i = 0; i < hits.length; ++i) hits[i] = new Hit();
-        red = new double[levels + 1];
-        green = new double[levels + 1];
-        blue = new double[levels + 1];
+        this.levels = new Level[levels + 1];
+        for (int i = 0; i < this.levels.length; ++i) this.levels[i] = new Level(i, i == 0 ? null : this.levels[i - 1]);
     }
 
-    /** The hit record for recursion level {@code level}, reset to the bound {@code tMax} (its ray stays). */
-    Hit hit(int level, double tMax) {
-        return hits[level].reset(tMax);
+    /** The camera ray's level, the highest: the levels below it are reached through {@link Level#below}. */
+    Level top() {
+        return levels[levels.length - 1];
     }
 
     /** The record a camera ray is written into: the top level's. */
     Hit cameraRay() {
-        return hits[hits.length - 1];
+        return top().hit;
+    }
+
+    /** Where the colour seen along the camera ray is left: the top level's colour. */
+    Rgb cameraColour() {
+        return top().colour;
     }
 
     /**
@@ -82,5 +79,63 @@ final class TraceContext {
 
     void addTo(RenderStats.Counter counter) {
         counter.add(cameraRays, shadowRays, secondaryRays);
+    }
+
+    /**
+     * One recursion level of the shader: the hit being shaded there and what the shader keeps at
+     * that level while the levels below it are traced (a reflection's hit is shaded one level
+     * down, so it never overwrites these). Colours are on the 0..255 scale.
+     */
+    static final class Level {
+        /** The recursion level: the camera ray's is the highest; level 1 traces no bounce. */
+        final int level;
+        /** The level one bounce down, or null for level 0. */
+        final Level below;
+        final Hit hit = new Hit();
+        /** The product of kR and kT of the bounces from the camera down to this level's hit, per channel. */
+        final Rgb weight = new Rgb();
+        /** The colour seen along this level's ray: emission, local and indirect light, or the background. */
+        final Rgb colour = new Rgb();
+        /** The light reflected and transmitted at the hit: the sum of the two bounces'. */
+        final Rgb indirect = new Rgb();
+        /** The light one bounce brings back, times its k: one ray's, or a beam's running sum, then mean. */
+        final Rgb beam = new Rgb();
+        final Bounce reflection = new Bounce();
+        final Bounce transmission = new Bounce();
+
+        Level(int level, Level below) {
+            this.level = level;
+            this.below = below;
+        }
+
+        /**
+         * This level's record, reset, holding the secondary ray {@code new Ray(p, d, n)} from the
+         * hit point p (normal n) of {@code from}: d normalized, the head moved off the surface.
+         */
+        Hit secondaryRay(Hit from, double dx, double dy, double dz) {
+            return hit.reset(Double.POSITIVE_INFINITY).setRay(from.pointX(), from.pointY(), from.pointZ(), dx, dy, dz,
+                    from.normalX(), from.normalY(), from.normalZ());
+        }
+    }
+
+    /**
+     * A reflection or a transmission at a hit: its coefficient k (kR or kT, after the Fresnel
+     * split of a refracting material), the direction it leaves in (not unit length: the mirror
+     * image or refraction of a unit vector) and the radius of its aim disk at unit distance (0 for
+     * one ray).
+     */
+    static final class Bounce {
+        final Rgb k = new Rgb();
+        double dirX;
+        double dirY;
+        double dirZ;
+        double spread;
+
+        void aim(double x, double y, double z, double spread) {
+            this.dirX = x;
+            this.dirY = y;
+            this.dirZ = z;
+            this.spread = spread;
+        }
     }
 }

@@ -3,6 +3,7 @@ package renderer;
 import geometries.Geometry;
 import geometries.HitVisitor;
 import primitives.Double3;
+import primitives.Rgb;
 
 /**
  * The shadow-ray accumulator of the any-hit walk: the product of kT of every occluder crossing
@@ -10,9 +11,8 @@ import primitives.Double3;
  * threshold, because kT ≤ 1 means the product can only shrink further.
  */
 final class Transmittance implements HitVisitor {
-    double r;
-    double g;
-    double b;
+    /** The product of kT so far, per channel: 1 before the walk, 0 once it stopped below the threshold. */
+    final Rgb product = new Rgb();
     /** The occluder that stopped the walk alone (its kT is zero in every channel), or null. */
     Geometry opaque;
     private final double threshold;
@@ -22,7 +22,7 @@ final class Transmittance implements HitVisitor {
     }
 
     Transmittance reset() {
-        r = g = b = 1;
+        product.set(1, 1, 1);
         opaque = null;
         return this;
     }
@@ -30,12 +30,9 @@ final class Transmittance implements HitVisitor {
     @Override
     public boolean visit(Geometry geometry, double t) {
         Double3 kT = geometry.getMaterial().kT;
-        r *= kT.getD1();
-        g *= kT.getD2();
-        b *= kT.getD3();
-        if (r < threshold && g < threshold && b < threshold) {
-            r = g = b = 0;
-            if (kT.getD1() == 0 && kT.getD2() == 0 && kT.getD3() == 0) opaque = geometry;
+        if (product.scale(kT).lowerThan(threshold)) {
+            product.setZero();
+            if (kT.isZero()) opaque = geometry;
             return false;
         }
         return true;

@@ -69,6 +69,23 @@ class RayTracerBasicTest {
     }
 
     @Test
+    @DisplayName("a setting changed between direct calls applies from the next call on")
+    void settingChangedBetweenCalls() {
+        Scene scene = new Scene("soft");
+        scene.geometries.add(new Sphere(new Point(0, 0, -5), 1).setMaterial(new Material().setKd(0)),
+                new geometries.Plane(new Point(0, 0, -10), new Vector(0, 0, 1)).setMaterial(new Material().setKd(1)));
+        scene.lights.add(new PointLight(new Color(255, 255, 255), new Point(0, 0, 20)).setRadius(3));
+        Ray penumbra = new Ray(new Point(1.1, 0, 10), new Vector(0, 0, -1));
+        RayTracerBasic tracer = new RayTracerBasic(scene).setShadowSamples(2);
+        Color before = tracer.traceRay(penumbra);
+        Color after = tracer.setShadowSamples(40).traceRay(penumbra);
+        Color fresh = new RayTracerBasic(scene).setShadowSamples(40).traceRay(penumbra);
+        assertThat(after.toRgb()).as("the penumbra's colour depends on the samples").isNotEqualTo(before.toRgb());
+        assertThat(new double[] { after.getR(), after.getG(), after.getB() })
+                .containsExactly(fresh.getR(), fresh.getG(), fresh.getB());
+    }
+
+    @Test
     @DisplayName("a light without attenuation (kC = kL = kQ = 0) fails the render before any pixel, naming the values")
     void badLightFailsBeforeRendering() {
         Scene scene = new Scene("bad light");

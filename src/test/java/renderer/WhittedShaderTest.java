@@ -1,0 +1,109 @@
+package renderer;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static renderer.RayTracerBasic.MAX_CALC_COLOR_LEVEL;
+import static renderer.RayTracerBasic.MIN_CALC_COLOR_K;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
+
+import geometries.Plane;
+import lighting.AmbientLight;
+import lighting.LightSource;
+import primitives.Color;
+import primitives.Material;
+import primitives.Point;
+import primitives.Rgb;
+import primitives.Vector;
+import scene.Scene;
+
+/**
+ * The shader under {@link RayTracerBasic}, driven as the render loop drives it: a camera ray in a
+ * worker's context, the colour back as the context's {@link Rgb}, the rays it cost in the
+ * context's counters. The camera ray runs straight down the z axis from z = 10.
+ */
+class WhittedShaderTest {
+    private static final Color EMISSION = new Color(3, 5, 7);
+    private final TraceContext ctx = new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K);
+
+    /** A floor z = 0 facing up, with {@code material}. */
+    private static Scene floor(Material material) {
+        Scene scene = new Scene("floor").setBackground(new Color(40, 80, 120));
+        scene.geometries.add(new Plane(Point.ZERO, new Vector(0, 0, 1)).setEmission(EMISSION).setMaterial(material));
+        return scene;
+    }
+
+    /** Shades the camera ray straight down in {@code scene} with beams of {@code beamSize} rays. */
+    private Rgb shade(Scene scene, int beamSize) {
+        WhittedShader shader = new WhittedShader(scene, scene.geometries, scene.lights.toArray(new LightSource[0]),
+                beamSize, 1);
+        ctx.random.reset(7, 0, 0, 0);
+        ctx.cameraRay().setRay(0, 0, 10, 0, 0, -1);
+        return shader.shadeCameraRay(ctx);
+    }
+
+    @Test
+    @DisplayName("the colour comes back in the context's camera colour: no object per camera ray")
+    void colourInTheContext() {
+        Scene scene = floor(new Material().setKr(0.5));
+        assertThat(shade(scene, 4)).isSameAs(ctx.cameraColour());
+        assertThat(shade(new Scene("empty"), 4)).isSameAs(ctx.cameraColour());
+    }
+
+    @Test
+    @DisplayName("a mirror: emission, plus kR times the background it reflects, plus the ambient light times kA, summed as Color sums")
+    void mirrorAsColorArithmetic() {
+        Material material = new Material().setKr(0.3).setKA(0.6);
+        Scene scene = floor(material).setAmbientLight(new AmbientLight(new Color(90, 30, 10), 0.7));
+        Color expected = EMISSION.add(Color.BLACK.add(scene.background.scale(material.kR)))
+                .add(scene.ambientLight.getIntensity().scale(material.kA));
+        Rgb seen = shade(scene, 4);
+        assertThat(new double[] { seen.r(), seen.g(), seen.b() })
+                .containsExactly(expected.getR(), expected.getG(), expected.getB());
+    }
+
+    @Test
+    @DisplayName("a ray that hits nothing sees the background, and traces nothing more")
+    void background() {
+        Rgb seen = shade(new Scene("empty").setBackground(new Color(1, 2, 3)), 4);
+        assertThat(new double[] { seen.r(), seen.g(), seen.b() }).containsExactly(1, 2, 3);
+        assertThat(ctx.secondaryRays).isZero();
+    }
+
+    @Nested
+    @DisplayName("which bounces are traced")
+    class Bounces {
+        @Test
+        @DisplayName("a bounce is traced while the path weight stays at MIN_CALC_COLOR_K or above, and not below")
+        void weightThreshold() {
+            shade(floor(new Material().setKr(MIN_CALC_COLOR_K)), 4);
+            assertThat(ctx.secondaryRays).as("kR = MIN_CALC_COLOR_K").isEqualTo(1);
+            ctx.secondaryRays = 0;
+            shade(floor(new Material().setKr(Math.nextDown(MIN_CALC_COLOR_K))), 4);
+            assertThat(ctx.secondaryRays).as("kR just below").isZero();
+        }
+
+        @ParameterizedTest(name = "beam of {0}")
+        @ValueSource(ints = { 1, 4, 16 })
+        @DisplayName("the first spread bounce traces the whole beam; every bounce below it traces one ray")
+        void beamThenOneRay(int beamSize) {
+            // A glossy floor under a glossy ceiling: floor (weight 1 · 0.5), ceiling (0.5 · 0.003 =
+            // 0.0015), then the floor again, whose bounce (0.00075) falls below the threshold.
+            Scene scene = floor(new Material().setKr(0.5).setReflectionSpread(0.1));
+            scene.geometries.add(new Plane(new Point(0, 0, 20), new Vector(0, 0, -1))
+                    .setMaterial(new Material().setKr(0.003).setReflectionSpread(0.1)));
+            shade(scene, beamSize);
+            assertThat(ctx.secondaryRays).isEqualTo(2L * beamSize);
+        }
+
+        @Test
+        @DisplayName("a material that neither reflects nor transmits traces no secondary ray")
+        void none() {
+            shade(floor(new Material().setKd(0.5).setKs(0.5)), 16);
+            assertThat(ctx.secondaryRays).isZero();
+        }
+    }
+}
