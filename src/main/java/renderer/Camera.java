@@ -19,9 +19,13 @@ import primitives.Vector;
 import scene.Scene;
 
 /**
- * A pinhole (or thin-lens) camera: where it stands, where it looks, its view plane, and how a
- * render samples and runs. Immutable; made by {@link Builder#build()}. The pixel loop itself
- * lives in {@code RenderLoop}, the sampling strategies in the samplers.
+ * A pinhole (or thin-lens) camera: a facade over what it sees ({@link View}), how a render
+ * samples ({@code Sampling}) and runs ({@code Execution}), the tracer that colours each camera
+ * ray and the image writer that receives the pixels. Made by {@link Builder#build()}, which
+ * checks each setting in the value that owns it. Shallowly immutable: its values do not change,
+ * but the tracer stays mutable (a render holds it to the ray budget again and prepares it for
+ * the scene as it is then) and the image writer receives each render's pixels. The pixel loop
+ * itself lives in {@code RenderLoop}, the sampling strategies in the samplers.
  */
 public final class Camera {
     /**
@@ -37,77 +41,27 @@ public final class Camera {
      */
     public static final int MAX_SAMPLES_PER_PIXEL = 1 << 16;
 
-    // View. Units are scene units; vTo, vUp and vRight are unit length and mutually orthogonal.
-    private final Point location;
-    private final Vector vTo;
-    private final Vector vUp;
-    private final Vector vRight;
-    /** View-plane width and height, and its distance from the location along vTo. */
-    private final double vpWidth, vpHeight, vpDistance;
-
+    private final View view;
+    private final Sampling sampling;
+    private final Execution execution;
+    private final RayTracerBase rayTracer;
     private final ImageWriter imageWriter;
     /** Whether the camera made its writer from a resolution (not given one to share). */
     private final boolean ownWriter;
-    private final RayTracerBase rayTracer;
-
-    // Sampling.
-    private final AntiAliasing antiAliasing;
-    private final int gridColumns, gridRows; // RANDOM
-    private final int adaptiveDepth; // ADAPTIVE: sub-pixels down to 1/2^depth of the pixel side
-    private final double adaptiveThreshold; // ADAPTIVE: colour distance on the 0..255 scale
-    /** Thin lens: 0 aperture is a pinhole; the focal plane is focalDistance along vTo. */
-    private final double focalDistance, aperture;
-    private final int lensSamples; // rays per pixel with depth of field and NONE
-    private final long seed;
-
-    // Execution.
-    private final int threads; // 0: the calling thread
-    private final double debugPrint; // percent between progress lines; 0: none
+    /** Whether a render prints its one-line summary and a write its line. */
     private final boolean summary;
-    private final PrintStream output;
     /** Told of each finished render (a test's report, for example); by default nobody. */
     private final BiConsumer<? super Camera, ? super RenderStats> renderListener;
-    // Per camera ray these are constants: computed once here, by the very operations the ray
-    // used to repeat (so the rays keep their bits), off the path of every camera ray: two of
-    // them are divisions.
-    /** The view plane's centre, location + vTo·vpDistance. */
-    private final double centreX, centreY, centreZ;
-    /** A pixel's width and height on the view plane, and half the image's width and height in pixels. */
-    private final double pixelWidth, pixelHeight, halfNx, halfNy;
 
-    private Camera(Builder b, Vector vTo, Vector vUp, ImageWriter imageWriter, RayTracerBase rayTracer) {
-        location = b.location;
-        this.vTo = vTo;
-        this.vUp = vUp;
-        this.vRight = vTo.crossProduct(vUp).normalize();
-        vpWidth = b.vpWidth;
-        vpHeight = b.vpHeight;
-        vpDistance = b.vpDistance;
+    private Camera(Builder b, View view, Sampling sampling, ImageWriter imageWriter, RayTracerBase rayTracer) {
+        this.view = view;
+        this.sampling = sampling;
+        this.execution = b.execution(sampling);
         this.imageWriter = imageWriter;
-        ownWriter = b.imageWriter == null;
+        this.ownWriter = b.imageWriter == null;
         this.rayTracer = rayTracer;
-        antiAliasing = b.antiAliasing;
-        gridColumns = b.gridColumns;
-        gridRows = b.gridRows;
-        adaptiveDepth = b.adaptiveDepth;
-        adaptiveThreshold = b.adaptiveThreshold;
-        focalDistance = b.focalDistance;
-        aperture = b.aperture;
-        lensSamples = b.lensSamples;
-        seed = b.seed;
-        threads = b.threads < 0 ? Runtime.getRuntime().availableProcessors() : b.threads; // -1, -2: all cores
-        debugPrint = b.debugPrint;
-        summary = b.summary;
-        output = b.output;
-        renderListener = b.renderListener;
-        centreX = location.getX() + vTo.getX() * vpDistance;
-        centreY = location.getY() + vTo.getY() * vpDistance;
-        centreZ = location.getZ() + vTo.getZ() * vpDistance;
-        int nX = imageWriter.getNx(), nY = imageWriter.getNy();
-        pixelWidth = vpWidth / nX;
-        pixelHeight = vpHeight / nY;
-        halfNx = nX / 2.0;
-        halfNy = nY / 2.0;
+        this.summary = b.summary;
+        this.renderListener = b.renderListener;
     }
 
     /**
@@ -137,22 +91,22 @@ public final class Camera {
 
     /** @return where the camera stands: the rays' common head (the lens centre with depth of field) */
     public Point getLocation() {
-        return location;
+        return view.location();
     }
 
     /** @return the unit view direction, through the view plane's centre */
     public Vector getVTo() {
-        return vTo;
+        return view.frame().to();
     }
 
     /** @return the image's unit up direction, orthogonal to {@link #getVTo()} */
     public Vector getVUp() {
-        return vUp;
+        return view.frame().up();
     }
 
     /** @return the image's unit right direction: vTo × vUp */
     public Vector getVRight() {
-        return vRight;
+        return view.frame().right();
     }
 
     /**
@@ -176,10 +130,7 @@ public final class Camera {
      * @throws IllegalArgumentException for a non-positive resolution or a pixel outside it
      */
     public Ray constructRay(int nX, int nY, int j, int i) {
-        if (nX <= 0 || nY <= 0) throw new IllegalArgumentException("resolution must be positive, got " + nX + "x" + nY);
-        if (j < 0 || j >= nX || i < 0 || i >= nY)
-            throw new IllegalArgumentException("pixel (" + j + "," + i + ") is outside the " + nX + "x" + nY + " view plane");
-        return pinholeRay((j - (nX - 1) / 2.0) * (vpWidth / nX), -(i - (nY - 1) / 2.0) * (vpHeight / nY));
+        return view.constructRay(nX, nY, j, i);
     }
 
     /**
@@ -195,125 +146,16 @@ public final class Camera {
         return constructRay(imageWriter.getNx(), imageWriter.getNy(), j, i);
     }
 
-    /**
-     * The ray through the view-plane point at (xOffset, yOffset) from the plane's centre, along
-     * vRight and vUp. Operations are in the course's order so that pixel centres give exactly
-     * the rays of {@link #constructRay}.
-     */
-    private Ray pinholeRay(double xOffset, double yOffset) {
-        double[] d = new double[3];
-        viewPlaneDirection(xOffset, yOffset, d);
-        return new Ray(location, new Vector(d[0], d[1], d[2]));
+    View view() {
+        return view;
     }
 
-    /**
-     * The unit direction from the location through the view-plane point at (xOffset, yOffset),
-     * written into {@code out[0..2]}: the one computation behind {@link #constructRay} and the
-     * render's camera rays.
-     */
-    private void viewPlaneDirection(double xOffset, double yOffset, double[] out) {
-        double px = centreX, py = centreY, pz = centreZ;
-        if (xOffset != 0) {
-            px += vRight.getX() * xOffset;
-            py += vRight.getY() * xOffset;
-            pz += vRight.getZ() * xOffset;
-        }
-        if (yOffset != 0) {
-            px += vUp.getX() * yOffset;
-            py += vUp.getY() * yOffset;
-            pz += vUp.getZ() * yOffset;
-        }
-        double dx = px - location.getX(), dy = py - location.getY(), dz = pz - location.getZ();
-        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        out[0] = dx * inv;
-        out[1] = dy * inv;
-        out[2] = dz * inv;
+    Sampling sampling() {
+        return sampling;
     }
 
-    /**
-     * Traces the camera ray through image point (px, py), in pixels from the image's top-left
-     * corner (pixel (x, y)'s centre is (x + 0.5, y + 0.5)), and returns the colour seen (the
-     * context's, valid until its next trace). The ray is written into
-     * {@link TraceContext#cameraRay()} as doubles: no object per ray. With depth of field, the lens point is drawn from
-     * {@code ctx.random}, which the sampler has positioned for this sample.
-     */
-    Rgb trace(double px, double py, TraceContext ctx) {
-        double xOffset = (px - halfNx) * pixelWidth;
-        double yOffset = -(py - halfNy) * pixelHeight;
-        ctx.cameraRays++;
-        double[] d = ctx.vector;
-        viewPlaneDirection(xOffset, yOffset, d);
-        if (aperture == 0) {
-            // new Ray(location, direction): the direction goes through the same normalization.
-            ctx.cameraRay().setRay(location.getX(), location.getY(), location.getZ(), d[0], d[1], d[2]);
-            return rayTracer.traceRay(ctx);
-        }
-        // Thin lens: every ray through the lens meets the pinhole ray where it crosses the focal plane.
-        double t = focalDistance / (d[0] * vTo.getX() + d[1] * vTo.getY() + d[2] * vTo.getZ());
-        double fx = location.getX() + d[0] * t, fy = location.getY() + d[1] * t, fz = location.getZ() + d[2] * t;
-        double r = aperture * Math.sqrt(ctx.random.nextDouble());
-        double a = 2 * Math.PI * ctx.random.nextDouble();
-        double lu = r * Math.cos(a), lv = r * Math.sin(a);
-        double lx = location.getX() + vRight.getX() * lu + vUp.getX() * lv;
-        double ly = location.getY() + vRight.getY() * lu + vUp.getY() * lv;
-        double lz = location.getZ() + vRight.getZ() * lu + vUp.getZ() * lv;
-        ctx.cameraRay().setRay(lx, ly, lz, fx - lx, fy - ly, fz - lz);
-        return rayTracer.traceRay(ctx);
-    }
-
-    /** A new sampler (one per worker) for this camera's anti-aliasing settings. */
-    PixelSampler newSampler() {
-        return switch (antiAliasing) {
-            case NONE -> new CenterSampler(this, aperture == 0 ? 1 : lensSamples);
-            case RANDOM -> new GridSampler(this, gridColumns, gridRows);
-            case CORNERS -> new LatticeSampler(this, false, 0, 0);
-            case ADAPTIVE -> new LatticeSampler(this, true, adaptiveDepth, adaptiveThreshold);
-        };
-    }
-
-    /** The tile side, in pixels, of the render loop for this camera's sampling. */
-    int tileSize() {
-        return switch (antiAliasing) {
-            case NONE, RANDOM -> 16;
-            case CORNERS -> LatticeSampler.tileSize(false, 0);
-            case ADAPTIVE -> LatticeSampler.tileSize(true, adaptiveDepth);
-        };
-    }
-
-    long seed() {
-        return seed;
-    }
-
-    /**
-     * Holds this camera's sampling and its tracer's settings to {@link RayBudget#MAX_RAYS_PER_PIXEL}:
-     * when it is built, and again when a render starts (the tracer's beam size or shadow samples
-     * may have been raised since).
-     *
-     * @throws IllegalArgumentException naming the factors and their product when it is over
-     */
-    void requireRayBudget() {
-        requireRayBudget(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture, lensSamples, rayTracer);
-    }
-
-    private static void requireRayBudget(AntiAliasing antiAliasing, int gridColumns, int gridRows, int adaptiveDepth,
-                                         double aperture, int lensSamples, RayTracerBase rayTracer) {
-        long cameraRays = RayBudget.cameraRaysPerPixel(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture != 0,
-                lensSamples);
-        if (rayTracer instanceof RayTracerBasic basic)
-            RayBudget.require(antiAliasing, cameraRays, basic.getBeamSize(), basic.getShadowSamples());
-        else RayBudget.require(antiAliasing, cameraRays, 1, 1);
-    }
-
-    int threads() {
-        return threads;
-    }
-
-    double debugPrint() {
-        return debugPrint;
-    }
-
-    PrintStream output() {
-        return output;
+    Execution execution() {
+        return execution;
     }
 
     ImageWriter imageWriter() {
@@ -341,10 +183,10 @@ public final class Camera {
     public RenderStats render() {
         String name = imageLabel();
         RenderEvent event = FlightRecorder.isInitialized() ? new RenderEvent() : null; // see RenderEvent
-        RenderStats stats = new RenderLoop(this, name).run();
-        if (event != null) event.commit(name, imageWriter, antiAliasing, stats);
+        RenderStats stats = new RenderLoop(view, sampling, execution, rayTracer, imageWriter).render(name);
+        if (event != null) event.commit(name, imageWriter, sampling.antiAliasing(), stats);
         renderListener.accept(this, stats);
-        if (summary) output.println("render " + name + " " + imageWriter.getNx() + "x"
+        if (summary) execution.output().println("render " + name + " " + imageWriter.getNx() + "x"
                 + imageWriter.getNy() + " [" + describe() + "]: " + stats);
         return stats;
     }
@@ -379,20 +221,12 @@ public final class Camera {
      * @return a new region renderer over this camera
      */
     public RegionRenderer regionRenderer() {
-        return new RegionRenderer(this);
+        return new RegionRenderer(view, sampling, execution, rayTracer, imageWriter.getImageName());
     }
 
     /** @return the sampling settings in words, for summaries and benchmark tables */
     public String describe() {
-        String aa = switch (antiAliasing) {
-            case NONE -> "NONE";
-            case RANDOM -> "RANDOM " + gridColumns + "x" + gridRows;
-            case CORNERS -> "CORNERS";
-            case ADAPTIVE -> "ADAPTIVE depth " + adaptiveDepth + " threshold " + adaptiveThreshold;
-        };
-        String dof = aperture == 0 ? "" : ", DOF focal " + focalDistance + " aperture " + aperture
-                + (antiAliasing == AntiAliasing.NONE ? " x" + lensSamples : "");
-        return aa + dof + ", " + rayTracer.describe() + ", seed " + seed;
+        return sampling.describe(view.lens()) + ", " + rayTracer.describe() + ", seed " + sampling.seed();
     }
 
     /**
@@ -441,7 +275,7 @@ public final class Camera {
     private void write(Path file) {
         long start = System.nanoTime();
         imageWriter.writeToImage(file);
-        if (summary) output.println(String.format(Locale.ROOT, "write %s: %s in %.3f s", imageLabel(),
+        if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", imageLabel(),
                 file.toAbsolutePath(), (System.nanoTime() - start) / 1e9));
     }
 
@@ -463,13 +297,12 @@ public final class Camera {
         private int nX = 1, nY = 1;
         private ImageWriter imageWriter;
         private RayTracerBase rayTracer;
-        private AntiAliasing antiAliasing = AntiAliasing.NONE;
-        private int gridColumns = 4, gridRows = 4;
-        private int adaptiveDepth = 3;
-        private double adaptiveThreshold = 8;
+        private AntiAliasing antiAliasing = Sampling.DEFAULT.antiAliasing();
+        private Sampling.Grid grid = Sampling.DEFAULT.grid();
+        private Sampling.Adaptive adaptive = Sampling.DEFAULT.adaptive();
         private double focalDistance, aperture;
-        private int lensSamples = 16;
-        private long seed;
+        private int lensSamples = Sampling.DEFAULT.lensSamples();
+        private long seed = Sampling.DEFAULT.seed();
         private int threads;
         private double debugPrint;
         private boolean summary = true;
@@ -496,30 +329,30 @@ public final class Camera {
         public Builder(Camera camera) {
             this();
             Objects.requireNonNull(camera, "camera to copy");
-            location = camera.location;
-            to = camera.vTo;
-            up = camera.vUp;
-            vpWidth = camera.vpWidth;
-            vpHeight = camera.vpHeight;
-            vpDistance = camera.vpDistance;
+            View view = camera.view;
+            location = view.location();
+            to = view.frame().to();
+            up = view.frame().up();
+            vpWidth = view.plane().width();
+            vpHeight = view.plane().height();
+            vpDistance = view.plane().distance();
             vpSizeSet = vpDistanceSet = true;
             nX = camera.imageWriter.getNx();
             nY = camera.imageWriter.getNy();
             imageWriter = camera.ownWriter ? null : camera.imageWriter;
             rayTracer = camera.rayTracer;
-            antiAliasing = camera.antiAliasing;
-            gridColumns = camera.gridColumns;
-            gridRows = camera.gridRows;
-            adaptiveDepth = camera.adaptiveDepth;
-            adaptiveThreshold = camera.adaptiveThreshold;
-            focalDistance = camera.focalDistance;
-            aperture = camera.aperture;
-            lensSamples = camera.lensSamples;
-            seed = camera.seed;
-            threads = camera.threads;
-            debugPrint = camera.debugPrint;
+            Sampling sampling = camera.sampling;
+            antiAliasing = sampling.antiAliasing();
+            grid = sampling.grid();
+            adaptive = sampling.adaptive();
+            focalDistance = view.lens().focalDistance();
+            aperture = view.lens().aperture();
+            lensSamples = sampling.lensSamples();
+            seed = sampling.seed();
+            threads = camera.execution.threads();
+            debugPrint = camera.execution.progressStep();
             summary = camera.summary;
-            output = camera.output;
+            output = camera.execution.output();
             renderListener = camera.renderListener;
         }
 
@@ -701,13 +534,7 @@ public final class Camera {
          *                                  {@link #MAX_SAMPLES_PER_PIXEL} samples, naming it
          */
         public Builder setAntiAliasingGrid(int columns, int rows) {
-            if (columns < 1 || rows < 1)
-                throw new IllegalArgumentException("anti-aliasing grid must be at least 1x1, got " + columns + "x" + rows);
-            if ((long) columns * rows > MAX_SAMPLES_PER_PIXEL)
-                throw new IllegalArgumentException("anti-aliasing grid " + columns + "x" + rows + " has "
-                        + (long) columns * rows + " samples per pixel, more than the limit of " + MAX_SAMPLES_PER_PIXEL);
-            this.gridColumns = columns;
-            this.gridRows = rows;
+            this.grid = new Sampling.Grid(columns, rows);
             return this;
         }
 
@@ -728,10 +555,7 @@ public final class Camera {
          * @throws IllegalArgumentException when either is out of range, naming it
          */
         public Builder setAdaptive(int maxDepth, double threshold) {
-            if (maxDepth < 1 || maxDepth > 6)
-                throw new IllegalArgumentException("adaptive depth must be in 1..6, got " + maxDepth);
-            this.adaptiveDepth = maxDepth;
-            this.adaptiveThreshold = Util.requireNonNegative(threshold, "adaptive threshold");
+            this.adaptive = new Sampling.Adaptive(maxDepth, threshold);
             return this;
         }
 
@@ -760,9 +584,7 @@ public final class Camera {
          * @throws IllegalArgumentException when it is below 1 or above the limit
          */
         public Builder setDepthOfFieldSamples(int samples) {
-            if (samples < 1 || samples > MAX_SAMPLES_PER_PIXEL)
-                throw new IllegalArgumentException("depth-of-field samples must be from 1 to " + MAX_SAMPLES_PER_PIXEL
-                        + ", got " + samples);
+            Sampling.requireLensSamples(samples);
             this.lensSamples = samples;
             return this;
         }
@@ -803,9 +625,7 @@ public final class Camera {
          * @throws IllegalArgumentException when it is outside [0, 100]
          */
         public Builder setDebugPrint(double percentStep) {
-            if (!(percentStep >= 0 && percentStep <= 100))
-                throw new IllegalArgumentException("progress step must be in [0, 100] percent, got " + percentStep);
-            this.debugPrint = percentStep;
+            this.debugPrint = Progress.requireStep(percentStep);
             return this;
         }
 
@@ -845,6 +665,32 @@ public final class Camera {
         }
 
         /**
+         * Checks the view settings alone and returns the {@link View} they make, without an image
+         * or a tracer: what a scene file's camera element is checked with. The checks and
+         * messages are {@link #build()}'s, in the same order.
+         *
+         * @return the view of the current settings (the resolution is the image writer's, or the
+         *         one set, 1×1 by default)
+         * @throws MissingResourceException naming the location or direction when it is missing
+         * @throws IllegalArgumentException when the view plane's size or distance is missing,
+         *                                  when it or the resolution is not positive (naming the
+         *                                  value), or when a target is the location or lies along
+         *                                  the up direction from it
+         */
+        public View buildView() {
+            final String missing = "Missing rendering data";
+            final String camera = "Camera";
+            if (location == null) throw new MissingResourceException(missing + ": location", camera, "location");
+            if (to == null && target == null) throw new MissingResourceException(missing + ": direction", camera, "direction");
+            if (!vpSizeSet) throw new IllegalArgumentException(missing + ": view plane size (setVpSize)");
+            View.ViewPlane.requireSize(vpWidth, vpHeight);
+            if (!vpDistanceSet) throw new IllegalArgumentException(missing + ": view plane distance (setVpDistance)");
+            View.ViewPlane plane = new View.ViewPlane(vpWidth, vpHeight, vpDistance, nX, nY);
+            View.Frame frame = to != null ? View.Frame.of(to, up) : View.Frame.lookingAt(location, target, up);
+            return new View(location, frame, plane, new View.Lens(aperture, focalDistance));
+        }
+
+        /**
          * Checks the settings and makes the camera, with a 1×1 image and a
          * {@link SimpleRayTracer} on an empty scene when none were given.
          *
@@ -859,37 +705,46 @@ public final class Camera {
          *                                  naming them)
          */
         public Camera build() {
-            final String missing = "Missing rendering data";
-            final String camera = "Camera";
-            if (location == null) throw new MissingResourceException(missing + ": location", camera, "location");
-            if (to == null && target == null) throw new MissingResourceException(missing + ": direction", camera, "direction");
-            if (!vpSizeSet) throw new IllegalArgumentException(missing + ": view plane size (setVpSize)");
-            Util.requirePositive(vpWidth, "view plane width");
-            Util.requirePositive(vpHeight, "view plane height");
-            if (!vpDistanceSet) throw new IllegalArgumentException(missing + ": view plane distance (setVpDistance)");
-            Util.requirePositive(vpDistance, "view plane distance");
-            if (nX <= 0 || nY <= 0) throw new IllegalArgumentException("resolution must be positive, got " + nX + "x" + nY);
-            Vector vTo, vUp;
-            if (to != null) {
-                vTo = to;
-                vUp = up;
-            } else {
-                if (target.equals(location))
-                    throw new IllegalArgumentException("camera target " + target + " is the camera location");
-                vTo = target.subtract(location).normalize();
-                Vector upHint = up != null ? up : Vector.AXIS_Y;
-                if (Util.isZero(Math.abs(vTo.dotProduct(upHint)) - 1))
-                    throw new IllegalArgumentException("camera target " + target + " seen from " + location
-                            + " lies along the up " + (up != null ? "vector " : "hint +y ") + upHint
-                            + ": no image up can be derived; give an up vector not parallel to the view direction " + vTo);
-                Vector right = vTo.crossProduct(upHint).normalize();
-                vUp = right.crossProduct(vTo).normalize();
-            }
-            RayTracerBase tracer = rayTracer != null ? rayTracer : RayTracerType.SIMPLE.create(new Scene("empty scene"));
+            View view = buildView();
+            Sampling sampling = sampling();
+            RayTracerBase tracer = tracer();
             // Before the image is allocated: a refused budget costs no memory.
-            requireRayBudget(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture, lensSamples, tracer);
+            sampling.requireRayBudget(view.lens(), tracer);
             ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
-            return new Camera(this, vTo, vUp, writer, tracer);
+            return new Camera(this, view, sampling, writer, tracer);
+        }
+
+        /**
+         * Checks the settings as {@link #build()} does and makes a renderer of rectangles of the
+         * image, without allocating the image (see {@link Camera#regionRenderer()}): what a
+         * cluster's executor renders its tiles with. It prepares the scene now, once.
+         *
+         * @return a new region renderer over the current settings
+         * @throws MissingResourceException as {@link #build()}
+         * @throws IllegalArgumentException as {@link #build()}
+         */
+        public RegionRenderer buildRegionRenderer() {
+            View view = buildView();
+            Sampling sampling = sampling();
+            RayTracerBase tracer = tracer();
+            sampling.requireRayBudget(view.lens(), tracer);
+            String name = imageWriter != null && imageWriter.hasName() ? imageWriter.getImageName() : "region";
+            return new RegionRenderer(view, sampling, execution(sampling), tracer, name);
+        }
+
+        private Sampling sampling() {
+            return new Sampling(antiAliasing, grid, adaptive, lensSamples, seed);
+        }
+
+        /** The execution of a camera with {@code sampling}, whose tile size it takes. */
+        private Execution execution(Sampling sampling) {
+            int resolved = threads < 0 ? Runtime.getRuntime().availableProcessors() : threads; // -1, -2: all cores
+            return new Execution(resolved, sampling.tileSize(), debugPrint, output);
+        }
+
+        /** The tracer given, or a {@link SimpleRayTracer} on an empty scene. */
+        private RayTracerBase tracer() {
+            return rayTracer != null ? rayTracer : RayTracerType.SIMPLE.create(new Scene("empty scene"));
         }
     }
 }

@@ -6,26 +6,30 @@ import primitives.Rgb;
  * {@link AntiAliasing#NONE}: rays through the pixel centre: one, or with depth of field one per
  * lens sample (each from its own stream).
  */
-final class CenterSampler implements PixelSampler {
-    private final Camera camera;
+final class CenterSampler extends PixelSampler {
     private final int samples;
     private final Rgb pixel = new Rgb();
 
-    CenterSampler(Camera camera, int samples) {
-        this.camera = camera;
-        this.samples = samples;
+    CenterSampler(Sampling sampling, View.CameraRays rays, RayTracerBase tracer) {
+        super(sampling, rays, tracer);
+        this.samples = (int) samplesPerPixel(rays.hasLens(), sampling.lensSamples());
+    }
+
+    /** Camera rays per pixel: the lens samples with depth of field, else 1. */
+    static long samplesPerPixel(boolean depthOfField, int lensSamples) {
+        return depthOfField ? lensSamples : 1;
     }
 
     @Override
-    public Rgb sample(int x, int y, TraceContext ctx) {
+    Rgb sample(int x, int y, TraceContext ctx) {
         if (samples == 1) {
-            ctx.random.reset(camera.seed(), x, y, 0);
-            return camera.trace(x + 0.5, y + 0.5, ctx);
+            ctx.random.reset(seed, x, y, 0);
+            return trace(x + 0.5, y + 0.5, ctx);
         }
         Rgb sum = pixel.setZero();
         for (int s = 0; s < samples; ++s) {
-            ctx.random.reset(camera.seed(), x, y, s);
-            sum.add(camera.trace(x + 0.5, y + 0.5, ctx));
+            ctx.random.reset(seed, x, y, s);
+            sum.add(trace(x + 0.5, y + 0.5, ctx));
         }
         return sum.reduce(samples);
     }

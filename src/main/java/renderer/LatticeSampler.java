@@ -30,8 +30,7 @@ import primitives.Rgb;
  * +1.3 dB).</li>
  * </ul>
  */
-final class LatticeSampler implements PixelSampler {
-    private final Camera camera;
+final class LatticeSampler extends PixelSampler {
     private final boolean adaptive;
     private final int maxDepth;
     private final double threshold;
@@ -46,18 +45,19 @@ final class LatticeSampler implements PixelSampler {
     private final Rgb pixel = new Rgb();
 
     /**
-     * @param maxDepth  the adaptive subdivision depth (ignored for CORNERS)
-     * @param threshold the spread of a pixel's corners (0..255 scale, per channel, values clamped
-     *                  to 255 as the image stores them) above which it is subdivided; a square of
-     *                  share w of the pixel splits above threshold / w
+     * CORNERS or ADAPTIVE, as {@code sampling} says; ADAPTIVE's threshold is the spread of a
+     * pixel's corners (0..255 scale, per channel, values clamped to 255 as the image stores them)
+     * above which it is subdivided; a square of share w of the pixel splits above threshold / w.
+     *
+     * @param tileSize the render loop's tile side in pixels: the cache covers one tile's lattice
      */
-    LatticeSampler(Camera camera, boolean adaptive, int maxDepth, double threshold) {
-        this.camera = camera;
-        this.adaptive = adaptive;
-        this.maxDepth = adaptive ? maxDepth : 0;
-        this.threshold = threshold;
+    LatticeSampler(Sampling sampling, View.CameraRays rays, RayTracerBase tracer, int tileSize) {
+        super(sampling, rays, tracer);
+        this.adaptive = sampling.antiAliasing() == AntiAliasing.ADAPTIVE;
+        this.maxDepth = adaptive ? sampling.adaptive().depth() : 0;
+        this.threshold = sampling.adaptive().threshold();
         this.perPixel = pointsPerPixel(adaptive, maxDepth);
-        this.side = tileSize(adaptive, maxDepth) * perPixel + 1;
+        this.side = tileSize * perPixel + 1;
         cr = new double[side * side];
         cg = new double[side * side];
         cb = new double[side * side];
@@ -70,6 +70,19 @@ final class LatticeSampler implements PixelSampler {
     }
 
     /**
+     * The most camera rays a pixel takes: CORNERS' five points (the centre and the corners), or
+     * ADAPTIVE's whole lattice of (R + 1)² points, every square split down to the deepest level.
+     * With a lens, each point still traces one ray.
+     *
+     * @param maxDepth ADAPTIVE's depth, 0..30 (ignored for CORNERS)
+     */
+    static long maxSamplesPerPixel(boolean adaptive, int maxDepth) {
+        if (!adaptive) return 5;
+        long side = (1L << maxDepth) + 1;
+        return side * side;
+    }
+
+    /**
      * The tile side, in pixels: 64, fewer for lattices above 4 points per pixel side so that the
      * per-tile cache stays at most 257² points (2.1 MB). Large tiles matter: the points on a tile's
      * border are traced again by the neighbouring tile, about 2/side of the one-ray-per-pixel base.
@@ -79,7 +92,7 @@ final class LatticeSampler implements PixelSampler {
     }
 
     @Override
-    public void beginTile(int x0, int y0, int x1, int y1) {
+    void beginTile(int x0, int y0, int x1, int y1) {
         if (++generation == 0) { // wrapped after 4 billion tiles: start the stamps afresh
             Arrays.fill(stamp, 0);
             generation = 1;
@@ -93,13 +106,13 @@ final class LatticeSampler implements PixelSampler {
         int i = (gy - originY) * side + (gx - originX);
         if (stamp[i] != generation) {
             SampleStream rnd = ctx.random;
-            rnd.reset(camera.seed(), gx, gy, -perPixel);
+            rnd.reset(seed, gx, gy, -perPixel);
             Rgb c;
             if (adaptive) { // jittered within its cell of the lattice: see the class comment
                 double jx = rnd.nextDouble() - 0.5, jy = rnd.nextDouble() - 0.5;
-                c = camera.trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
+                c = trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
             } else {
-                c = camera.trace((double) gx / perPixel, (double) gy / perPixel, ctx);
+                c = trace((double) gx / perPixel, (double) gy / perPixel, ctx);
             }
             cr[i] = c.r();
             cg[i] = c.g();
@@ -110,7 +123,7 @@ final class LatticeSampler implements PixelSampler {
     }
 
     @Override
-    public Rgb sample(int x, int y, TraceContext ctx) {
+    Rgb sample(int x, int y, TraceContext ctx) {
         int gx = x * perPixel, gy = y * perPixel;
         if (!adaptive) {
             int m = point(gx + 1, gy + 1, ctx);

@@ -48,16 +48,12 @@ public class RayTracerBasic extends RayTracerBase {
 
     /**
      * The shading over the scene as the last prepare() took it (the BVH or the flat list, the
-     * lights, these settings); null before, and after a setting changed.
+     * lights, these settings); null before the first.
      */
     private volatile WhittedShader shader;
-    /** What the prepared state was made from, to notice a scene changed between direct calls. */
-    private Object preparedGeometries;
-    private int preparedItems = -1;
-    private int preparedLights = -1;
     /** Scratch for calls of {@link #traceRay(Ray)} made outside a render, one per calling thread. */
     private final ThreadLocal<TraceContext> directContexts =
-            ThreadLocal.withInitial(() -> new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K));
+            ThreadLocal.withInitial(this::newContext);
 
     /**
      * A tracer with the defaults: the BVH on, beams of 16 rays, 16 shadow samples for lights with
@@ -78,7 +74,7 @@ public class RayTracerBasic extends RayTracerBase {
      */
     public RayTracerBasic setBvh(boolean on) {
         this.useBvh = on;
-        this.shader = null;
+        forgetPreparation();
         return this;
     }
 
@@ -97,7 +93,7 @@ public class RayTracerBasic extends RayTracerBase {
     public RayTracerBasic setBeamSize(int rays) {
         if (rays < 1) throw new IllegalArgumentException("beam size must be at least 1 ray, got " + rays);
         this.beamSize = rays;
-        this.shader = null;
+        forgetPreparation();
         return this;
     }
 
@@ -112,7 +108,7 @@ public class RayTracerBasic extends RayTracerBase {
     public RayTracerBasic setShadowSamples(int samples) {
         if (samples < 1) throw new IllegalArgumentException("shadow samples must be at least 1, got " + samples);
         this.shadowSamples = samples;
-        this.shader = null;
+        forgetPreparation();
         return this;
     }
 
@@ -141,22 +137,18 @@ public class RayTracerBasic extends RayTracerBase {
     synchronized void prepare() {
         scene.geometries.requireNestingWithinLimit(); // the flat walk recurses once per level
         for (LightSource light : scene.lights) light.validate();
-        preparedGeometries = scene.geometries;
-        preparedItems = scene.geometries.getItems().size();
-        preparedLights = scene.lights.size();
         Intersectable world = useBvh ? Bvh.of(scene.geometries) : scene.geometries;
         shader = new WhittedShader(scene, world, scene.lights.toArray(new LightSource[0]), beamSize, shadowSamples);
     }
 
-    /**
-     * Prepares for a call outside a render: on first use, after a setting changed, and when the
-     * scene's geometry list, its number of items or its number of lights changed since (a render
-     * always prepares again, so it also sees shapes added deep inside nested {@code Geometries}).
-     */
-    private synchronized void prepareForDirectCall() {
-        if (shader == null || preparedGeometries != scene.geometries
-                || preparedItems != scene.geometries.getItems().size() || preparedLights != scene.lights.size())
-            prepare();
+    @Override
+    TraceContext newContext() {
+        return new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K);
+    }
+
+    @Override
+    void requireRayBudget(AntiAliasing mode, long cameraRays) {
+        RayBudget.require(mode, cameraRays, beamSize, shadowSamples);
     }
 
     @Override
@@ -171,7 +163,7 @@ public class RayTracerBasic extends RayTracerBase {
      */
     @Override
     public Color traceRay(Ray ray) {
-        prepareForDirectCall();
+        prepareIfChanged();
         TraceContext ctx = directContexts.get();
         Point h = ray.getHead();
         Vector d = ray.getDirection();
