@@ -43,7 +43,7 @@ public final class CourseClassGuard {
             "renderer.PixelSampler", "renderer.Progress", "renderer.RayBudget", "renderer.RayTracerBase", "renderer.RayTracerBasic",
             "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
             "renderer.RenderStats", "renderer.SampleStream", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
-            "renderer.TraceContext", "renderer.Transmittance");
+            "renderer.TraceContext", "renderer.Transmittance", "renderer.View");
 
     private CourseClassGuard() {
     }

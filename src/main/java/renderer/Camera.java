@@ -36,13 +36,9 @@ public final class Camera {
      */
     public static final int MAX_SAMPLES_PER_PIXEL = 1 << 16;
 
-    // View. Units are scene units; vTo, vUp and vRight are unit length and mutually orthogonal.
-    private final Point location;
-    private final Vector vTo;
-    private final Vector vUp;
-    private final Vector vRight;
-    /** View-plane width and height, and its distance from the location along vTo. */
-    private final double vpWidth, vpHeight, vpDistance;
+    private final View view;
+    /** The view's camera rays, their per-ray constants computed once. */
+    private final View.CameraRays cameraRays;
 
     private final ImageWriter imageWriter;
     /** Whether the camera made its writer from a resolution (not given one to share). */
@@ -54,8 +50,6 @@ public final class Camera {
     private final int gridColumns, gridRows; // RANDOM
     private final int adaptiveDepth; // ADAPTIVE: sub-pixels down to 1/2^depth of the pixel side
     private final double adaptiveThreshold; // ADAPTIVE: colour distance on the 0..255 scale
-    /** Thin lens: 0 aperture is a pinhole; the focal plane is focalDistance along vTo. */
-    private final double focalDistance, aperture;
     private final int lensSamples; // rays per pixel with depth of field and NONE
     private final long seed;
 
@@ -66,22 +60,10 @@ public final class Camera {
     private final PrintStream output;
     /** Told of each finished render (a test's report, for example); by default nobody. */
     private final BiConsumer<? super Camera, ? super RenderStats> renderListener;
-    // Per camera ray these are constants: computed once here, by the very operations the ray
-    // used to repeat (so the rays keep their bits), off the path of every camera ray: two of
-    // them are divisions.
-    /** The view plane's centre, location + vTo·vpDistance. */
-    private final double centreX, centreY, centreZ;
-    /** A pixel's width and height on the view plane, and half the image's width and height in pixels. */
-    private final double pixelWidth, pixelHeight, halfNx, halfNy;
 
-    private Camera(Builder b, Vector vTo, Vector vUp, ImageWriter imageWriter, RayTracerBase rayTracer) {
-        location = b.location;
-        this.vTo = vTo;
-        this.vUp = vUp;
-        this.vRight = vTo.crossProduct(vUp).normalize();
-        vpWidth = b.vpWidth;
-        vpHeight = b.vpHeight;
-        vpDistance = b.vpDistance;
+    private Camera(Builder b, View view, ImageWriter imageWriter, RayTracerBase rayTracer) {
+        this.view = view;
+        this.cameraRays = view.cameraRays();
         this.imageWriter = imageWriter;
         ownWriter = b.imageWriter == null;
         this.rayTracer = rayTracer;
@@ -90,8 +72,6 @@ public final class Camera {
         gridRows = b.gridRows;
         adaptiveDepth = b.adaptiveDepth;
         adaptiveThreshold = b.adaptiveThreshold;
-        focalDistance = b.focalDistance;
-        aperture = b.aperture;
         lensSamples = b.lensSamples;
         seed = b.seed;
         threads = b.threads < 0 ? Runtime.getRuntime().availableProcessors() : b.threads; // -1, -2: all cores
@@ -99,14 +79,6 @@ public final class Camera {
         summary = b.summary;
         output = b.output;
         renderListener = b.renderListener;
-        centreX = location.getX() + vTo.getX() * vpDistance;
-        centreY = location.getY() + vTo.getY() * vpDistance;
-        centreZ = location.getZ() + vTo.getZ() * vpDistance;
-        int nX = imageWriter.getNx(), nY = imageWriter.getNy();
-        pixelWidth = vpWidth / nX;
-        pixelHeight = vpHeight / nY;
-        halfNx = nX / 2.0;
-        halfNy = nY / 2.0;
     }
 
     /**
@@ -136,22 +108,22 @@ public final class Camera {
 
     /** @return where the camera stands: the rays' common head (the lens centre with depth of field) */
     public Point getLocation() {
-        return location;
+        return view.location();
     }
 
     /** @return the unit view direction, through the view plane's centre */
     public Vector getVTo() {
-        return vTo;
+        return view.frame().to();
     }
 
     /** @return the image's unit up direction, orthogonal to {@link #getVTo()} */
     public Vector getVUp() {
-        return vUp;
+        return view.frame().up();
     }
 
     /** @return the image's unit right direction: vTo × vUp */
     public Vector getVRight() {
-        return vRight;
+        return view.frame().right();
     }
 
     /**
@@ -175,10 +147,7 @@ public final class Camera {
      * @throws IllegalArgumentException for a non-positive resolution or a pixel outside it
      */
     public Ray constructRay(int nX, int nY, int j, int i) {
-        if (nX <= 0 || nY <= 0) throw new IllegalArgumentException("resolution must be positive, got " + nX + "x" + nY);
-        if (j < 0 || j >= nX || i < 0 || i >= nY)
-            throw new IllegalArgumentException("pixel (" + j + "," + i + ") is outside the " + nX + "x" + nY + " view plane");
-        return pinholeRay((j - (nX - 1) / 2.0) * (vpWidth / nX), -(i - (nY - 1) / 2.0) * (vpHeight / nY));
+        return view.constructRay(nX, nY, j, i);
     }
 
     /**
@@ -195,76 +164,22 @@ public final class Camera {
     }
 
     /**
-     * The ray through the view-plane point at (xOffset, yOffset) from the plane's centre, along
-     * vRight and vUp. Operations are in the course's order so that pixel centres give exactly
-     * the rays of {@link #constructRay}.
-     */
-    private Ray pinholeRay(double xOffset, double yOffset) {
-        double[] d = new double[3];
-        viewPlaneDirection(xOffset, yOffset, d);
-        return new Ray(location, new Vector(d[0], d[1], d[2]));
-    }
-
-    /**
-     * The unit direction from the location through the view-plane point at (xOffset, yOffset),
-     * written into {@code out[0..2]}: the one computation behind {@link #constructRay} and the
-     * render's camera rays.
-     */
-    private void viewPlaneDirection(double xOffset, double yOffset, double[] out) {
-        double px = centreX, py = centreY, pz = centreZ;
-        if (xOffset != 0) {
-            px += vRight.getX() * xOffset;
-            py += vRight.getY() * xOffset;
-            pz += vRight.getZ() * xOffset;
-        }
-        if (yOffset != 0) {
-            px += vUp.getX() * yOffset;
-            py += vUp.getY() * yOffset;
-            pz += vUp.getZ() * yOffset;
-        }
-        double dx = px - location.getX(), dy = py - location.getY(), dz = pz - location.getZ();
-        double inv = 1 / Math.sqrt(dx * dx + dy * dy + dz * dz);
-        out[0] = dx * inv;
-        out[1] = dy * inv;
-        out[2] = dz * inv;
-    }
-
-    /**
      * Traces the camera ray through image point (px, py), in pixels from the image's top-left
      * corner (pixel (x, y)'s centre is (x + 0.5, y + 0.5)), and leaves the colour seen in
-     * {@code ctx.r, ctx.g, ctx.b}. The ray is written into {@link TraceContext#cameraRay()} as
-     * doubles: no object per ray. With depth of field, the lens point is drawn from
+     * {@code ctx.r, ctx.g, ctx.b}. With depth of field, the lens point is drawn from
      * {@code ctx.random}, which the sampler has positioned for this sample.
      */
     void trace(double px, double py, TraceContext ctx) {
-        double xOffset = (px - halfNx) * pixelWidth;
-        double yOffset = -(py - halfNy) * pixelHeight;
         ctx.cameraRays++;
-        double[] d = ctx.vector;
-        viewPlaneDirection(xOffset, yOffset, d);
-        if (aperture == 0) {
-            // new Ray(location, direction): the direction goes through the same normalization.
-            ctx.cameraRay().setRay(location.getX(), location.getY(), location.getZ(), d[0], d[1], d[2]);
-            rayTracer.traceRay(ctx);
-            return;
-        }
-        // Thin lens: every ray through the lens meets the pinhole ray where it crosses the focal plane.
-        double t = focalDistance / (d[0] * vTo.getX() + d[1] * vTo.getY() + d[2] * vTo.getZ());
-        double fx = location.getX() + d[0] * t, fy = location.getY() + d[1] * t, fz = location.getZ() + d[2] * t;
-        double r = aperture * Math.sqrt(ctx.random.nextDouble());
-        double a = 2 * Math.PI * ctx.random.nextDouble();
-        double lu = r * Math.cos(a), lv = r * Math.sin(a);
-        double lx = location.getX() + vRight.getX() * lu + vUp.getX() * lv;
-        double ly = location.getY() + vRight.getY() * lu + vUp.getY() * lv;
-        double lz = location.getZ() + vRight.getZ() * lu + vUp.getZ() * lv;
-        ctx.cameraRay().setRay(lx, ly, lz, fx - lx, fy - ly, fz - lz);
+        if (cameraRays.hasLens()) cameraRays.generate(px, py, ctx.random.nextDouble(), ctx.random.nextDouble(), ctx);
+        else cameraRays.generate(px, py, 0, 0, ctx);
         rayTracer.traceRay(ctx);
     }
 
     /** A new sampler (one per worker) for this camera's anti-aliasing settings. */
     PixelSampler newSampler() {
         return switch (antiAliasing) {
-            case NONE -> new CenterSampler(this, aperture == 0 ? 1 : lensSamples);
+            case NONE -> new CenterSampler(this, view.lens().isPinhole() ? 1 : lensSamples);
             case RANDOM -> new GridSampler(this, gridColumns, gridRows);
             case CORNERS -> new LatticeSampler(this, false, 0, 0);
             case ADAPTIVE -> new LatticeSampler(this, true, adaptiveDepth, adaptiveThreshold);
@@ -292,7 +207,7 @@ public final class Camera {
      * @throws IllegalArgumentException naming the factors and their product when it is over
      */
     void requireRayBudget() {
-        requireRayBudget(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture, lensSamples, rayTracer);
+        requireRayBudget(antiAliasing, gridColumns, gridRows, adaptiveDepth, view.lens().aperture(), lensSamples, rayTracer);
     }
 
     private static void requireRayBudget(AntiAliasing antiAliasing, int gridColumns, int gridRows, int adaptiveDepth,
@@ -390,7 +305,8 @@ public final class Camera {
             case CORNERS -> "CORNERS";
             case ADAPTIVE -> "ADAPTIVE depth " + adaptiveDepth + " threshold " + adaptiveThreshold;
         };
-        String dof = aperture == 0 ? "" : ", DOF focal " + focalDistance + " aperture " + aperture
+        View.Lens lens = view.lens();
+        String dof = lens.isPinhole() ? "" : ", DOF focal " + lens.focalDistance() + " aperture " + lens.aperture()
                 + (antiAliasing == AntiAliasing.NONE ? " x" + lensSamples : "");
         return aa + dof + ", " + rayTracer.describe() + ", seed " + seed;
     }
@@ -496,12 +412,13 @@ public final class Camera {
         public Builder(Camera camera) {
             this();
             Objects.requireNonNull(camera, "camera to copy");
-            location = camera.location;
-            to = camera.vTo;
-            up = camera.vUp;
-            vpWidth = camera.vpWidth;
-            vpHeight = camera.vpHeight;
-            vpDistance = camera.vpDistance;
+            View view = camera.view;
+            location = view.location();
+            to = view.frame().to();
+            up = view.frame().up();
+            vpWidth = view.plane().width();
+            vpHeight = view.plane().height();
+            vpDistance = view.plane().distance();
             vpSizeSet = vpDistanceSet = true;
             nX = camera.imageWriter.getNx();
             nY = camera.imageWriter.getNy();
@@ -512,8 +429,8 @@ public final class Camera {
             gridRows = camera.gridRows;
             adaptiveDepth = camera.adaptiveDepth;
             adaptiveThreshold = camera.adaptiveThreshold;
-            focalDistance = camera.focalDistance;
-            aperture = camera.aperture;
+            focalDistance = view.lens().focalDistance();
+            aperture = view.lens().aperture();
             lensSamples = camera.lensSamples;
             seed = camera.seed;
             threads = camera.threads;
@@ -845,6 +762,32 @@ public final class Camera {
         }
 
         /**
+         * Checks the view settings alone and returns the {@link View} they make, without an image
+         * or a tracer: what a scene file's camera element is checked with. The checks and
+         * messages are {@link #build()}'s, in the same order.
+         *
+         * @return the view of the current settings (the resolution is the image writer's, or the
+         *         one set, 1×1 by default)
+         * @throws MissingResourceException naming the location or direction when it is missing
+         * @throws IllegalArgumentException when the view plane's size or distance is missing,
+         *                                  when it or the resolution is not positive (naming the
+         *                                  value), or when a target is the location or lies along
+         *                                  the up direction from it
+         */
+        public View buildView() {
+            final String missing = "Missing rendering data";
+            final String camera = "Camera";
+            if (location == null) throw new MissingResourceException(missing + ": location", camera, "location");
+            if (to == null && target == null) throw new MissingResourceException(missing + ": direction", camera, "direction");
+            if (!vpSizeSet) throw new IllegalArgumentException(missing + ": view plane size (setVpSize)");
+            View.ViewPlane.requireSize(vpWidth, vpHeight);
+            if (!vpDistanceSet) throw new IllegalArgumentException(missing + ": view plane distance (setVpDistance)");
+            View.ViewPlane plane = new View.ViewPlane(vpWidth, vpHeight, vpDistance, nX, nY);
+            View.Frame frame = to != null ? View.Frame.of(to, up) : View.Frame.lookingAt(location, target, up);
+            return new View(location, frame, plane, new View.Lens(aperture, focalDistance));
+        }
+
+        /**
          * Checks the settings and makes the camera, with a 1×1 image and a
          * {@link SimpleRayTracer} on an empty scene when none were given.
          *
@@ -859,37 +802,12 @@ public final class Camera {
          *                                  naming them)
          */
         public Camera build() {
-            final String missing = "Missing rendering data";
-            final String camera = "Camera";
-            if (location == null) throw new MissingResourceException(missing + ": location", camera, "location");
-            if (to == null && target == null) throw new MissingResourceException(missing + ": direction", camera, "direction");
-            if (!vpSizeSet) throw new IllegalArgumentException(missing + ": view plane size (setVpSize)");
-            Util.requirePositive(vpWidth, "view plane width");
-            Util.requirePositive(vpHeight, "view plane height");
-            if (!vpDistanceSet) throw new IllegalArgumentException(missing + ": view plane distance (setVpDistance)");
-            Util.requirePositive(vpDistance, "view plane distance");
-            if (nX <= 0 || nY <= 0) throw new IllegalArgumentException("resolution must be positive, got " + nX + "x" + nY);
-            Vector vTo, vUp;
-            if (to != null) {
-                vTo = to;
-                vUp = up;
-            } else {
-                if (target.equals(location))
-                    throw new IllegalArgumentException("camera target " + target + " is the camera location");
-                vTo = target.subtract(location).normalize();
-                Vector upHint = up != null ? up : Vector.AXIS_Y;
-                if (Util.isZero(Math.abs(vTo.dotProduct(upHint)) - 1))
-                    throw new IllegalArgumentException("camera target " + target + " seen from " + location
-                            + " lies along the up " + (up != null ? "vector " : "hint +y ") + upHint
-                            + ": no image up can be derived; give an up vector not parallel to the view direction " + vTo);
-                Vector right = vTo.crossProduct(upHint).normalize();
-                vUp = right.crossProduct(vTo).normalize();
-            }
+            View view = buildView();
             RayTracerBase tracer = rayTracer != null ? rayTracer : RayTracerType.SIMPLE.create(new Scene("empty scene"));
             // Before the image is allocated: a refused budget costs no memory.
             requireRayBudget(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture, lensSamples, tracer);
             ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
-            return new Camera(this, vTo, vUp, writer, tracer);
+            return new Camera(this, view, writer, tracer);
         }
     }
 }

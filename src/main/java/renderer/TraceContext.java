@@ -16,8 +16,10 @@ final class TraceContext {
     final ShadowCache shadowCache = new ShadowCache();
     /** Scratch for one point of a disk (soft-shadow light disks, glossy aim disks). */
     final double[] disk = new double[2];
-    /** Scratch for a vector: a camera ray's direction, a cross product. */
+    /** Scratch for a vector: a cross product. */
     final double[] vector = new double[3];
+    /** Scratch for the pinhole direction of the camera ray being made ({@link View.CameraRays}). */
+    final double[] cameraDirection = new double[3];
     /** Scratch for a light's direction at a shaded point. */
     final double[] light = new double[3];
     /** Scratch for a light's intensity at a shaded point. */
