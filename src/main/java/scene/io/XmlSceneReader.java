@@ -55,8 +55,7 @@ import primitives.Ray;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
-import renderer.ImageWriter;
-import renderer.RayTracerBasic;
+import renderer.View;
 import scene.Scene;
 
 /**
@@ -224,7 +223,7 @@ public final class XmlSceneReader {
                 ? image.required("name", IMAGE_NAME) : imageNameOf(root, scene.name));
         if (image != null) settings = image(image, settings);
         if ((part = parts.get("render")) != null) settings = render(part, settings);
-        ViewSpec view = (part = parts.get("camera")) != null ? camera(part, scene) : null;
+        ViewSpec view = (part = parts.get("camera")) != null ? camera(part) : null;
         return new LoadedScene(scene, view, settings, view != null ? null
                 : root.error("the scene has no <camera> (expected a <camera> element inside <scene> to render it)"));
     }
@@ -595,7 +594,7 @@ public final class XmlSceneReader {
      * The camera's view (location, direction, view plane) as the file states it, checked as a
      * camera built from it will check it.
      */
-    private static ViewSpec camera(XmlElement e, Scene scene) throws SceneFormatException {
+    private static ViewSpec camera(XmlElement e) throws SceneFormatException {
         e.allowAttributes(List.of("location", "direction", "up", "target", "vp-size", "vp-distance"));
         noChildren(e);
         Point location = e.required("location", POINT);
@@ -621,12 +620,11 @@ public final class XmlSceneReader {
         double[] size = e.required("vp-size", SIZE);
         ViewSpec view = new ViewSpec(location, direction, size[0], size[1], e.required("vp-distance", POSITIVE));
 
-        // The checks that need every part (target at the location, up along the view) are
-        // Camera.build()'s: a probe runs them with a 1x1 image and a tracer that is never prepared.
-        Camera built;
+        // The checks that need every part (target at the location, up along the view) are the
+        // builder's, which makes the view a camera built from the file will have.
+        View checked;
         try {
-            built = view.applyTo(Camera.getBuilder()).setImageWriter(new ImageWriter("probe", 1, 1))
-                    .setRayTracer(new RayTracerBasic(scene)).build();
+            checked = view.applyTo(Camera.getBuilder()).buildView();
         } catch (IllegalArgumentException ex) {
             throw e.error("invalid <camera>: " + ex.getMessage()
                     + " (expected a target away from the location and an up not along the view direction)", ex);
@@ -634,9 +632,9 @@ public final class XmlSceneReader {
         // The rays through the view plane's centre and quarters: a view plane too near or too
         // small for the location's precision gives them no direction (the zero vector).
         try {
-            built.constructRay(1, 1, 0, 0);
+            checked.constructRay(1, 1, 0, 0);
             for (int i = 0; i < 2; ++i)
-                for (int j = 0; j < 2; ++j) built.constructRay(2, 2, j, i);
+                for (int j = 0; j < 2; ++j) checked.constructRay(2, 2, j, i);
         } catch (IllegalArgumentException ex) {
             throw e.errorAt("vp-distance", "invalid <camera>: no ray through the view plane: " + ex.getMessage()
                     + " (expected a view plane whose distance and size are not lost in the precision of the location)", ex);
