@@ -39,10 +39,10 @@ public final class CourseClassGuard {
             "lighting.PointLight", "lighting.SpotLight",
             "scene.Scene",
             "renderer.AntiAliasing", "renderer.CallingTest", "renderer.Camera", "renderer.CenterSampler",
-            "renderer.GridSampler", "renderer.ImageWriter", "renderer.InFlightFile", "renderer.LatticeSampler",
+            "renderer.Execution", "renderer.GridSampler", "renderer.ImageWriter", "renderer.InFlightFile", "renderer.LatticeSampler",
             "renderer.PixelSampler", "renderer.Progress", "renderer.RayBudget", "renderer.RayTracerBase", "renderer.RayTracerBasic",
             "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
-            "renderer.RenderStats", "renderer.SampleStream", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
+            "renderer.RenderStats", "renderer.SampleStream", "renderer.Sampling", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
             "renderer.TraceContext", "renderer.Transmittance", "renderer.View");
 
     private CourseClassGuard() {

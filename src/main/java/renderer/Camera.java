@@ -18,9 +18,13 @@ import primitives.Vector;
 import scene.Scene;
 
 /**
- * A pinhole (or thin-lens) camera: where it stands, where it looks, its view plane, and how a
- * render samples and runs. Immutable; made by {@link Builder#build()}. The pixel loop itself
- * lives in {@code RenderLoop}, the sampling strategies in the samplers.
+ * A pinhole (or thin-lens) camera: a facade over what it sees ({@link View}), how a render
+ * samples ({@code Sampling}) and runs ({@code Execution}), the tracer that colours each camera
+ * ray and the image writer that receives the pixels. Made by {@link Builder#build()}, which
+ * checks each setting in the value that owns it. Shallowly immutable: its values do not change,
+ * but the tracer stays mutable (a render holds it to the ray budget again and prepares it for
+ * the scene as it is then) and the image writer receives each render's pixels. The pixel loop
+ * itself lives in {@code RenderLoop}, the sampling strategies in the samplers.
  */
 public final class Camera {
     /**
@@ -37,48 +41,26 @@ public final class Camera {
     public static final int MAX_SAMPLES_PER_PIXEL = 1 << 16;
 
     private final View view;
-    /** The view's camera rays, their per-ray constants computed once. */
-    private final View.CameraRays cameraRays;
-
+    private final Sampling sampling;
+    private final Execution execution;
+    private final RayTracerBase rayTracer;
     private final ImageWriter imageWriter;
     /** Whether the camera made its writer from a resolution (not given one to share). */
     private final boolean ownWriter;
-    private final RayTracerBase rayTracer;
-
-    // Sampling.
-    private final AntiAliasing antiAliasing;
-    private final int gridColumns, gridRows; // RANDOM
-    private final int adaptiveDepth; // ADAPTIVE: sub-pixels down to 1/2^depth of the pixel side
-    private final double adaptiveThreshold; // ADAPTIVE: colour distance on the 0..255 scale
-    private final int lensSamples; // rays per pixel with depth of field and NONE
-    private final long seed;
-
-    // Execution.
-    private final int threads; // 0: the calling thread
-    private final double debugPrint; // percent between progress lines; 0: none
+    /** Whether a render prints its one-line summary and a write its line. */
     private final boolean summary;
-    private final PrintStream output;
     /** Told of each finished render (a test's report, for example); by default nobody. */
     private final BiConsumer<? super Camera, ? super RenderStats> renderListener;
 
-    private Camera(Builder b, View view, ImageWriter imageWriter, RayTracerBase rayTracer) {
+    private Camera(Builder b, View view, Sampling sampling, ImageWriter imageWriter, RayTracerBase rayTracer) {
         this.view = view;
-        this.cameraRays = view.cameraRays();
+        this.sampling = sampling;
+        this.execution = b.execution(sampling);
         this.imageWriter = imageWriter;
-        ownWriter = b.imageWriter == null;
+        this.ownWriter = b.imageWriter == null;
         this.rayTracer = rayTracer;
-        antiAliasing = b.antiAliasing;
-        gridColumns = b.gridColumns;
-        gridRows = b.gridRows;
-        adaptiveDepth = b.adaptiveDepth;
-        adaptiveThreshold = b.adaptiveThreshold;
-        lensSamples = b.lensSamples;
-        seed = b.seed;
-        threads = b.threads < 0 ? Runtime.getRuntime().availableProcessors() : b.threads; // -1, -2: all cores
-        debugPrint = b.debugPrint;
-        summary = b.summary;
-        output = b.output;
-        renderListener = b.renderListener;
+        this.summary = b.summary;
+        this.renderListener = b.renderListener;
     }
 
     /**
@@ -163,72 +145,16 @@ public final class Camera {
         return constructRay(imageWriter.getNx(), imageWriter.getNy(), j, i);
     }
 
-    /**
-     * Traces the camera ray through image point (px, py), in pixels from the image's top-left
-     * corner (pixel (x, y)'s centre is (x + 0.5, y + 0.5)), and leaves the colour seen in
-     * {@code ctx.r, ctx.g, ctx.b}. With depth of field, the lens point is drawn from
-     * {@code ctx.random}, which the sampler has positioned for this sample.
-     */
-    void trace(double px, double py, TraceContext ctx) {
-        ctx.cameraRays++;
-        if (cameraRays.hasLens()) cameraRays.generate(px, py, ctx.random.nextDouble(), ctx.random.nextDouble(), ctx);
-        else cameraRays.generate(px, py, 0, 0, ctx);
-        rayTracer.traceRay(ctx);
+    View view() {
+        return view;
     }
 
-    /** A new sampler (one per worker) for this camera's anti-aliasing settings. */
-    PixelSampler newSampler() {
-        return switch (antiAliasing) {
-            case NONE -> new CenterSampler(this, view.lens().isPinhole() ? 1 : lensSamples);
-            case RANDOM -> new GridSampler(this, gridColumns, gridRows);
-            case CORNERS -> new LatticeSampler(this, false, 0, 0);
-            case ADAPTIVE -> new LatticeSampler(this, true, adaptiveDepth, adaptiveThreshold);
-        };
+    Sampling sampling() {
+        return sampling;
     }
 
-    /** The tile side, in pixels, of the render loop for this camera's sampling. */
-    int tileSize() {
-        return switch (antiAliasing) {
-            case NONE, RANDOM -> 16;
-            case CORNERS -> LatticeSampler.tileSize(false, 0);
-            case ADAPTIVE -> LatticeSampler.tileSize(true, adaptiveDepth);
-        };
-    }
-
-    long seed() {
-        return seed;
-    }
-
-    /**
-     * Holds this camera's sampling and its tracer's settings to {@link RayBudget#MAX_RAYS_PER_PIXEL}:
-     * when it is built, and again when a render starts (the tracer's beam size or shadow samples
-     * may have been raised since).
-     *
-     * @throws IllegalArgumentException naming the factors and their product when it is over
-     */
-    void requireRayBudget() {
-        requireRayBudget(antiAliasing, gridColumns, gridRows, adaptiveDepth, view.lens().aperture(), lensSamples, rayTracer);
-    }
-
-    private static void requireRayBudget(AntiAliasing antiAliasing, int gridColumns, int gridRows, int adaptiveDepth,
-                                         double aperture, int lensSamples, RayTracerBase rayTracer) {
-        long cameraRays = RayBudget.cameraRaysPerPixel(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture != 0,
-                lensSamples);
-        if (rayTracer instanceof RayTracerBasic basic)
-            RayBudget.require(antiAliasing, cameraRays, basic.getBeamSize(), basic.getShadowSamples());
-        else RayBudget.require(antiAliasing, cameraRays, 1, 1);
-    }
-
-    int threads() {
-        return threads;
-    }
-
-    double debugPrint() {
-        return debugPrint;
-    }
-
-    PrintStream output() {
-        return output;
+    Execution execution() {
+        return execution;
     }
 
     ImageWriter imageWriter() {
@@ -256,10 +182,10 @@ public final class Camera {
     public RenderStats render() {
         String name = imageLabel();
         RenderEvent event = FlightRecorder.isInitialized() ? new RenderEvent() : null; // see RenderEvent
-        RenderStats stats = new RenderLoop(this, name).run();
-        if (event != null) event.commit(name, imageWriter, antiAliasing, stats);
+        RenderStats stats = new RenderLoop(view, sampling, execution, rayTracer, imageWriter).render(name);
+        if (event != null) event.commit(name, imageWriter, sampling.antiAliasing(), stats);
         renderListener.accept(this, stats);
-        if (summary) output.println("render " + name + " " + imageWriter.getNx() + "x"
+        if (summary) execution.output().println("render " + name + " " + imageWriter.getNx() + "x"
                 + imageWriter.getNy() + " [" + describe() + "]: " + stats);
         return stats;
     }
@@ -294,21 +220,12 @@ public final class Camera {
      * @return a new region renderer over this camera
      */
     public RegionRenderer regionRenderer() {
-        return new RegionRenderer(this);
+        return new RegionRenderer(view, sampling, execution, rayTracer, imageWriter.getImageName());
     }
 
     /** @return the sampling settings in words, for summaries and benchmark tables */
     public String describe() {
-        String aa = switch (antiAliasing) {
-            case NONE -> "NONE";
-            case RANDOM -> "RANDOM " + gridColumns + "x" + gridRows;
-            case CORNERS -> "CORNERS";
-            case ADAPTIVE -> "ADAPTIVE depth " + adaptiveDepth + " threshold " + adaptiveThreshold;
-        };
-        View.Lens lens = view.lens();
-        String dof = lens.isPinhole() ? "" : ", DOF focal " + lens.focalDistance() + " aperture " + lens.aperture()
-                + (antiAliasing == AntiAliasing.NONE ? " x" + lensSamples : "");
-        return aa + dof + ", " + rayTracer.describe() + ", seed " + seed;
+        return sampling.describe(view.lens()) + ", " + rayTracer.describe() + ", seed " + sampling.seed();
     }
 
     /**
@@ -357,7 +274,7 @@ public final class Camera {
     private void write(Path file) {
         long start = System.nanoTime();
         imageWriter.writeToImage(file);
-        if (summary) output.println(String.format(Locale.ROOT, "write %s: %s in %.3f s", imageLabel(),
+        if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", imageLabel(),
                 file.toAbsolutePath(), (System.nanoTime() - start) / 1e9));
     }
 
@@ -379,13 +296,12 @@ public final class Camera {
         private int nX = 1, nY = 1;
         private ImageWriter imageWriter;
         private RayTracerBase rayTracer;
-        private AntiAliasing antiAliasing = AntiAliasing.NONE;
-        private int gridColumns = 4, gridRows = 4;
-        private int adaptiveDepth = 3;
-        private double adaptiveThreshold = 8;
+        private AntiAliasing antiAliasing = Sampling.DEFAULT.antiAliasing();
+        private Sampling.Grid grid = Sampling.DEFAULT.grid();
+        private Sampling.Adaptive adaptive = Sampling.DEFAULT.adaptive();
         private double focalDistance, aperture;
-        private int lensSamples = 16;
-        private long seed;
+        private int lensSamples = Sampling.DEFAULT.lensSamples();
+        private long seed = Sampling.DEFAULT.seed();
         private int threads;
         private double debugPrint;
         private boolean summary = true;
@@ -424,19 +340,18 @@ public final class Camera {
             nY = camera.imageWriter.getNy();
             imageWriter = camera.ownWriter ? null : camera.imageWriter;
             rayTracer = camera.rayTracer;
-            antiAliasing = camera.antiAliasing;
-            gridColumns = camera.gridColumns;
-            gridRows = camera.gridRows;
-            adaptiveDepth = camera.adaptiveDepth;
-            adaptiveThreshold = camera.adaptiveThreshold;
+            Sampling sampling = camera.sampling;
+            antiAliasing = sampling.antiAliasing();
+            grid = sampling.grid();
+            adaptive = sampling.adaptive();
             focalDistance = view.lens().focalDistance();
             aperture = view.lens().aperture();
-            lensSamples = camera.lensSamples;
-            seed = camera.seed;
-            threads = camera.threads;
-            debugPrint = camera.debugPrint;
+            lensSamples = sampling.lensSamples();
+            seed = sampling.seed();
+            threads = camera.execution.threads();
+            debugPrint = camera.execution.progressStep();
             summary = camera.summary;
-            output = camera.output;
+            output = camera.execution.output();
             renderListener = camera.renderListener;
         }
 
@@ -618,13 +533,7 @@ public final class Camera {
          *                                  {@link #MAX_SAMPLES_PER_PIXEL} samples, naming it
          */
         public Builder setAntiAliasingGrid(int columns, int rows) {
-            if (columns < 1 || rows < 1)
-                throw new IllegalArgumentException("anti-aliasing grid must be at least 1x1, got " + columns + "x" + rows);
-            if ((long) columns * rows > MAX_SAMPLES_PER_PIXEL)
-                throw new IllegalArgumentException("anti-aliasing grid " + columns + "x" + rows + " has "
-                        + (long) columns * rows + " samples per pixel, more than the limit of " + MAX_SAMPLES_PER_PIXEL);
-            this.gridColumns = columns;
-            this.gridRows = rows;
+            this.grid = new Sampling.Grid(columns, rows);
             return this;
         }
 
@@ -645,10 +554,7 @@ public final class Camera {
          * @throws IllegalArgumentException when either is out of range, naming it
          */
         public Builder setAdaptive(int maxDepth, double threshold) {
-            if (maxDepth < 1 || maxDepth > 6)
-                throw new IllegalArgumentException("adaptive depth must be in 1..6, got " + maxDepth);
-            this.adaptiveDepth = maxDepth;
-            this.adaptiveThreshold = Util.requireNonNegative(threshold, "adaptive threshold");
+            this.adaptive = new Sampling.Adaptive(maxDepth, threshold);
             return this;
         }
 
@@ -677,9 +583,7 @@ public final class Camera {
          * @throws IllegalArgumentException when it is below 1 or above the limit
          */
         public Builder setDepthOfFieldSamples(int samples) {
-            if (samples < 1 || samples > MAX_SAMPLES_PER_PIXEL)
-                throw new IllegalArgumentException("depth-of-field samples must be from 1 to " + MAX_SAMPLES_PER_PIXEL
-                        + ", got " + samples);
+            Sampling.requireLensSamples(samples);
             this.lensSamples = samples;
             return this;
         }
@@ -720,9 +624,7 @@ public final class Camera {
          * @throws IllegalArgumentException when it is outside [0, 100]
          */
         public Builder setDebugPrint(double percentStep) {
-            if (!(percentStep >= 0 && percentStep <= 100))
-                throw new IllegalArgumentException("progress step must be in [0, 100] percent, got " + percentStep);
-            this.debugPrint = percentStep;
+            this.debugPrint = Progress.requireStep(percentStep);
             return this;
         }
 
@@ -803,11 +705,45 @@ public final class Camera {
          */
         public Camera build() {
             View view = buildView();
-            RayTracerBase tracer = rayTracer != null ? rayTracer : RayTracerType.SIMPLE.create(new Scene("empty scene"));
+            Sampling sampling = sampling();
+            RayTracerBase tracer = tracer();
             // Before the image is allocated: a refused budget costs no memory.
-            requireRayBudget(antiAliasing, gridColumns, gridRows, adaptiveDepth, aperture, lensSamples, tracer);
+            sampling.requireRayBudget(view.lens(), tracer);
             ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
-            return new Camera(this, view, writer, tracer);
+            return new Camera(this, view, sampling, writer, tracer);
+        }
+
+        /**
+         * Checks the settings as {@link #build()} does and makes a renderer of rectangles of the
+         * image, without allocating the image (see {@link Camera#regionRenderer()}): what a
+         * cluster's executor renders its tiles with. It prepares the scene now, once.
+         *
+         * @return a new region renderer over the current settings
+         * @throws MissingResourceException as {@link #build()}
+         * @throws IllegalArgumentException as {@link #build()}
+         */
+        public RegionRenderer buildRegionRenderer() {
+            View view = buildView();
+            Sampling sampling = sampling();
+            RayTracerBase tracer = tracer();
+            sampling.requireRayBudget(view.lens(), tracer);
+            String name = imageWriter != null && imageWriter.hasName() ? imageWriter.getImageName() : "region";
+            return new RegionRenderer(view, sampling, execution(sampling), tracer, name);
+        }
+
+        private Sampling sampling() {
+            return new Sampling(antiAliasing, grid, adaptive, lensSamples, seed);
+        }
+
+        /** The execution of a camera with {@code sampling}, whose tile size it takes. */
+        private Execution execution(Sampling sampling) {
+            int resolved = threads < 0 ? Runtime.getRuntime().availableProcessors() : threads; // -1, -2: all cores
+            return new Execution(resolved, sampling.tileSize(), debugPrint, output);
+        }
+
+        /** The tracer given, or a {@link SimpleRayTracer} on an empty scene. */
+        private RayTracerBase tracer() {
+            return rayTracer != null ? rayTracer : RayTracerType.SIMPLE.create(new Scene("empty scene"));
         }
     }
 }

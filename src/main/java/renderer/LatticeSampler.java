@@ -28,8 +28,7 @@ import java.util.Arrays;
  * +1.3 dB).</li>
  * </ul>
  */
-final class LatticeSampler implements PixelSampler {
-    private final Camera camera;
+final class LatticeSampler extends PixelSampler {
     private final boolean adaptive;
     private final int maxDepth;
     private final double threshold;
@@ -43,18 +42,19 @@ final class LatticeSampler implements PixelSampler {
     private final double[] sum = new double[3]; // the adaptive accumulator, reused per pixel
 
     /**
-     * @param maxDepth  the adaptive subdivision depth (ignored for CORNERS)
-     * @param threshold the spread of a pixel's corners (0..255 scale, per channel, values clamped
-     *                  to 255 as the image stores them) above which it is subdivided; a square of
-     *                  share w of the pixel splits above threshold / w
+     * CORNERS or ADAPTIVE, as {@code sampling} says; ADAPTIVE's threshold is the spread of a
+     * pixel's corners (0..255 scale, per channel, values clamped to 255 as the image stores them)
+     * above which it is subdivided; a square of share w of the pixel splits above threshold / w.
+     *
+     * @param tileSize the render loop's tile side in pixels: the cache covers one tile's lattice
      */
-    LatticeSampler(Camera camera, boolean adaptive, int maxDepth, double threshold) {
-        this.camera = camera;
-        this.adaptive = adaptive;
-        this.maxDepth = adaptive ? maxDepth : 0;
-        this.threshold = threshold;
+    LatticeSampler(Sampling sampling, View.CameraRays rays, RayTracerBase tracer, int tileSize) {
+        super(sampling, rays, tracer);
+        this.adaptive = sampling.antiAliasing() == AntiAliasing.ADAPTIVE;
+        this.maxDepth = adaptive ? sampling.adaptive().depth() : 0;
+        this.threshold = sampling.adaptive().threshold();
         this.perPixel = pointsPerPixel(adaptive, maxDepth);
-        this.side = tileSize(adaptive, maxDepth) * perPixel + 1;
+        this.side = tileSize * perPixel + 1;
         cr = new double[side * side];
         cg = new double[side * side];
         cb = new double[side * side];
@@ -67,6 +67,19 @@ final class LatticeSampler implements PixelSampler {
     }
 
     /**
+     * The most camera rays a pixel takes: CORNERS' five points (the centre and the corners), or
+     * ADAPTIVE's whole lattice of (R + 1)² points, every square split down to the deepest level.
+     * With a lens, each point still traces one ray.
+     *
+     * @param maxDepth ADAPTIVE's depth, 0..30 (ignored for CORNERS)
+     */
+    static long maxSamplesPerPixel(boolean adaptive, int maxDepth) {
+        if (!adaptive) return 5;
+        long side = (1L << maxDepth) + 1;
+        return side * side;
+    }
+
+    /**
      * The tile side, in pixels: 64, fewer for lattices above 4 points per pixel side so that the
      * per-tile cache stays at most 257² points (2.1 MB). Large tiles matter: the points on a tile's
      * border are traced again by the neighbouring tile, about 2/side of the one-ray-per-pixel base.
@@ -76,7 +89,7 @@ final class LatticeSampler implements PixelSampler {
     }
 
     @Override
-    public void beginTile(int x0, int y0, int x1, int y1) {
+    void beginTile(int x0, int y0, int x1, int y1) {
         if (++generation == 0) { // wrapped after 4 billion tiles: start the stamps afresh
             Arrays.fill(stamp, 0);
             generation = 1;
@@ -90,12 +103,12 @@ final class LatticeSampler implements PixelSampler {
         int i = (gy - originY) * side + (gx - originX);
         if (stamp[i] != generation) {
             SampleStream rnd = ctx.random;
-            rnd.reset(camera.seed(), gx, gy, -perPixel);
+            rnd.reset(seed, gx, gy, -perPixel);
             if (adaptive) { // jittered within its cell of the lattice: see the class comment
                 double jx = rnd.nextDouble() - 0.5, jy = rnd.nextDouble() - 0.5;
-                camera.trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
+                trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
             } else {
-                camera.trace((double) gx / perPixel, (double) gy / perPixel, ctx);
+                trace((double) gx / perPixel, (double) gy / perPixel, ctx);
             }
             cr[i] = ctx.r;
             cg[i] = ctx.g;
@@ -106,7 +119,7 @@ final class LatticeSampler implements PixelSampler {
     }
 
     @Override
-    public void sample(int x, int y, TraceContext ctx) {
+    void sample(int x, int y, TraceContext ctx) {
         int gx = x * perPixel, gy = y * perPixel;
         if (!adaptive) {
             int m = point(gx + 1, gy + 1, ctx);

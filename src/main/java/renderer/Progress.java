@@ -42,13 +42,23 @@ public final class Progress {
      */
     public Progress(String label, long total, String unit, double step, PrintStream out) {
         if (total < 1) throw new IllegalArgumentException("progress total must be at least 1, got " + total);
-        if (!(step >= 0 && step <= 100))
-            throw new IllegalArgumentException("progress step must be in [0, 100] percent, got " + step);
+        requireStep(step);
         this.label = Objects.requireNonNull(label, "label");
         this.total = total;
         this.unit = Objects.requireNonNull(unit, "unit");
         this.step = step;
         this.out = Objects.requireNonNull(out, "out");
+    }
+
+    /**
+     * @param step percent between progress lines
+     * @return {@code step}
+     * @throws IllegalArgumentException when it is outside [0, 100] (or NaN), naming it
+     */
+    static double requireStep(double step) {
+        if (!(step >= 0 && step <= 100))
+            throw new IllegalArgumentException("progress step must be in [0, 100] percent, got " + step);
+        return step;
     }
 
     /**

@@ -20,16 +20,17 @@ public final class RayBudget {
     }
 
     /**
-     * The most camera rays one pixel may take: RANDOM's grid (columns × rows), ADAPTIVE's whole
-     * lattice of (2^depth + 1)² points (the worst case: every square split down to the deepest
-     * level; the lattice of pixel x spans points x·2^depth … (x+1)·2^depth on each axis),
-     * CORNERS' five points, or without anti-aliasing the lens samples with depth of field and 1
-     * without.
+     * The most camera rays one pixel may take, by the rule of the sampler that spends them (the
+     * camera's own figure, {@code Sampling.maxSamplesPerPixel}): RANDOM's grid (columns × rows),
+     * ADAPTIVE's whole lattice of (2^depth + 1)² points (the worst case: every square split down
+     * to the deepest level; the lattice of pixel x spans points x·2^depth … (x+1)·2^depth on each
+     * axis), CORNERS' five points, or without anti-aliasing the lens samples with depth of field
+     * and 1 without.
      *
      * @param mode          the anti-aliasing mode
      * @param columns       RANDOM: grid columns
      * @param rows          RANDOM: grid rows
-     * @param adaptiveDepth ADAPTIVE: the deepest subdivision (negative counts as 0)
+     * @param adaptiveDepth ADAPTIVE: the deepest subdivision (negative counts as 0, above 30 as 30)
      * @param depthOfField  whether the camera has a lens (aperture above 0)
      * @param lensSamples   NONE with depth of field: lens samples per pixel
      * @return camera rays per pixel, as a long (a grid of two ints may overflow an int)
@@ -37,13 +38,10 @@ public final class RayBudget {
     public static long cameraRaysPerPixel(AntiAliasing mode, int columns, int rows, int adaptiveDepth,
                                           boolean depthOfField, int lensSamples) {
         return switch (mode) {
-            case RANDOM -> (long) columns * rows;
-            case ADAPTIVE -> {
-                long side = (1L << Math.min(Math.max(adaptiveDepth, 0), 30)) + 1;
-                yield side * side;
-            }
-            case CORNERS -> 5;
-            case NONE -> depthOfField ? lensSamples : 1;
+            case RANDOM -> GridSampler.samplesPerPixel(columns, rows);
+            case ADAPTIVE -> LatticeSampler.maxSamplesPerPixel(true, Math.min(Math.max(adaptiveDepth, 0), 30));
+            case CORNERS -> LatticeSampler.maxSamplesPerPixel(false, 0);
+            case NONE -> CenterSampler.samplesPerPixel(depthOfField, lensSamples);
         };
     }
 

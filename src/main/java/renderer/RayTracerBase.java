@@ -27,11 +27,61 @@ public abstract class RayTracerBase {
      */
     public abstract Color traceRay(Ray ray);
 
+    /** The scene as this tracer was last prepared for it; null before, or after a setting that the preparation depends on changed. */
+    private SceneStamp prepared;
+
     /**
-     * Called once on the render's thread before the workers start: the scene is complete now,
-     * so this is where acceleration structures are built.
+     * Builds what tracing needs from the scene as it is now (acceleration structures, checked
+     * lights). Entered only through {@link #prepareFor}, which holds the tracer's lock.
      */
     void prepare() {
+    }
+
+    /**
+     * The one way into {@link #prepare()}: a render prepares for the scene it stamped as it
+     * started (and compares the stamp at its end), on its own thread before the workers start;
+     * a region renderer once for all its regions; a direct call when the scene changed since.
+     *
+     * @param scene the scene's state now, the one the tracer is prepared for
+     */
+    final synchronized void prepareFor(SceneStamp scene) {
+        prepared = null; // until prepare() succeeds: a failed preparation is tried again
+        prepare();
+        prepared = scene;
+    }
+
+    /**
+     * Prepares for a call outside a render: the first time, and again when the scene's lists,
+     * their shapes or its lights changed since the last preparation ({@link SceneStamp}), or a
+     * setting the preparation depends on did.
+     */
+    final synchronized void prepareIfChanged() {
+        if (prepared == null || prepared.changed()) prepareFor(SceneStamp.of(scene, "a direct traceRay call"));
+    }
+
+    /** Makes the next call outside a render prepare again: a setting the preparation depends on changed. */
+    final synchronized void forgetPreparation() {
+        prepared = null;
+    }
+
+    /**
+     * A worker's scratch state for this tracer: the camera ray's record, the random stream and
+     * what the tracer keeps per thread. One per render thread, never shared.
+     */
+    TraceContext newContext() {
+        return new TraceContext(0, 0);
+    }
+
+    /**
+     * Holds {@code cameraRays} camera rays per pixel, times the rays this tracer may trace per
+     * camera ray, to {@link RayBudget#MAX_RAYS_PER_PIXEL}; a tracer of another kind traces one.
+     *
+     * @param mode       the sampling's anti-aliasing mode, for the message
+     * @param cameraRays the sampling's most camera rays per pixel
+     * @throws IllegalArgumentException naming the factors and their product when it is over
+     */
+    void requireRayBudget(AntiAliasing mode, long cameraRays) {
+        RayBudget.require(mode, cameraRays, 1, 1);
     }
 
     /**

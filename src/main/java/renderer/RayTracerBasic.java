@@ -50,13 +50,9 @@ public class RayTracerBasic extends RayTracerBase {
     /** The scene's geometry as the render queries it (a BVH or the flat list); set by prepare(). */
     private volatile Intersectable world;
     private volatile LightSource[] lights;
-    /** What the prepared state was made from, to notice a scene changed between direct calls. */
-    private Object preparedGeometries;
-    private int preparedItems = -1;
-    private int preparedLights = -1;
     /** Scratch for calls of {@link #traceRay(Ray)} made outside a render, one per calling thread. */
     private final ThreadLocal<TraceContext> directContexts =
-            ThreadLocal.withInitial(() -> new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K));
+            ThreadLocal.withInitial(this::newContext);
 
     /**
      * A tracer with the defaults: the BVH on, beams of 16 rays, 16 shadow samples for lights with
@@ -77,7 +73,7 @@ public class RayTracerBasic extends RayTracerBase {
      */
     public RayTracerBasic setBvh(boolean on) {
         this.useBvh = on;
-        this.world = null;
+        forgetPreparation();
         return this;
     }
 
@@ -138,23 +134,18 @@ public class RayTracerBasic extends RayTracerBase {
     synchronized void prepare() {
         scene.geometries.requireNestingWithinLimit(); // the flat walk recurses once per level
         for (LightSource light : scene.lights) light.validate();
-        preparedGeometries = scene.geometries;
-        preparedItems = scene.geometries.getItems().size();
-        preparedLights = scene.lights.size();
         lights = scene.lights.toArray(new LightSource[0]);
         world = useBvh ? Bvh.of(scene.geometries) : scene.geometries;
     }
 
-    /**
-     * The prepared geometry for a call outside a render: built on first use, and rebuilt when the
-     * scene's geometry list, its number of items or its number of lights changed since (a render
-     * always prepares again, so it also sees shapes added deep inside nested {@code Geometries}).
-     */
-    private synchronized Intersectable preparedForDirectCall() {
-        if (world == null || preparedGeometries != scene.geometries
-                || preparedItems != scene.geometries.getItems().size() || preparedLights != scene.lights.size())
-            prepare();
-        return world;
+    @Override
+    TraceContext newContext() {
+        return new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K);
+    }
+
+    @Override
+    void requireRayBudget(AntiAliasing mode, long cameraRays) {
+        RayBudget.require(mode, cameraRays, beamSize, shadowSamples);
     }
 
     @Override
@@ -169,7 +160,7 @@ public class RayTracerBasic extends RayTracerBase {
      */
     @Override
     public Color traceRay(Ray ray) {
-        preparedForDirectCall();
+        prepareIfChanged();
         TraceContext ctx = directContexts.get();
         Point h = ray.getHead();
         Vector d = ray.getDirection();

@@ -52,6 +52,14 @@ record SceneStamp(Scene scene, Geometries geometries, long changes, List<LightSo
         if (what != null) throw changed(scene, image, what, failure);
     }
 
+    /**
+     * @return whether the scene is no longer as it was: a list replaced or added to (nested
+     *         lists included), a light added, removed or replaced
+     */
+    boolean changed() {
+        return change() != null;
+    }
+
     /** @return what changed, in words, or null */
     private String change() {
         if (scene.geometries != geometries) return "its geometry list was replaced";

@@ -45,29 +45,44 @@ class RegionRendererTest {
         camera(mode, whole, 2).render();
 
         ImageWriter parts = new ImageWriter("parts", NX, NY);
-        RegionRenderer regions = camera(mode, parts, 0).regionRenderer();
+        RegionRenderer regions = camera(mode, new ImageWriter("unused", NX, NY), 0).regionRenderer();
         int[] xs = { 0, 7, 30, 31, NX }, ys = { 0, 13, 22, NY };
         for (int j = 0; j + 1 < ys.length; ++j)
             for (int i = 0; i + 1 < xs.length; ++i) {
-                RenderStats stats = regions.render(xs[i], ys[j], xs[i + 1], ys[j + 1]);
-                assertThat(stats.pixels()).isEqualTo((long) (xs[i + 1] - xs[i]) * (ys[j + 1] - ys[j]));
+                int w = xs[i + 1] - xs[i], h = ys[j + 1] - ys[j];
+                RegionRenderer.Pixels p = regions.render(xs[i], ys[j], xs[i + 1], ys[j + 1]);
+                assertThat(p.stats().pixels()).isEqualTo((long) w * h);
+                assertThat(p.rgb()).hasSize(w * h);
+                parts.writeTile(xs[i], ys[j], w, h, p.rgb());
             }
         assertThat(Pixels.of(parts)).isEqualTo(Pixels.of(whole));
     }
 
     @Test
-    @DisplayName("a rectangle leaves the pixels outside it untouched")
+    @DisplayName("a rectangle's pixels come back row by row; the camera's image is not written")
     void onlyTheRectangle() {
+        ImageWriter whole = new ImageWriter("whole", NX, NY);
+        camera(b -> b, whole, 0).render();
         ImageWriter image = new ImageWriter("region", NX, NY);
-        camera(b -> b, image, 0).regionRenderer().render(10, 5, 20, 9);
-        int rendered = 0;
-        for (int y = 0; y < NY; ++y)
-            for (int x = 0; x < NX; ++x) {
-                boolean inside = x >= 10 && x < 20 && y >= 5 && y < 9;
-                if (!inside) assertThat(image.getRgb(x, y)).as("pixel (%d,%d)", x, y).isZero();
-                else if (image.getRgb(x, y) != 0) ++rendered;
-            }
-        assertThat(rendered).as("rendered pixels inside").isPositive();
+        int[] rgb = camera(b -> b, image, 0).regionRenderer().render(10, 5, 20, 9).rgb();
+        for (int y = 5; y < 9; ++y)
+            for (int x = 10; x < 20; ++x)
+                assertThat(rgb[(y - 5) * 10 + (x - 10)]).as("pixel (%d,%d)", x, y).isEqualTo(whole.getRgb(x, y));
+        assertThat(Pixels.of(image)).as("the camera's image").containsOnly(0);
+    }
+
+    @Test
+    @DisplayName("the builder's region renderer allocates no image: a 40000x40000 frame renders a tile")
+    void withoutAnImage() {
+        Camera.Builder builder = TestScenes.camera(TestScenes.everyEffect(), new ImageWriter("whole", NX, NY)).setSeed(5);
+        Camera camera = builder.build();
+        camera.render();
+        ImageWriter whole = camera.getImageWriter();
+        int[] rgb = builder.setResolution(NX, NY).buildRegionRenderer().render(4, 6, 7, 8).rgb();
+        assertThat(rgb).containsExactly(whole.getRgb(4, 6), whole.getRgb(5, 6), whole.getRgb(6, 6),
+                whole.getRgb(4, 7), whole.getRgb(5, 7), whole.getRgb(6, 7));
+        // 6.4 GB as an image: more than the test JVM's heap.
+        assertThat(builder.setResolution(40_000, 40_000).buildRegionRenderer().render(0, 0, 3, 2).rgb()).hasSize(6);
     }
 
     @Test

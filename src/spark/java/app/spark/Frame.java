@@ -3,8 +3,8 @@ package app.spark;
 import java.io.IOException;
 import java.io.Serializable;
 
-import renderer.Camera;
 import renderer.ImageWriter;
+import renderer.RegionRenderer;
 import scene.io.LoadedScene;
 import scene.io.RenderSettings;
 import scene.io.SceneFormatException;
@@ -19,20 +19,23 @@ import scene.io.SceneFormatException;
  */
 record Frame(SceneFiles files, RenderSettings settings) implements Serializable {
     /**
-     * Parses the scene and builds the camera an executor renders tiles with: the driver's
-     * settings, the calling thread only, no progress lines and no summary.
+     * Parses the scene and builds the renderer an executor renders tiles with: the driver's
+     * settings, the calling thread only, no progress lines; it prepares the scene once and
+     * allocates no image (a tile's pixels come back on their own).
      *
-     * @param image the camera's pixel buffer, of the frame's size: region renders write there
-     * @return the built camera
+     * @return the region renderer
      *
      * @throws IllegalStateException when the captured files no longer make a valid scene, which
      *                               the driver's validation rules out
      */
-    Camera executorCamera(ImageWriter image) {
+    RegionRenderer executorRenderer() {
         try {
             LoadedScene loaded = files.load();
-            return settings.withThreads(0).applyTo(loaded.requireView(), loaded.scene(), image)
-                    .setDebugPrint(0).setSummary(false).build();
+            // applyTo wants an image writer; a 1x1 one stands in, and the resolution set after it
+            // replaces it, so that the builder makes only the region renderer, no image.
+            return settings.withThreads(0).applyTo(loaded.requireView(), loaded.scene(), new ImageWriter(1, 1))
+                    .setResolution(settings.width(), settings.height()).setDebugPrint(0).setSummary(false)
+                    .buildRegionRenderer();
         } catch (IOException | SceneFormatException e) {
             throw new IllegalStateException("the scene " + files.scene() + " the driver validated fails on the executor: "
                     + e.getMessage(), e);
