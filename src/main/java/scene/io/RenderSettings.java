@@ -3,6 +3,7 @@ package scene.io;
 import java.io.IOException;
 import java.io.InvalidObjectException;
 import java.io.ObjectInputStream;
+import java.util.Arrays;
 import java.util.Locale;
 import java.util.Objects;
 import java.util.StringJoiner;
@@ -45,11 +46,10 @@ public final class RenderSettings implements java.io.Serializable {
     /** The course's grid colour (java.awt.Color.YELLOW), when a grid's colour is not stated. */
     public static final Color DEFAULT_GRID_COLOR = new Color(255, 255, 0);
     /**
-     * The most pixels an image can have: {@link ImageWriter} keeps them in one {@code int} array,
-     * and JVMs allocate arrays of at most {@code Integer.MAX_VALUE - 8} elements (ImageWriter's own
-     * limit, checked here without allocating).
+     * The most pixels an image can have, {@link ImageWriter#MAX_PIXELS}: the library's limit,
+     * checked here when a size is stated, without allocating.
      */
-    public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
+    public static final long MAX_PIXELS = ImageWriter.MAX_PIXELS;
     /**
      * The ray budget of one pixel, {@link RayBudget#MAX_RAYS_PER_PIXEL}: the library's limit,
      * which {@code Camera.Builder.build()} holds every camera to; named here for the scene
@@ -475,7 +475,9 @@ public final class RenderSettings implements java.io.Serializable {
 
     /**
      * Checks this specification against the library's ray budget, as {@code Camera.Builder.build()}
-     * will when it is replayed: the stated values over the library's defaults.
+     * will when it is replayed: the stated values over the library's defaults. The library checks
+     * the budget when it builds a camera, so one is built, with a stand-in view (the budget does
+     * not depend on it but on the lens, which is stated or the builder's) and a 1×1 image.
      *
      * @return this specification
      * @throws IllegalArgumentException for a stated value the camera or the tracer refuses, or
@@ -528,12 +530,12 @@ public final class RenderSettings implements java.io.Serializable {
     /** Equal when both state the same values (a value stated as its default is still stated). */
     @Override
     public boolean equals(Object o) {
-        return o instanceof RenderSettings other && java.util.Arrays.equals(values(), other.values());
+        return o instanceof RenderSettings other && Arrays.equals(values(), other.values());
     }
 
     @Override
     public int hashCode() {
-        return java.util.Arrays.hashCode(values());
+        return Arrays.hashCode(values());
     }
 
     /** @return the stated values, by name: {@code RenderSettings[image=x 40x20, antiAliasing=RANDOM]} */
