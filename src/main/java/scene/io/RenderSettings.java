@@ -37,6 +37,8 @@ import scene.Scene;
  *
  * <p>Immutable: each {@code with…} method states its values on a copy. Serializable (a deserialized
  * copy is checked again): a cluster's driver sends the specification it resolved to its executors.
+ *
+ * @serial exclude
  */
 public final class RenderSettings implements java.io.Serializable {
     private static final long serialVersionUID = 2L;
@@ -65,8 +67,8 @@ public final class RenderSettings implements java.io.Serializable {
      * specification that states one of the two: the builder takes them together and does not
      * tell its own. {@code RenderSettingsTest} holds them equal to the builder's.
      */
-    static final int ADAPTIVE_DEPTH = 3;
-    static final double ADAPTIVE_THRESHOLD = 8;
+    private static final int ADAPTIVE_DEPTH = 3;
+    private static final double ADAPTIVE_THRESHOLD = 8;
 
     // Each field is null when the specification does not state it.
     // The image: its name (images/<name>.png), size in pixels (stated together) and grid.

@@ -61,7 +61,8 @@ import scene.Scene;
 /**
  * Reads a scene file (the format is described in docs/scene-format.md) into a {@link Scene} and
  * the specification of its render as the file states it: the view and the {@link RenderSettings},
- * which are replayed onto a camera builder when a camera is asked for ({@link LoadedScene}). The course's scene files read unchanged:
+ * replayed onto a camera builder when a camera is asked for ({@link LoadedScene}). The course's
+ * scene files read unchanged:
  * {@code <scene background-color="75 127 90"><ambient-light color="255 191 191"/><geometries>
  * <sphere center="0 0 -100" radius="50"/>…}.
  *
