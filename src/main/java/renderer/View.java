@@ -19,7 +19,11 @@ import primitives.Vector;
  */
 public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
     /**
-     * @throws NullPointerException naming the missing part
+     * @param location the camera's position
+     * @param frame    its directions
+     * @param plane    its view plane and resolution
+     * @param lens     its lens
+     * @throws NullPointerException naming a missing part
      */
     public View {
         Objects.requireNonNull(location, "camera location");
@@ -38,6 +42,9 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
      */
     public record Frame(Vector to, Vector up, Vector right) {
         /**
+         * @param to    the view direction
+         * @param up    the image's up direction
+         * @param right the image's right direction
          * @throws IllegalArgumentException when the three are not unit length, orthogonal and
          *                                  right-handed, naming them
          */
@@ -100,8 +107,13 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
      */
     public record ViewPlane(double width, double height, double distance, int nX, int nY) {
         /**
+         * @param width    the width
+         * @param height   the height
+         * @param distance the distance from the location
+         * @param nX       pixel columns
+         * @param nY       pixel rows
          * @throws IllegalArgumentException when a size, the distance or the resolution is not
-         *                                  positive, naming it (in that order)
+         *                                  positive, naming it (checked in the builder's order)
          */
         public ViewPlane {
             requireSize(width, height);
@@ -133,8 +145,10 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
         public static final Lens PINHOLE = new Lens(0, 0);
 
         /**
-         * @throws IllegalArgumentException for a negative or infinite value, or a lens with an
-         *                                  aperture and no positive focal distance, naming it
+         * @param aperture      the lens radius
+         * @param focalDistance the distance of the sharp plane
+         * @throws IllegalArgumentException for a negative or infinite value, or an aperture
+         *                                  without a positive focal distance, naming it
          */
         public Lens {
             Util.requireNonNegative(aperture, "aperture radius");
