@@ -26,6 +26,11 @@ import primitives.CourseClassGuard;
 public class ImageWriter {
     /** Where images go, relative to the working directory (the project root in tests). */
     public static final Path IMAGES = Path.of("images");
+    /**
+     * The most pixels an image can have: they are kept in one {@code int} array, and JVMs allocate
+     * arrays of at most {@code Integer.MAX_VALUE - 8} elements.
+     */
+    public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
 
     private final String imageName;
     private final int nX;
@@ -63,7 +68,7 @@ public class ImageWriter {
         CourseClassGuard.check();
         if (nX <= 0 || nY <= 0)
             throw new IllegalArgumentException("image size must be positive, got " + nX + "x" + nY);
-        if ((long) nX * nY > Integer.MAX_VALUE - 8)
+        if ((long) nX * nY > MAX_PIXELS)
             throw new IllegalArgumentException("image size " + nX + "x" + nY + " has too many pixels");
         this.imageName = imageName;
         this.nX = nX;

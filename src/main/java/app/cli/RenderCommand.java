@@ -328,32 +328,47 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     /**
-     * The file's settings with the command line's overrides.
+     * The file's settings, then the command line's options, a second specification replayed after
+     * the file's (see {@link #options(RenderSettings)}).
      *
-     * @throws ParameterException for a size with too many pixels
+     * @throws ParameterException for a size with too many pixels, or an {@code --aa} that takes
+     *                            the file's values over the ray budget
      */
-    RenderSettings override(RenderSettings s) {
-        if (width != null || height != null) {
-            // One side alone keeps the file's aspect ratio, so the view plane is not stretched.
-            int w = width != null ? width : otherSide("--height", height, s.height(), s.width());
-            int h = height != null ? height : otherSide("--width", width, s.width(), s.height());
-            try {
-                s = s.withImage(s.imageName(), w, h);
-            } catch (IllegalArgumentException e) {
-                String options = width == null ? "--height" : height == null ? "--width" : "--width/--height";
-                throw usage(options + ": " + e.getMessage());
-            }
-        }
-        if (threads != null) s = s.withThreads(threads);
+    RenderSettings override(RenderSettings file) {
+        RenderSettings settings = file.then(options(file));
         if (antiAliasing != null) {
             try {
-                s = s.withAntiAliasing(antiAliasing);
+                settings.requireRayBudget();
             } catch (IllegalArgumentException e) { // the file's grid or depth, now used, exceeds the ray budget
                 throw usage("--aa " + antiAliasing + ": " + e.getMessage());
             }
         }
-        if (seed != null) s = s.withSeed(seed);
-        return s;
+        return settings;
+    }
+
+    /**
+     * The options as a specification: only the values they state.
+     *
+     * @param file the file's settings: a size option given alone keeps their aspect ratio
+     * @throws ParameterException for a size with too many pixels
+     */
+    private RenderSettings options(RenderSettings file) {
+        RenderSettings options = RenderSettings.empty();
+        if (width != null || height != null) {
+            // One side alone keeps the file's aspect ratio, so the view plane is not stretched.
+            int w = width != null ? width : otherSide("--height", height, file.height(), file.width());
+            int h = height != null ? height : otherSide("--width", width, file.width(), file.height());
+            try {
+                options = options.withImageSize(w, h);
+            } catch (IllegalArgumentException e) {
+                String names = width == null ? "--height" : height == null ? "--width" : "--width/--height";
+                throw usage(names + ": " + e.getMessage());
+            }
+        }
+        if (threads != null) options = options.withThreads(threads);
+        if (antiAliasing != null) options = options.withAntiAliasing(antiAliasing);
+        if (seed != null) options = options.withSeed(seed);
+        return options;
     }
 
     /**

@@ -2,28 +2,28 @@ package scene.io;
 
 import java.util.Objects;
 import java.util.Optional;
-import java.util.function.Consumer;
 
 import renderer.Camera;
 import renderer.ImageWriter;
 import scene.Scene;
 
 /**
- * What a scene file describes: the scene, the camera's view when the file has a camera, and the
- * render settings. Reading a file allocates nothing of the image's size: a camera builder, with
- * its image writer and tracer, is made when asked for, either with the file's settings
+ * What a scene file describes: the scene, and the specification of its render as the file states
+ * it, the view when the file has a camera and the {@linkplain RenderSettings settings}. Reading a
+ * file allocates nothing of the image's size: a camera builder, with its image writer and tracer,
+ * is made when asked for, the specification replayed onto it, either with the file's settings
  * ({@link #requireCamera()}) or with the caller's ({@link #requireView()} and
  * {@link RenderSettings#applyTo(Camera.Builder, Scene, ImageWriter)}).
  */
 public final class LoadedScene {
     private final Scene scene;
-    /** Sets the file's view on a builder; null when the file has no {@code <camera>}. */
-    private final Consumer<Camera.Builder> view;
+    /** The file's {@code <camera>}; null when it has none. */
+    private final ViewSpec view;
     private final RenderSettings settings;
     /** The error to report when a caller needs the camera that is not there (at {@code <scene>}). */
     private final SceneFormatException noCamera;
 
-    LoadedScene(Scene scene, Consumer<Camera.Builder> view, RenderSettings settings, SceneFormatException noCamera) {
+    LoadedScene(Scene scene, ViewSpec view, RenderSettings settings, SceneFormatException noCamera) {
         this.scene = Objects.requireNonNull(scene, "scene");
         this.view = view;
         this.settings = Objects.requireNonNull(settings, "settings");
@@ -66,12 +66,10 @@ public final class LoadedScene {
     }
 
     private Camera.Builder newView() {
-        Camera.Builder camera = Camera.getBuilder();
-        view.accept(camera);
-        return camera;
+        return view.applyTo(Camera.getBuilder());
     }
 
-    /** @return the render settings the file asks for, its defaults where it says nothing */
+    /** @return the render settings as the file states them (the library's defaults where it says nothing) */
     public RenderSettings settings() {
         return settings;
     }

@@ -1,10 +1,16 @@
 package scene.io;
 
+import java.io.IOException;
+import java.io.InvalidObjectException;
+import java.io.ObjectInputStream;
+import java.util.Arrays;
 import java.util.Locale;
 import java.util.Objects;
+import java.util.StringJoiner;
 import java.util.function.Consumer;
 
 import primitives.Color;
+import primitives.Point;
 import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
@@ -13,223 +19,359 @@ import renderer.RayTracerBasic;
 import scene.Scene;
 
 /**
- * How a scene file asks to be rendered: the image, the sampling, the tracer's extensions and the
- * execution. The defaults (see {@link #defaults(String)}) are the plain course render on all
- * cores. A command line overrides values with the {@code with…} methods and then
- * {@linkplain #applyTo(Camera.Builder, Scene, ImageWriter) applies} the result to a camera
- * builder. The image size is checked here, so that settings that exist can be rendered as far as
- * the pixel count goes: the image itself is allocated only when asked for.
+ * How a scene file or a command line asks for a render: a specification that records only the
+ * values it was given, and replays them onto a {@link Camera.Builder} and its
+ * {@link RayTracerBasic} ({@link #applyTo(Camera.Builder, Scene, ImageWriter) applyTo}). A value
+ * it does not state is the library's: the defaults and limits of the sampling, the tracer and the
+ * ray budget exist once, in the builder and the tracer, whose setters check each value as it is
+ * replayed and whose {@code build()} checks the ray budget.
  *
- * <p>Serializable (through the canonical constructor, so a deserialized copy is validated
- * again): a cluster's driver sends the settings it resolved to its executors.
+ * <p>The image and the thread count are the scene format's own (the library's image has no
+ * default size, and the builder's default thread, the calling one, is the course's): a
+ * specification that does not state them renders {@value #DEFAULT_SIZE}×{@value #DEFAULT_SIZE}
+ * pixels without a grid, on all cores. The image size is checked when it is stated, without
+ * allocating; the image is allocated only when asked for ({@link #newImageWriter()}).
+ *
+ * <p>A command line's options are a second specification, replayed after the file's:
+ * {@code file.then(options)} states what the options state, and the file's values elsewhere.
+ *
+ * <p>Immutable: each {@code with…} method states its values on a copy. Serializable (a deserialized
+ * copy is checked again): a cluster's driver sends the specification it resolved to its executors.
  *
  * @serial exclude
- * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise; a name,
- *                         not a path (see {@link #requireImageName(String)})
- * @param width            image width in pixels, at least 1
- * @param height           image height in pixels, at least 1; width × height at most
- *                         {@link #MAX_PIXELS}
- * @param gridInterval     a grid line every this many pixels over the image (the course's
- *                         {@code printGrid}); 0: no grid
- * @param gridColor        the grid lines' colour
- * @param antiAliasing     how pixels are sampled
- * @param aaColumns        RANDOM: jittered grid columns per pixel
- * @param aaRows           RANDOM: jittered grid rows per pixel
- * @param adaptiveDepth    ADAPTIVE: maximum subdivision depth (sub-pixels of 1/2^depth)
- * @param adaptiveThreshold ADAPTIVE: the colour difference (0..255 scale) that subdivides
- * @param focalDistance    depth of field: distance of the sharp plane along the view
- *                         direction; 0: pinhole camera (no depth of field)
- * @param aperture         depth of field: lens radius in scene units
- * @param dofSamples       depth of field: lens samples per pixel without anti-aliasing
- * @param threads          0: calling thread; n &gt; 0: n workers; -2: all cores
- * @param seed             the seed of every random number of the render
- * @param bvh              whether the tracer uses the bounding volume hierarchy
- * @param beamSize         rays per glossy or diffuse-glass beam
- * @param shadowSamples    shadow rays toward a light with a radius
  */
-public record RenderSettings(String imageName, int width, int height, int gridInterval, Color gridColor,
-                             AntiAliasing antiAliasing, int aaColumns, int aaRows, int adaptiveDepth,
-                             double adaptiveThreshold, double focalDistance, double aperture, int dofSamples,
-                             int threads, long seed, boolean bvh, int beamSize, int shadowSamples)
-        implements java.io.Serializable {
-    /** The default image side in pixels, when a file names no resolution. */
+public final class RenderSettings implements java.io.Serializable {
+    private static final long serialVersionUID = 2L;
+
+    /** The image side in pixels when no size is stated: the scene format's default. */
     public static final int DEFAULT_SIZE = 500;
-    /** The course's grid colour (java.awt.Color.YELLOW). */
+    /** The course's grid colour (java.awt.Color.YELLOW), when a grid's colour is not stated. */
     public static final Color DEFAULT_GRID_COLOR = new Color(255, 255, 0);
     /**
-     * The most pixels an image can have: {@link ImageWriter} keeps them in one {@code int} array,
-     * and JVMs allocate arrays of at most {@code Integer.MAX_VALUE - 8} elements (ImageWriter's own
-     * limit, checked here without allocating).
+     * The most pixels an image can have, {@link ImageWriter#MAX_PIXELS}: the library's limit,
+     * checked here when a size is stated, without allocating.
      */
-    public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
+    public static final long MAX_PIXELS = ImageWriter.MAX_PIXELS;
     /**
-     * The ray budget of one pixel: {@link #samplesPerPixel()} × beam size × shadow samples at most
-     * this; the library's own limit, {@link RayBudget#MAX_RAYS_PER_PIXEL}, which the camera holds
-     * the Java API to as well.
+     * The ray budget of one pixel, {@link RayBudget#MAX_RAYS_PER_PIXEL}: the library's limit,
+     * which {@code Camera.Builder.build()} holds every camera to; named here for the scene
+     * format's messages and documentation.
      */
     public static final long MAX_RAYS_PER_PIXEL = RayBudget.MAX_RAYS_PER_PIXEL;
     /** The longest image name, in characters (file names have at most 255 bytes). */
     public static final int MAX_IMAGE_NAME_LENGTH = 200;
-
+    /** The thread count when none is stated: all cores ({@link Camera.Builder#setMultithreading}'s -2). */
+    private static final int ALL_CORES = -2;
     /**
-     * Checks what can be checked without a camera: the names and colours are present and the image
-     * size can be allocated. The sampling values are checked by the camera when the settings are
-     * {@linkplain #applyTo(Camera.Builder, Scene) applied}.
-     *
-     * @param imageName        the image's name: images/&lt;name&gt;.png unless told otherwise
-     * @param width            image width in pixels, at least 1
-     * @param height           image height in pixels, at least 1; width × height at most
-     *                         {@link #MAX_PIXELS}
-     * @param gridInterval     a grid line every this many pixels over the image (the course's
-     *                         {@code printGrid}); 0: no grid
-     * @param gridColor        the grid lines' colour
-     * @param antiAliasing     how pixels are sampled
-     * @param aaColumns        RANDOM: jittered grid columns per pixel
-     * @param aaRows           RANDOM: jittered grid rows per pixel
-     * @param adaptiveDepth    ADAPTIVE: maximum subdivision depth (sub-pixels of 1/2^depth)
-     * @param adaptiveThreshold ADAPTIVE: the colour difference (0..255 scale) that subdivides
-     * @param focalDistance    depth of field: distance of the sharp plane along the view
-     *                         direction; 0: pinhole camera (no depth of field)
-     * @param aperture         depth of field: lens radius in scene units
-     * @param dofSamples       depth of field: lens samples per pixel without anti-aliasing
-     * @param threads          0: calling thread; n &gt; 0: n workers; -2: all cores
-     * @param seed             the seed of every random number of the render
-     * @param bvh              whether the tracer uses the bounding volume hierarchy
-     * @param beamSize         rays per glossy or diffuse-glass beam
-     * @param shadowSamples    shadow rays toward a light with a radius
-     * @throws NullPointerException     when the image name, grid colour or anti-aliasing mode is null
-     * @throws IllegalArgumentException for a side below 1 pixel or more than {@link #MAX_PIXELS}
-     *                                  pixels, naming the size; for an image name that is not a
-     *                                  plain file name (see {@link #requireImageName(String)}); for
-     *                                  more than {@link #MAX_RAYS_PER_PIXEL} rays per pixel, naming
-     *                                  the factors
+     * ADAPTIVE's depth and threshold as a fresh {@link Camera.Builder} has them, for a
+     * specification that states one of the two: the builder takes them together and does not
+     * tell its own. {@code RenderSettingsTest} holds them equal to the builder's.
      */
-    public RenderSettings {
-        requireImageName(imageName);
-        Objects.requireNonNull(gridColor, "grid colour");
-        Objects.requireNonNull(antiAliasing, "anti-aliasing mode");
-        RayBudget.require(antiAliasing, samplesPerPixel(antiAliasing, aaColumns, aaRows, adaptiveDepth, focalDistance,
-                dofSamples), beamSize, shadowSamples);
-        if (width < 1 || height < 1)
-            throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
-        long pixels = (long) width * height;
-        if (pixels > MAX_PIXELS)
-            throw new IllegalArgumentException("image size " + width + "x" + height + " is " + pixels
-                    + " pixels, more than an image can hold (" + MAX_PIXELS + ")");
+    private static final int ADAPTIVE_DEPTH = 3;
+    private static final double ADAPTIVE_THRESHOLD = 8;
+
+    // Each field is null when the specification does not state it.
+    // The image: its name (images/<name>.png), size in pixels (stated together) and grid.
+    private String imageName;
+    private Integer width, height;
+    /** A grid line every this many pixels; 0: no grid. */
+    private Integer gridInterval;
+    private Color gridColor;
+    // The camera's sampling (Camera.Builder's setters) and execution.
+    private AntiAliasing antiAliasing;
+    /** RANDOM's grid, columns × rows (stated together). */
+    private Integer gridColumns, gridRows;
+    private Integer adaptiveDepth;
+    private Double adaptiveThreshold;
+    /** The thin lens, stated together: focal distance 0 is the pinhole camera. */
+    private Double focalDistance, aperture;
+    private Integer lensSamples;
+    private Long seed;
+    private Integer threads;
+    // The tracer's extensions (RayTracerBasic's setters).
+    private Boolean bvh;
+    private Integer beamSize, shadowSamples;
+
+    private RenderSettings() {
+    }
+
+    private RenderSettings(RenderSettings s) {
+        imageName = s.imageName;
+        width = s.width;
+        height = s.height;
+        gridInterval = s.gridInterval;
+        gridColor = s.gridColor;
+        antiAliasing = s.antiAliasing;
+        gridColumns = s.gridColumns;
+        gridRows = s.gridRows;
+        adaptiveDepth = s.adaptiveDepth;
+        adaptiveThreshold = s.adaptiveThreshold;
+        focalDistance = s.focalDistance;
+        aperture = s.aperture;
+        lensSamples = s.lensSamples;
+        seed = s.seed;
+        threads = s.threads;
+        bvh = s.bvh;
+        beamSize = s.beamSize;
+        shadowSamples = s.shadowSamples;
+    }
+
+    /** @return a specification that states nothing (a command line without options) */
+    public static RenderSettings empty() {
+        return new RenderSettings();
     }
 
     /**
-     * The settings of a file that says nothing: a {@value #DEFAULT_SIZE}-pixel square image, no
-     * grid, no anti-aliasing (RANDOM would use 4×4, ADAPTIVE depth 3 and threshold 8), no depth
-     * of field (16 lens samples when it is on), all cores, seed 0, BVH on, beams of 16 rays and
-     * 16 shadow samples: the camera's and the tracer's own defaults, except the thread count.
+     * The specification of a scene file that states nothing but its image's name: the format's
+     * image ({@value #DEFAULT_SIZE}-pixel square, no grid), all cores, and the library's defaults
+     * for everything else.
      *
      * @param imageName the image's name: images/&lt;name&gt;.png
-     * @return the default settings
+     * @return the specification
+     * @throws IllegalArgumentException for a name that is not a plain file name (see
+     *                                  {@link #requireImageName(String)})
      */
     public static RenderSettings defaults(String imageName) {
-        Editor defaults = new Editor();
-        defaults.imageName = imageName;
-        return defaults.settings();
+        RenderSettings s = new RenderSettings();
+        s.imageName = requireImageName(imageName);
+        return s;
     }
 
     /**
      * @param name   the image's name: images/&lt;name&gt;.png
      * @param width  image width in pixels, at least 1
-     * @param height image height in pixels, at least 1
-     * @return these settings with another image name and size
-     * @throws IllegalArgumentException when the size is out of range (see the constructor)
+     * @param height image height in pixels, at least 1; width × height at most {@link #MAX_PIXELS}
+     * @return this specification with the image's name and size stated
+     * @throws IllegalArgumentException for a name that is not a plain file name, or a size out of
+     *                                  range, naming it
      */
     public RenderSettings withImage(String name, int width, int height) {
-        return edit(e -> {
-            e.imageName = name;
-            e.width = width;
-            e.height = height;
+        requireImageName(name);
+        return withImageSize(width, height).edit(s -> s.imageName = name);
+    }
+
+    /**
+     * @param width  image width in pixels, at least 1
+     * @param height image height in pixels, at least 1; width × height at most {@link #MAX_PIXELS}
+     * @return this specification with the image's size stated
+     * @throws IllegalArgumentException for a size out of range, naming it
+     */
+    public RenderSettings withImageSize(int width, int height) {
+        requireSize(width, height);
+        return edit(s -> {
+            s.width = width;
+            s.height = height;
         });
     }
 
     /**
      * @param interval a grid line every this many pixels; 0: no grid
      * @param color    the grid lines' colour
-     * @return these settings with another grid overlay
+     * @return this specification with a grid stated
      */
     public RenderSettings withGrid(int interval, Color color) {
-        return edit(e -> {
-            e.gridInterval = interval;
-            e.gridColor = color;
+        Objects.requireNonNull(color, "grid colour");
+        return edit(s -> {
+            s.gridInterval = interval;
+            s.gridColor = color;
         });
     }
 
     /**
      * @param mode how pixels are sampled
-     * @return these settings with another anti-aliasing mode (its parameters kept, so a later mode
-     *         change finds them)
+     * @return this specification with the mode stated (its parameters as they were, so a later
+     *         mode change finds them)
      */
     public RenderSettings withAntiAliasing(AntiAliasing mode) {
-        return edit(e -> e.antiAliasing = mode);
+        Objects.requireNonNull(mode, "anti-aliasing mode");
+        return edit(s -> s.antiAliasing = mode);
     }
 
     /**
-     * The parameters of every mode at once; each is checked by the camera when applied, and only
-     * the current mode's parameters are.
+     * @param columns RANDOM: jittered grid columns per pixel
+     * @param rows    RANDOM: jittered grid rows per pixel
+     * @return this specification with RANDOM's grid stated (whatever the mode, as the builder keeps it)
+     */
+    public RenderSettings withAntiAliasingGrid(int columns, int rows) {
+        return edit(s -> {
+            s.gridColumns = columns;
+            s.gridRows = rows;
+        });
+    }
+
+    /**
+     * @param depth ADAPTIVE: the deepest subdivision
+     * @return this specification with ADAPTIVE's depth stated
+     */
+    public RenderSettings withAdaptiveDepth(int depth) {
+        return edit(s -> s.adaptiveDepth = depth);
+    }
+
+    /**
+     * @param threshold ADAPTIVE: the colour difference (0..255 scale) that subdivides
+     * @return this specification with ADAPTIVE's threshold stated
+     */
+    public RenderSettings withAdaptiveThreshold(double threshold) {
+        return edit(s -> s.adaptiveThreshold = threshold);
+    }
+
+    /**
+     * The parameters of every mode at once: each is checked when replayed.
      *
      * @param columns   RANDOM: jittered grid columns per pixel
      * @param rows      RANDOM: jittered grid rows per pixel
-     * @param depth     ADAPTIVE: maximum subdivision depth
+     * @param depth     ADAPTIVE: the deepest subdivision
      * @param threshold ADAPTIVE: the colour difference (0..255 scale) that subdivides
-     * @return these settings with other anti-aliasing parameters
+     * @return this specification with the four stated
      */
     public RenderSettings withAntiAliasingParameters(int columns, int rows, int depth, double threshold) {
-        return edit(e -> {
-            e.aaColumns = columns;
-            e.aaRows = rows;
-            e.adaptiveDepth = depth;
-            e.adaptiveThreshold = threshold;
+        return withAntiAliasingGrid(columns, rows).withAdaptiveDepth(depth).withAdaptiveThreshold(threshold);
+    }
+
+    /**
+     * @param focalDistance distance of the sharp plane along the view direction; 0: the pinhole
+     *                      camera (no depth of field)
+     * @param aperture      lens radius in scene units
+     * @return this specification with the lens stated
+     */
+    public RenderSettings withDepthOfField(double focalDistance, double aperture) {
+        return edit(s -> {
+            s.focalDistance = focalDistance;
+            s.aperture = aperture;
         });
+    }
+
+    /**
+     * @param samples lens samples per pixel when anti-aliasing is off
+     * @return this specification with the lens samples stated
+     */
+    public RenderSettings withDepthOfFieldSamples(int samples) {
+        return edit(s -> s.lensSamples = samples);
     }
 
     /**
      * @param focalDistance distance of the sharp plane along the view direction; 0: none
      * @param aperture      lens radius in scene units
      * @param samples       lens samples per pixel when anti-aliasing is off
-     * @return these settings with another depth of field
+     * @return this specification with the lens and its samples stated
      */
     public RenderSettings withDepthOfField(double focalDistance, double aperture, int samples) {
-        return edit(e -> {
-            e.focalDistance = focalDistance;
-            e.aperture = aperture;
-            e.dofSamples = samples;
-        });
+        return withDepthOfField(focalDistance, aperture).withDepthOfFieldSamples(samples);
     }
 
     /**
-     * @param threads 0: calling thread; n &gt; 0: n workers; -2: all cores
-     * @return these settings with another thread count
+     * @param threads 0: calling thread; n &gt; 0: n workers; -1 or -2: all cores
+     * @return this specification with the thread count stated
      */
     public RenderSettings withThreads(int threads) {
-        return edit(e -> e.threads = threads);
+        return edit(s -> s.threads = threads);
     }
 
     /**
      * @param seed the seed of every random number of the render
-     * @return these settings with another seed
+     * @return this specification with the seed stated
      */
     public RenderSettings withSeed(long seed) {
-        return edit(e -> e.seed = seed);
+        return edit(s -> s.seed = seed);
+    }
+
+    /**
+     * @param on whether the tracer uses the bounding volume hierarchy
+     * @return this specification with the choice stated
+     */
+    public RenderSettings withBvh(boolean on) {
+        return edit(s -> s.bvh = on);
+    }
+
+    /**
+     * @param rays rays per glossy or diffuse-glass beam
+     * @return this specification with the beam size stated
+     */
+    public RenderSettings withBeamSize(int rays) {
+        return edit(s -> s.beamSize = rays);
+    }
+
+    /**
+     * @param samples shadow rays toward a light with a radius
+     * @return this specification with the shadow samples stated
+     */
+    public RenderSettings withShadowSamples(int samples) {
+        return edit(s -> s.shadowSamples = samples);
     }
 
     /**
      * @param bvh           whether the tracer uses the bounding volume hierarchy
      * @param beamSize      rays per glossy or diffuse-glass beam
      * @param shadowSamples shadow rays toward a light with a radius
-     * @return these settings with other tracer extensions
+     * @return this specification with the tracer's three extensions stated
      */
     public RenderSettings withTracer(boolean bvh, int beamSize, int shadowSamples) {
-        return edit(e -> {
-            e.bvh = bvh;
-            e.beamSize = beamSize;
-            e.shadowSamples = shadowSamples;
-        });
+        return withBvh(bvh).withBeamSize(beamSize).withShadowSamples(shadowSamples);
+    }
+
+    /**
+     * The specification that replays this one and then {@code later}: {@code later}'s values where
+     * it states them, this one's elsewhere (a command line's options over a scene file's values).
+     *
+     * @param later the specification replayed second
+     * @return the two as one
+     */
+    public RenderSettings then(RenderSettings later) {
+        RenderSettings s = new RenderSettings(this);
+        s.imageName = or(later.imageName, imageName);
+        if (later.width != null) {
+            s.width = later.width;
+            s.height = later.height;
+        }
+        s.gridInterval = or(later.gridInterval, gridInterval);
+        s.gridColor = or(later.gridColor, gridColor);
+        s.antiAliasing = or(later.antiAliasing, antiAliasing);
+        if (later.gridColumns != null) {
+            s.gridColumns = later.gridColumns;
+            s.gridRows = later.gridRows;
+        }
+        s.adaptiveDepth = or(later.adaptiveDepth, adaptiveDepth);
+        s.adaptiveThreshold = or(later.adaptiveThreshold, adaptiveThreshold);
+        if (later.focalDistance != null) {
+            s.focalDistance = later.focalDistance;
+            s.aperture = later.aperture;
+        }
+        s.lensSamples = or(later.lensSamples, lensSamples);
+        s.seed = or(later.seed, seed);
+        s.threads = or(later.threads, threads);
+        s.bvh = or(later.bvh, bvh);
+        s.beamSize = or(later.beamSize, beamSize);
+        s.shadowSamples = or(later.shadowSamples, shadowSamples);
+        return s;
+    }
+
+    private static <T> T or(T stated, T otherwise) {
+        return stated != null ? stated : otherwise;
+    }
+
+    /** @return the image's name (images/&lt;name&gt;.png); null when not stated */
+    public String imageName() {
+        return imageName;
+    }
+
+    /** @return the image width in pixels: as stated, else {@value #DEFAULT_SIZE} */
+    public int width() {
+        return width != null ? width : DEFAULT_SIZE;
+    }
+
+    /** @return the image height in pixels: as stated, else {@value #DEFAULT_SIZE} */
+    public int height() {
+        return height != null ? height : DEFAULT_SIZE;
+    }
+
+    /** @return a grid line every this many pixels; 0 (not stated): no grid */
+    public int gridInterval() {
+        return gridInterval != null ? gridInterval : 0;
+    }
+
+    /** @return the grid lines' colour: as stated, else {@link #DEFAULT_GRID_COLOR} */
+    public Color gridColor() {
+        return gridColor != null ? gridColor : DEFAULT_GRID_COLOR;
     }
 
     /**
@@ -270,38 +412,25 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
         return name;
     }
 
-    /**
-     * The most primary rays one pixel may take, as the camera counts them
-     * ({@link RayBudget#cameraRaysPerPixel}): RANDOM's grid, ADAPTIVE's whole lattice of
-     * (2^depth + 1)² points (the worst case), CORNERS' five points, or without anti-aliasing the
-     * lens samples with depth of field and 1 without.
-     *
-     * @return the samples per pixel, as a long (a grid of two ints may overflow an int)
-     */
-    public long samplesPerPixel() {
-        return samplesPerPixel(antiAliasing, aaColumns, aaRows, adaptiveDepth, focalDistance, dofSamples);
-    }
-
-    private static long samplesPerPixel(AntiAliasing mode, int columns, int rows, int depth, double focalDistance,
-            int dofSamples) {
-        return RayBudget.cameraRaysPerPixel(mode, columns, rows, depth, focalDistance > 0, dofSamples);
-    }
-
-    /** @return whether these settings ask for depth of field */
-    public boolean hasDepthOfField() {
-        return focalDistance > 0;
+    /** Each side at least 1 and at most {@link #MAX_PIXELS} pixels in all, naming the size. */
+    private static void requireSize(int width, int height) {
+        if (width < 1 || height < 1)
+            throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
+        long pixels = (long) width * height;
+        if (pixels > MAX_PIXELS)
+            throw new IllegalArgumentException("image size " + width + "x" + height + " is " + pixels
+                    + " pixels, more than an image can hold (" + MAX_PIXELS + ")");
     }
 
     /**
-     * Sets everything but the view on {@code camera}: a new image writer of this name and size
-     * (this allocates the image: 4 bytes a pixel), a new {@link RayTracerBasic} for {@code scene}
-     * with these extensions, the sampling, seed and thread count. The view (location, direction,
-     * view plane) is left as it is.
+     * Replays this specification onto {@code camera} with a new image writer of its name and size
+     * (this allocates the image: 4 bytes a pixel); see
+     * {@link #applyTo(Camera.Builder, Scene, ImageWriter)}.
      *
-     * @param camera the builder to configure; its view must be set by the caller
+     * @param camera the builder to configure; its view is the caller's
      * @param scene  what the new tracer renders
      * @return {@code camera}, for chaining
-     * @throws IllegalArgumentException for a value the camera or tracer refuses
+     * @throws IllegalArgumentException for a stated value the camera or the tracer refuses
      */
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene) {
         return applyTo(camera, scene, newImageWriter());
@@ -309,108 +438,121 @@ public record RenderSettings(String imageName, int width, int height, int gridIn
 
     /** @return a new, black image writer of this name and size (4 bytes a pixel) */
     public ImageWriter newImageWriter() {
-        return new ImageWriter(imageName, width, height);
+        return new ImageWriter(imageName, width(), height());
     }
 
     /**
-     * As {@link #applyTo(Camera.Builder, Scene)}, with an image writer of the caller's (which
-     * keeps a reference to it, e.g. to write it elsewhere than images/, or to allocate it where
-     * it can report a lack of memory); its size is the caller's business.
+     * Replays this specification onto {@code camera}: the image writer, a new
+     * {@link RayTracerBasic} for {@code scene} with the stated extensions, and each stated value
+     * of the sampling, seed and threads through the builder's own setter (the thread count is all
+     * cores when not stated). What is not stated stays as the builder and the tracer have it; the
+     * view (location, direction, view plane) is the caller's. {@code build()} then checks the
+     * ray budget.
      *
-     * @param camera the builder to configure; its view must be set by the caller
+     * @param camera the builder to configure; its view is the caller's
      * @param scene  what the new tracer renders
-     * @param image  the image the camera renders into
+     * @param image  the image the camera renders into (the caller keeps it, e.g. to write it
+     *               elsewhere than images/, or to allocate it where it can report a lack of memory)
      * @return {@code camera}, for chaining
-     * @throws IllegalArgumentException for a value the camera or tracer refuses
+     * @throws IllegalArgumentException for a stated value the camera or the tracer refuses
      */
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
-        camera.setImageWriter(image)
-                .setRayTracer(new RayTracerBasic(scene).setBvh(bvh).setBeamSize(beamSize).setShadowSamples(shadowSamples))
-                .setAntiAliasing(antiAliasing)
-                .setAdaptive(adaptiveDepth, adaptiveThreshold)
-                .setDepthOfFieldSamples(dofSamples)
-                .setSeed(seed)
-                .setMultithreading(threads);
-        // The camera takes a grid only with RANDOM (for the other modes the settings merely keep
-        // it, for a later --aa random).
-        if (antiAliasing == AntiAliasing.RANDOM) camera.setAntiAliasingGrid(aaColumns, aaRows);
-        // Aperture 0 is the pinhole camera whatever the focal distance: this also undoes an earlier
-        // depth of field on a reused builder.
-        if (hasDepthOfField()) camera.setDepthOfField(focalDistance, aperture);
-        else camera.setDepthOfField(1, 0);
-        return camera;
+        RayTracerBasic tracer = new RayTracerBasic(scene);
+        if (bvh != null) tracer.setBvh(bvh);
+        if (beamSize != null) tracer.setBeamSize(beamSize);
+        if (shadowSamples != null) tracer.setShadowSamples(shadowSamples);
+        camera.setImageWriter(image).setRayTracer(tracer);
+        if (antiAliasing != null) camera.setAntiAliasing(antiAliasing);
+        if (gridColumns != null) camera.setAntiAliasingGrid(gridColumns, gridRows);
+        if (adaptiveDepth != null || adaptiveThreshold != null) camera.setAdaptive(
+                adaptiveDepth != null ? adaptiveDepth : ADAPTIVE_DEPTH,
+                adaptiveThreshold != null ? adaptiveThreshold : ADAPTIVE_THRESHOLD);
+        // Aperture 0 is the pinhole whatever the focal distance, so a stated pinhole undoes a lens
+        // set on the builder before.
+        if (focalDistance != null) camera.setDepthOfField(focalDistance == 0 ? 1 : focalDistance, aperture);
+        if (lensSamples != null) camera.setDepthOfFieldSamples(lensSamples);
+        if (seed != null) camera.setSeed(seed);
+        return camera.setMultithreading(threads != null ? threads : ALL_CORES);
     }
 
     /**
-     * Draws the grid over a rendered image when these settings ask for one.
+     * Checks this specification against the library's ray budget, as {@code Camera.Builder.build()}
+     * will when it is replayed: the stated values over the library's defaults. The library checks
+     * the budget when it builds a camera, so one is built, with a stand-in view (the budget does
+     * not depend on it but on the lens, which is stated or the builder's) and a 1×1 image.
+     *
+     * @return this specification
+     * @throws IllegalArgumentException for a stated value the camera or the tracer refuses, or
+     *                                  more than {@link #MAX_RAYS_PER_PIXEL} rays per pixel,
+     *                                  with the library's message naming the factors
+     */
+    public RenderSettings requireRayBudget() {
+        Camera.Builder camera = Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Point(0, 0, -1))
+                .setVpSize(1, 1).setVpDistance(1);
+        applyTo(camera, new Scene("ray budget"), new ImageWriter(1, 1)).build();
+        return this;
+    }
+
+    /**
+     * Draws the grid over a rendered image when this specification asks for one.
      *
      * @param camera the camera that rendered the image (its image writer receives the grid)
      */
     public void drawGrid(Camera camera) {
-        if (gridInterval > 0) camera.printGrid(gridInterval, gridColor);
+        if (gridInterval() > 0) camera.printGrid(gridInterval(), gridColor());
     }
 
-    /** A copy of these settings with the fields {@code change} assigns, by name. */
-    private RenderSettings edit(Consumer<Editor> change) {
-        Editor editor = new Editor(this);
-        change.accept(editor);
-        return editor.settings();
+    /** A copy of this specification with the values {@code change} states. */
+    private RenderSettings edit(Consumer<RenderSettings> change) {
+        RenderSettings copy = new RenderSettings(this);
+        change.accept(copy);
+        return copy;
     }
 
-    /**
-     * The settings as named, mutable fields, so that each {@code with…} method assigns what it
-     * changes by name: the record's constructor, whose 18 arguments include adjacent ones of the
-     * same type, is called in one place only. Starts from the defaults (see
-     * {@link #defaults(String)}).
-     */
-    private static final class Editor {
-        String imageName;
-        int width = DEFAULT_SIZE;
-        int height = DEFAULT_SIZE;
-        int gridInterval = 0;
-        Color gridColor = DEFAULT_GRID_COLOR;
-        AntiAliasing antiAliasing = AntiAliasing.NONE;
-        int aaColumns = 4;
-        int aaRows = 4;
-        int adaptiveDepth = 3;
-        double adaptiveThreshold = 8;
-        double focalDistance = 0;
-        double aperture = 0;
-        int dofSamples = 16;
-        int threads = -2;
-        long seed = 0;
-        boolean bvh = true;
-        int beamSize = 16;
-        int shadowSamples = 16;
-
-        Editor() {
+    /** The checks of the {@code with…} methods, again for a copy that arrives serialized. */
+    private void readObject(ObjectInputStream in) throws IOException, ClassNotFoundException {
+        in.defaultReadObject();
+        try {
+            if (imageName != null) requireImageName(imageName);
+            if ((width == null) != (height == null)) throw new IllegalArgumentException("width and height are stated together");
+            if (width != null) requireSize(width, height);
+        } catch (IllegalArgumentException | NullPointerException e) {
+            InvalidObjectException invalid = new InvalidObjectException("render settings: " + e.getMessage());
+            invalid.initCause(e);
+            throw invalid;
         }
+    }
 
-        Editor(RenderSettings s) {
-            imageName = s.imageName;
-            width = s.width;
-            height = s.height;
-            gridInterval = s.gridInterval;
-            gridColor = s.gridColor;
-            antiAliasing = s.antiAliasing;
-            aaColumns = s.aaColumns;
-            aaRows = s.aaRows;
-            adaptiveDepth = s.adaptiveDepth;
-            adaptiveThreshold = s.adaptiveThreshold;
-            focalDistance = s.focalDistance;
-            aperture = s.aperture;
-            dofSamples = s.dofSamples;
-            threads = s.threads;
-            seed = s.seed;
-            bvh = s.bvh;
-            beamSize = s.beamSize;
-            shadowSamples = s.shadowSamples;
-        }
+    private Object[] values() {
+        return new Object[] { imageName, width, height, gridInterval, gridColor, antiAliasing, gridColumns, gridRows,
+                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, lensSamples, seed, threads, bvh, beamSize,
+                shadowSamples };
+    }
 
-        RenderSettings settings() {
-            return new RenderSettings(imageName, width, height, gridInterval, gridColor, antiAliasing, aaColumns,
-                    aaRows, adaptiveDepth, adaptiveThreshold, focalDistance, aperture, dofSamples, threads, seed, bvh,
-                    beamSize, shadowSamples);
-        }
+    /** Equal when both state the same values (a value stated as its default is still stated). */
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof RenderSettings other && Arrays.equals(values(), other.values());
+    }
+
+    @Override
+    public int hashCode() {
+        return Arrays.hashCode(values());
+    }
+
+    /** @return the stated values, by name: {@code RenderSettings[image=x 40x20, antiAliasing=RANDOM]} */
+    @Override
+    public String toString() {
+        StringJoiner stated = new StringJoiner(", ", "RenderSettings[", "]");
+        if (imageName != null || width != null)
+            stated.add("image=" + (imageName != null ? imageName : "") + (width != null ? " " + width + "x" + height : ""));
+        String[] names = { "gridInterval", "gridColor", "antiAliasing", "grid", "adaptiveDepth", "adaptiveThreshold",
+                "depthOfField", "lensSamples", "seed", "threads", "bvh", "beamSize", "shadowSamples" };
+        Object[] values = { gridInterval, gridColor, antiAliasing, gridColumns == null ? null : gridColumns + "x" + gridRows,
+                adaptiveDepth, adaptiveThreshold, focalDistance == null ? null : "focal " + focalDistance + " aperture " + aperture,
+                lensSamples, seed, threads, bvh, beamSize, shadowSamples };
+        for (int i = 0; i < names.length; ++i)
+            if (values[i] != null) stated.add(names[i] + "=" + values[i]);
+        return stated.toString();
     }
 }

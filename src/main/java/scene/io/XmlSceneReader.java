@@ -31,8 +31,7 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
-import java.util.function.Consumer;
-import java.util.function.UnaryOperator;
+import java.util.function.BiFunction;
 
 import geometries.BoundingBox;
 import geometries.Cylinder;
@@ -56,13 +55,14 @@ import primitives.Ray;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
-import renderer.ImageWriter;
-import renderer.RayTracerBasic;
+import renderer.View;
 import scene.Scene;
 
 /**
- * Reads a scene file (the format is described in docs/scene-format.md) into a {@link Scene}, a
- * camera builder and {@link RenderSettings}. The course's scene files read unchanged:
+ * Reads a scene file (the format is described in docs/scene-format.md) into a {@link Scene} and
+ * the specification of its render as the file states it: the view and the {@link RenderSettings},
+ * replayed onto a camera builder when a camera is asked for ({@link LoadedScene}). The course's
+ * scene files read unchanged:
  * {@code <scene background-color="75 127 90"><ambient-light color="255 191 191"/><geometries>
  * <sphere center="0 0 -100" radius="50"/>…}.
  *
@@ -224,7 +224,7 @@ public final class XmlSceneReader {
                 ? image.required("name", IMAGE_NAME) : imageNameOf(root, scene.name));
         if (image != null) settings = image(image, settings);
         if ((part = parts.get("render")) != null) settings = render(part, settings);
-        Consumer<Camera.Builder> view = (part = parts.get("camera")) != null ? camera(part, scene) : null;
+        ViewSpec view = (part = parts.get("camera")) != null ? camera(part) : null;
         return new LoadedScene(scene, view, settings, view != null ? null
                 : root.error("the scene has no <camera> (expected a <camera> element inside <scene> to render it)"));
     }
@@ -520,40 +520,47 @@ public final class XmlSceneReader {
     private static RenderSettings image(XmlElement e, RenderSettings s) throws SceneFormatException {
         e.allowAttributes(List.of("name", "width", "height", "grid-interval", "grid-color"));
         noChildren(e);
-        String name = e.optional("name", IMAGE_NAME, s.imageName());
-        int width = e.optional("width", POSITIVE_INTEGER, s.width());
-        int height = e.optional("height", POSITIVE_INTEGER, s.height());
-        try {
-            s = s.withImage(name, width, height);
-        } catch (IllegalArgumentException ex) { // too many pixels: each side alone is valid
-            String at = e.has("width") ? "width" : "height";
-            throw e.errorAt(at, e.quote(at) + ": " + ex.getMessage() + " (expected width × height at most "
-                    + RenderSettings.MAX_PIXELS + " pixels)", ex);
+        if (e.has("width") || e.has("height")) {
+            // Stated together: a side the file leaves out is the format's default.
+            int width = e.optional("width", POSITIVE_INTEGER, s.width());
+            int height = e.optional("height", POSITIVE_INTEGER, s.height());
+            try {
+                s = s.withImageSize(width, height);
+            } catch (IllegalArgumentException ex) { // too many pixels: each side alone is valid
+                String at = e.has("width") ? "width" : "height";
+                throw e.errorAt(at, e.quote(at) + ": " + ex.getMessage() + " (expected width × height at most "
+                        + RenderSettings.MAX_PIXELS + " pixels)", ex);
+            }
         }
-        return s.withGrid(e.optional("grid-interval", POSITIVE_INTEGER, 0), e.optional("grid-color", COLOR, s.gridColor()));
+        if (e.has("grid-interval") || e.has("grid-color"))
+            s = s.withGrid(e.optional("grid-interval", POSITIVE_INTEGER, 0), e.optional("grid-color", COLOR, s.gridColor()));
+        return s;
+    }
+
+    /** {@code s} with the value of {@code attribute} stated by {@code with}, when {@code e} has it. */
+    private static <T> RenderSettings stated(XmlElement e, String attribute, ValueType<T> type, RenderSettings s,
+            BiFunction<RenderSettings, T, RenderSettings> with) throws SceneFormatException {
+        return e.has(attribute) ? with.apply(s, e.required(attribute, type)) : s;
     }
 
     private static RenderSettings render(XmlElement e, RenderSettings s) throws SceneFormatException {
         e.allowAttributes(List.of("threads", "seed", "bvh", "beam-size", "shadow-samples"));
-        int threads = e.optional("threads", THREADS, s.threads());
-        long seed = e.optional("seed", LONG, s.seed());
-        boolean bvh = e.optional("bvh", BOOLEAN, s.bvh());
-        int beam = e.optional("beam-size", POSITIVE_INTEGER, s.beamSize());
-        int shadows = e.optional("shadow-samples", POSITIVE_INTEGER, s.shadowSamples());
-        s = withinBudget(e, e.has("beam-size") ? "beam-size" : "shadow-samples", s.withThreads(threads).withSeed(seed),
-                r -> r.withTracer(bvh, beam, shadows));
+        s = stated(e, "threads", THREADS, s, RenderSettings::withThreads);
+        s = stated(e, "seed", LONG, s, RenderSettings::withSeed);
+        s = stated(e, "bvh", BOOLEAN, s, RenderSettings::withBvh);
+        s = stated(e, "beam-size", POSITIVE_INTEGER, s, RenderSettings::withBeamSize);
+        s = stated(e, "shadow-samples", POSITIVE_INTEGER, s, RenderSettings::withShadowSamples);
+        requireRayBudget(e, e.has("beam-size") ? "beam-size" : "shadow-samples", s);
         Map<String, XmlElement> parts = uniqueChildren(e, RENDER_CHILDREN);
         XmlElement aa = parts.get("anti-aliasing");
         if (aa != null) {
             aa.allowAttributes(List.of("mode", "grid", "depth", "threshold"));
             noChildren(aa);
-            int[] grid = aa.optional("grid", AA_GRID, new int[] { s.aaColumns(), s.aaRows() });
+            s = stated(aa, "grid", AA_GRID, s, (r, grid) -> r.withAntiAliasingGrid(grid[0], grid[1]));
             AntiAliasing mode = aa.required("mode", ValueType.enumeration(AntiAliasing.class));
-            int depth = aa.optional("depth", ADAPTIVE_DEPTH, s.adaptiveDepth());
-            double threshold = aa.optional("threshold", NON_NEGATIVE, s.adaptiveThreshold());
-            String at = mode == AntiAliasing.RANDOM ? "grid" : mode == AntiAliasing.ADAPTIVE ? "depth" : "mode";
-            s = withinBudget(aa, at, s, r -> r.withAntiAliasing(mode)
-                    .withAntiAliasingParameters(grid[0], grid[1], depth, threshold));
+            s = stated(aa, "depth", ADAPTIVE_DEPTH, s.withAntiAliasing(mode), RenderSettings::withAdaptiveDepth);
+            s = stated(aa, "threshold", NON_NEGATIVE, s, RenderSettings::withAdaptiveThreshold);
+            requireRayBudget(aa, mode == AntiAliasing.RANDOM ? "grid" : mode == AntiAliasing.ADAPTIVE ? "depth" : "mode", s);
         }
         XmlElement dof = parts.get("depth-of-field");
         if (dof != null) {
@@ -561,21 +568,22 @@ public final class XmlSceneReader {
             noChildren(dof);
             double focalDistance = dof.required("focal-distance", POSITIVE);
             double aperture = dof.required("aperture", NON_NEGATIVE);
-            int samples = dof.optional("samples", LENS_SAMPLES, s.dofSamples());
-            s = withinBudget(dof, "samples", s, r -> r.withDepthOfField(focalDistance, aperture, samples));
+            s = stated(dof, "samples", LENS_SAMPLES, s.withDepthOfField(focalDistance, aperture),
+                    RenderSettings::withDepthOfFieldSamples);
+            requireRayBudget(dof, "samples", s);
         }
         return s;
     }
 
     /**
-     * {@code change} applied to {@code s}; a ray budget it exceeds (see
-     * {@link RenderSettings#MAX_RAYS_PER_PIXEL}) is reported at {@code attribute} of {@code e}, or
-     * at {@code e} when the attribute is not written (a default made the product too large).
+     * The library's ray budget (see {@link RenderSettings#requireRayBudget()}) for what the file
+     * states so far: a budget the element just exceeded is reported at {@code attribute} of
+     * {@code e}, or at {@code e} when the attribute is not written (a default made the product too
+     * large).
      */
-    private static RenderSettings withinBudget(XmlElement e, String attribute, RenderSettings s,
-            UnaryOperator<RenderSettings> change) throws SceneFormatException {
+    private static void requireRayBudget(XmlElement e, String attribute, RenderSettings s) throws SceneFormatException {
         try {
-            return change.apply(s);
+            s.requireRayBudget();
         } catch (IllegalArgumentException ex) {
             String reason = "invalid <" + e.name() + ">: " + ex.getMessage() + " (expected samples per pixel × beam-size"
                     + " × shadow-samples at most " + RenderSettings.MAX_RAYS_PER_PIXEL + ")";
@@ -584,18 +592,17 @@ public final class XmlSceneReader {
     }
 
     /**
-     * The camera's view (location, direction, view plane), as an action that sets it on a builder:
-     * the image and the tracer are not the reader's to allocate, but whoever renders makes them
-     * once, at the final size (see {@link LoadedScene}).
+     * The camera's view (location, direction, view plane) as the file states it, checked as a
+     * camera built from it will check it.
      */
-    private static Consumer<Camera.Builder> camera(XmlElement e, Scene scene) throws SceneFormatException {
+    private static ViewSpec camera(XmlElement e) throws SceneFormatException {
         e.allowAttributes(List.of("location", "direction", "up", "target", "vp-size", "vp-distance"));
         noChildren(e);
         Point location = e.required("location", POINT);
         if (e.has("direction") && e.has("target"))
             throw e.errorAt("target", "<camera> takes either direction and up, or target, not both"
                     + " (expected one of the two forms)");
-        Consumer<Camera.Builder> direction;
+        ViewSpec.Direction direction;
         if (e.has("direction")) {
             Vector to = e.required("direction", VECTOR);
             Vector up = e.required("up", VECTOR);
@@ -605,26 +612,20 @@ public final class XmlSceneReader {
                 throw e.errorAt("up", "invalid <camera>: " + ex.getMessage()
                         + " (expected an up vector orthogonal to the direction)", ex);
             }
-            direction = camera -> camera.setDirection(to, up);
+            direction = new ViewSpec.Along(to, up);
         } else if (e.has("target")) {
-            Point target = e.required("target", POINT);
-            Vector up = e.optional("up", VECTOR, null);
-            direction = up != null ? camera -> camera.setDirection(target, up) : camera -> camera.setDirection(target);
+            direction = new ViewSpec.Toward(e.required("target", POINT), e.optional("up", VECTOR, null));
         } else {
             throw e.error("<camera> is missing its view direction (expected attributes direction and up, or target)");
         }
         double[] size = e.required("vp-size", SIZE);
-        double distance = e.required("vp-distance", POSITIVE);
-        Consumer<Camera.Builder> view = camera -> direction
-                .accept(camera.setLocation(location).setVpSize(size[0], size[1]).setVpDistance(distance));
+        ViewSpec view = new ViewSpec(location, direction, size[0], size[1], e.required("vp-distance", POSITIVE));
 
-        // The checks that need every part (target at the location, up along the view) are
-        // Camera.build()'s: a probe runs them with a 1x1 image and a tracer that is never prepared.
-        Camera.Builder probe = Camera.getBuilder();
-        view.accept(probe);
-        Camera built;
+        // The checks that need every part (target at the location, up along the view) are the
+        // builder's, which makes the view a camera built from the file will have.
+        View checked;
         try {
-            built = probe.setImageWriter(new ImageWriter("probe", 1, 1)).setRayTracer(new RayTracerBasic(scene)).build();
+            checked = view.applyTo(Camera.getBuilder()).buildView();
         } catch (IllegalArgumentException ex) {
             throw e.error("invalid <camera>: " + ex.getMessage()
                     + " (expected a target away from the location and an up not along the view direction)", ex);
@@ -632,9 +633,9 @@ public final class XmlSceneReader {
         // The rays through the view plane's centre and quarters: a view plane too near or too
         // small for the location's precision gives them no direction (the zero vector).
         try {
-            built.constructRay(1, 1, 0, 0);
+            checked.constructRay(1, 1, 0, 0);
             for (int i = 0; i < 2; ++i)
-                for (int j = 0; j < 2; ++j) built.constructRay(2, 2, j, i);
+                for (int j = 0; j < 2; ++j) checked.constructRay(2, 2, j, i);
         } catch (IllegalArgumentException ex) {
             throw e.errorAt("vp-distance", "invalid <camera>: no ray through the view plane: " + ex.getMessage()
                     + " (expected a view plane whose distance and size are not lost in the precision of the location)", ex);

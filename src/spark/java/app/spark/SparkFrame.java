@@ -26,9 +26,9 @@ public final class SparkFrame {
         this.scene = scene;
         this.settings = settings;
         this.output = output;
-        // The camera checks what neither the reader nor RenderSettings did (e.g. a view whose up
-        // is parallel to its direction). Those checks do not depend on the image size, so a 1×1
-        // image stands in for the real one, which is allocated only to assemble the tiles.
+        // The settings replayed onto a camera are checked by it as a local render's are (the ray
+        // budget of the command line's changes, say). Those checks do not depend on the image
+        // size, so a 1×1 image stands in for the real one, allocated only to assemble the tiles.
         this.description = camera(settings.withImage(settings.imageName(), 1, 1).newImageWriter()).describe();
     }
 

@@ -253,6 +253,17 @@ class RenderCommandTest {
         }
 
         @Test
+        @DisplayName("--aa over the file's values: the file's grid and seed stay, the option's mode wins")
+        void optionsOverTheFile() throws IOException {
+            Path file = write("grid.xml", SMALL.replace("<render threads=\"1\" beam-size=\"3\" shadow-samples=\"3\"/>",
+                    "<render threads=\"1\" beam-size=\"3\" shadow-samples=\"3\" seed=\"4\">"
+                            + "<anti-aliasing mode=\"corners\" grid=\"2 3\"/></render>"));
+            Run r = run(file.toString(), "-o", dir.resolve("out.png").toString(), "--aa", "random", "--width", "8");
+            assertThat(r.exitCode()).isZero();
+            assertThat(r.out()).contains("render small 8x4 [RANDOM 2x3, bvh on, beam 3, shadow samples 3, seed 4]");
+        }
+
+        @Test
         @DisplayName("--seed: the same seed gives the same image, another seed another")
         void seed() throws IOException {
             Path a = dir.resolve("a.png"), b = dir.resolve("b.png"), c = dir.resolve("c.png");

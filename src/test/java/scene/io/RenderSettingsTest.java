@@ -2,9 +2,13 @@ package scene.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.assertj.core.api.Assertions.catchThrowable;
 
-import java.lang.reflect.RecordComponent;
-import java.util.Map;
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.ObjectInputStream;
+import java.io.ObjectOutputStream;
 import java.util.function.UnaryOperator;
 import java.util.stream.Stream;
 
@@ -14,7 +18,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
-import org.junit.jupiter.params.provider.EnumSource;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
@@ -26,8 +29,9 @@ import renderer.ImageWriter;
 import scene.Scene;
 
 /**
- * {@link RenderSettings}: what {@code applyTo} sets on a camera builder. Cameras are only built
- * and described here, never rendered.
+ * {@link RenderSettings} as a specification: it states only what it is given, replays that onto a
+ * camera builder, and leaves everything else, defaults and limits, to the library. Cameras are
+ * built and described here, never rendered.
  */
 class RenderSettingsTest {
     private static final Scene SCENE = new Scene("empty");
@@ -42,79 +46,221 @@ class RenderSettingsTest {
         return settings.applyTo(camera, SCENE, new ImageWriter("settings", 1, 1)).setSummary(false).build();
     }
 
+    /** The description of a camera built with the library's defaults and {@code change}. */
+    private static String library(UnaryOperator<Camera.Builder> change) {
+        return change.apply(view()).setSummary(false).build().describe();
+    }
+
     @Nested
-    @DisplayName("anti-aliasing: the grid belongs to RANDOM alone")
-    class AntiAliasingGrid {
+    @DisplayName("replayed onto the builder: each stated value through the builder's own setter, nothing else")
+    class Replay {
         @Test
-        @DisplayName("RANDOM sets its grid")
-        void random() {
-            RenderSettings s = RenderSettings.defaults("x").withAntiAliasing(AntiAliasing.RANDOM)
-                    .withAntiAliasingParameters(3, 5, 3, 8);
-            assertThat(apply(s, view()).describe()).startsWith("RANDOM 3x5,");
+        @DisplayName("a specification that states nothing leaves the camera as the library makes it")
+        void nothingStated() {
+            assertThat(apply(RenderSettings.empty(), view()).describe()).isEqualTo(library(b -> b));
+            assertThat(RenderSettings.empty()).hasToString("RenderSettings[]");
         }
 
-        /**
-         * The camera accepts a grid only together with RANDOM, so for the other modes the
-         * settings do not pass theirs: a grid set on the builder before stays.
-         */
+        static Stream<Arguments> statements() {
+            return Stream.of(
+                    Arguments.of("withAntiAliasing", (UnaryOperator<RenderSettings>) s -> s.withAntiAliasing(AntiAliasing.CORNERS),
+                            (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.CORNERS)),
+                    Arguments.of("withAntiAliasingGrid", (UnaryOperator<RenderSettings>) s -> s
+                            .withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(3, 5),
+                            (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.RANDOM, 3, 5)),
+                    Arguments.of("withAdaptiveDepth and withAdaptiveThreshold", (UnaryOperator<RenderSettings>) s -> s
+                            .withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(5).withAdaptiveThreshold(2.5),
+                            (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(5, 2.5)),
+                    Arguments.of("withDepthOfField", (UnaryOperator<RenderSettings>) s -> s.withDepthOfField(900, 5, 12),
+                            (UnaryOperator<Camera.Builder>) b -> b.setDepthOfField(900, 5).setDepthOfFieldSamples(12)),
+                    Arguments.of("withSeed", (UnaryOperator<RenderSettings>) s -> s.withSeed(-42),
+                            (UnaryOperator<Camera.Builder>) b -> b.setSeed(-42)),
+                    Arguments.of("withTracer", (UnaryOperator<RenderSettings>) s -> s.withTracer(false, 7, 9),
+                            (UnaryOperator<Camera.Builder>) b -> b.setRayTracer(new renderer.RayTracerBasic(SCENE)
+                                    .setBvh(false).setBeamSize(7).setShadowSamples(9))));
+        }
+
         @ParameterizedTest(name = "{0}")
-        @EnumSource(value = AntiAliasing.class, names = "RANDOM", mode = EnumSource.Mode.EXCLUDE)
-        @DisplayName("another mode leaves the builder's grid alone")
-        void otherModes(AntiAliasing mode) {
-            RenderSettings s = RenderSettings.defaults("x").withAntiAliasing(mode).withAntiAliasingParameters(3, 5, 3, 8);
-            Camera.Builder camera = view().setAntiAliasingGrid(7, 2);
-            assertThat(apply(s, camera).describe()).startsWith(mode.name());
-            assertThat(camera.setAntiAliasing(AntiAliasing.RANDOM).setSummary(false).build().describe())
-                    .startsWith("RANDOM 7x2,");
+        @MethodSource("statements")
+        @DisplayName("the camera is the one the builder's setters make")
+        void sameAsTheSetters(String name, UnaryOperator<RenderSettings> statement, UnaryOperator<Camera.Builder> setters) {
+            assertThat(apply(statement.apply(RenderSettings.empty()), view()).describe()).isEqualTo(library(setters));
+        }
+
+        @Test
+        @DisplayName("what is not stated stays as the builder has it")
+        void unstatedStays() {
+            Camera.Builder camera = view().setAntiAliasingGrid(7, 2).setSeed(9).setAdaptive(5, 2.5);
+            apply(RenderSettings.empty().withAntiAliasing(AntiAliasing.RANDOM), camera);
+            assertThat(camera.setSummary(false).build().describe()).startsWith("RANDOM 7x2,").endsWith("seed 9");
+            assertThat(camera.setAntiAliasing(AntiAliasing.ADAPTIVE).build().describe()).startsWith("ADAPTIVE depth 5 threshold 2.5,");
+        }
+
+        /** The builder keeps the grid for RANDOM whatever the mode: a later {@code --aa random} finds it. */
+        @Test
+        @DisplayName("a stated grid is replayed whatever the mode")
+        void gridWithAnotherMode() {
+            Camera corners = apply(RenderSettings.empty().withAntiAliasing(AntiAliasing.CORNERS).withAntiAliasingGrid(3, 5), view());
+            assertThat(corners.describe()).startsWith("CORNERS,");
+            assertThat(Camera.getBuilder(corners).setAntiAliasing(AntiAliasing.RANDOM).build().describe()).startsWith("RANDOM 3x5,");
+        }
+
+        @Test
+        @DisplayName("a stated pinhole (focal distance 0) undoes a lens set before")
+        void pinhole() {
+            Camera camera = apply(RenderSettings.empty().withDepthOfField(0, 0), view().setDepthOfField(10, 2));
+            assertThat(camera.describe()).doesNotContain("DOF");
+        }
+
+        /** A half-stated ADAPTIVE pair is completed with the builder's own value of the other half. */
+        @ParameterizedTest(name = "{0}")
+        @CsvSource({ "depth only, 5, ", "threshold only, , 2.5" })
+        @DisplayName("ADAPTIVE's depth or threshold alone: the other is the library's")
+        void adaptiveHalf(String name, Integer depth, Double threshold) {
+            RenderSettings s = RenderSettings.empty().withAntiAliasing(AntiAliasing.ADAPTIVE);
+            if (depth != null) s = s.withAdaptiveDepth(depth);
+            if (threshold != null) s = s.withAdaptiveThreshold(threshold);
+            String library = library(b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE));
+            String defaults = library.substring(0, library.indexOf(','));
+            String expected = "ADAPTIVE depth " + (depth != null ? depth : defaults.split(" ")[2]) + " threshold "
+                    + (threshold != null ? threshold : defaults.split(" ")[4]);
+            assertThat(apply(s, view()).describe()).startsWith(expected + ",");
+        }
+
+        @Test
+        @DisplayName("a value the library refuses is refused when replayed, with the library's message")
+        void refusedByTheLibrary() {
+            assertThatThrownBy(() -> apply(RenderSettings.empty().withAdaptiveDepth(7), view()))
+                    .isInstanceOf(IllegalArgumentException.class).hasMessage("adaptive depth must be in 1..6, got 7");
+            assertThatThrownBy(() -> apply(RenderSettings.empty().withBeamSize(0), view()))
+                    .isInstanceOf(IllegalArgumentException.class).hasMessage("beam size must be at least 1 ray, got 0");
         }
     }
 
     @Nested
-    @DisplayName("each with… method changes the values it names and nothing else")
-    class With {
-        /** Every value differs from the defaults and from every other value of its type. */
-        private static final RenderSettings BASE = new RenderSettings("base", 10, 20, 3, new Color(1, 2, 3),
-                AntiAliasing.CORNERS, 4, 5, 6, 7.5, 8.5, 9.5, 11, 12, 13L, false, 14, 15);
-        private static final Color GREEN = new Color(0, 255, 0);
+    @DisplayName("then: a second specification replayed after the first (a command line's options over a file)")
+    class Then {
+        /** A specification that states every value, each different from the one of LATER. */
+        private static final RenderSettings FILE = RenderSettings.defaults("file").withImage("file", 10, 20)
+                .withGrid(3, new Color(1, 2, 3)).withAntiAliasing(AntiAliasing.CORNERS).withAntiAliasingParameters(4, 5, 6, 7.5)
+                .withDepthOfField(8.5, 9.5, 11).withThreads(1).withSeed(13).withTracer(false, 14, 15);
 
-        static Stream<Arguments> edits() {
+        static Stream<Arguments> later() {
             return Stream.of(
-                    edit("withImage", s -> s.withImage("other", 30, 40), Map.of("imageName", "other", "width", 30, "height", 40)),
-                    edit("withGrid", s -> s.withGrid(50, GREEN), Map.of("gridInterval", 50, "gridColor", GREEN)),
-                    edit("withAntiAliasing", s -> s.withAntiAliasing(AntiAliasing.ADAPTIVE),
-                            Map.of("antiAliasing", AntiAliasing.ADAPTIVE)),
-                    edit("withAntiAliasingParameters", s -> s.withAntiAliasingParameters(60, 70, 2, 80.5),
-                            Map.of("aaColumns", 60, "aaRows", 70, "adaptiveDepth", 2, "adaptiveThreshold", 80.5)),
-                    edit("withDepthOfField", s -> s.withDepthOfField(90.5, 100.5, 110),
-                            Map.of("focalDistance", 90.5, "aperture", 100.5, "dofSamples", 110)),
-                    edit("withThreads", s -> s.withThreads(120), Map.of("threads", 120)),
-                    edit("withSeed", s -> s.withSeed(-130L), Map.of("seed", -130L)),
-                    edit("withTracer", s -> s.withTracer(true, 140, 150),
-                            Map.of("bvh", true, "beamSize", 140, "shadowSamples", 150)));
-        }
-
-        private static Arguments edit(String name, UnaryOperator<RenderSettings> change, Map<String, Object> changed) {
-            return Arguments.of(name, change, changed);
+                    Arguments.of("withImage", (UnaryOperator<RenderSettings>) s -> s.withImage("other", 30, 40)),
+                    Arguments.of("withImageSize", (UnaryOperator<RenderSettings>) s -> s.withImageSize(30, 40)),
+                    Arguments.of("withGrid", (UnaryOperator<RenderSettings>) s -> s.withGrid(50, new Color(0, 255, 0))),
+                    Arguments.of("withAntiAliasing", (UnaryOperator<RenderSettings>) s -> s.withAntiAliasing(AntiAliasing.ADAPTIVE)),
+                    Arguments.of("withAntiAliasingGrid", (UnaryOperator<RenderSettings>) s -> s.withAntiAliasingGrid(60, 70)),
+                    Arguments.of("withAdaptiveDepth", (UnaryOperator<RenderSettings>) s -> s.withAdaptiveDepth(2)),
+                    Arguments.of("withAdaptiveThreshold", (UnaryOperator<RenderSettings>) s -> s.withAdaptiveThreshold(80.5)),
+                    Arguments.of("withDepthOfField", (UnaryOperator<RenderSettings>) s -> s.withDepthOfField(90.5, 100.5)),
+                    Arguments.of("withDepthOfFieldSamples", (UnaryOperator<RenderSettings>) s -> s.withDepthOfFieldSamples(110)),
+                    Arguments.of("withThreads", (UnaryOperator<RenderSettings>) s -> s.withThreads(2)),
+                    Arguments.of("withSeed", (UnaryOperator<RenderSettings>) s -> s.withSeed(-130)),
+                    Arguments.of("withBvh", (UnaryOperator<RenderSettings>) s -> s.withBvh(true)),
+                    Arguments.of("withBeamSize", (UnaryOperator<RenderSettings>) s -> s.withBeamSize(140)),
+                    Arguments.of("withShadowSamples", (UnaryOperator<RenderSettings>) s -> s.withShadowSamples(150)));
         }
 
         @ParameterizedTest(name = "{0}")
-        @MethodSource("edits")
-        void changesWhatItNames(String name, UnaryOperator<RenderSettings> change, Map<String, Object> changed)
-                throws ReflectiveOperationException {
-            RenderSettings edited = change.apply(BASE);
-            for (RecordComponent c : RenderSettings.class.getRecordComponents()) {
-                Object expected = changed.containsKey(c.getName()) ? changed.get(c.getName())
-                        : c.getAccessor().invoke(BASE);
-                assertThat(c.getAccessor().invoke(edited)).as(c.getName()).isEqualTo(expected);
-            }
+        @MethodSource("later")
+        @DisplayName("the later's stated values win; the first's stay elsewhere")
+        void laterWins(String name, UnaryOperator<RenderSettings> statement) {
+            RenderSettings later = statement.apply(RenderSettings.empty());
+            assertThat(later).as("states something").isNotEqualTo(RenderSettings.empty());
+            assertThat(FILE.then(later)).isEqualTo(statement.apply(FILE)).isNotEqualTo(FILE);
         }
 
         @Test
-        @DisplayName("the defaults, value by value")
-        void defaults() {
+        @DisplayName("nothing stated on either side changes nothing")
+        void identity() {
+            assertThat(FILE.then(RenderSettings.empty())).isEqualTo(FILE);
+            assertThat(RenderSettings.empty().then(FILE)).isEqualTo(FILE);
+        }
+    }
+
+    @Nested
+    @DisplayName("the format's own values: the image and the thread count")
+    class FormatDefaults {
+        @Test
+        @DisplayName("a file that states nothing: its name, 500×500, no grid, yellow")
+        void image() {
             RenderSettings d = RenderSettings.defaults("scene");
-            assertThat(d).isEqualTo(new RenderSettings("scene", 500, 500, 0, RenderSettings.DEFAULT_GRID_COLOR,
-                    AntiAliasing.NONE, 4, 4, 3, 8, 0, 0, 16, -2, 0, true, 16, 16));
+            assertThat(d.imageName()).isEqualTo("scene");
+            assertThat(new int[] { d.width(), d.height(), d.gridInterval() }).containsExactly(500, 500, 0);
+            assertThat(d.gridColor().toRgb()).isEqualTo(java.awt.Color.YELLOW.getRGB() & 0xFFFFFF);
+            assertThat(d).hasToString("RenderSettings[image=scene]");
+        }
+
+        @Test
+        @DisplayName("threads: all cores unless stated, where the builder's default is the calling thread")
+        void threads() {
+            Camera.Builder unstated = view();
+            apply(RenderSettings.empty(), unstated);
+            Camera.Builder stated = view();
+            apply(RenderSettings.empty().withThreads(0), stated);
+            assertThat(threadsOf(unstated)).isEqualTo(Runtime.getRuntime().availableProcessors());
+            assertThat(threadsOf(stated)).isZero();
+        }
+
+        /** The thread count a builder's camera renders with, as its render reports it (a 1×1 empty image). */
+        private static int threadsOf(Camera.Builder camera) {
+            return camera.setSummary(false).build().render().threads();
+        }
+
+        @Test
+        @DisplayName("drawGrid draws only when a grid is stated")
+        void grid() {
+            Camera noGrid = apply(RenderSettings.defaults("x"), view());
+            RenderSettings.defaults("x").drawGrid(noGrid);
+            assertThat(noGrid.getImageWriter().getRgb(0, 0)).isZero();
+            Camera grid = apply(RenderSettings.defaults("x").withGrid(1, new Color(0, 255, 0)), view());
+            RenderSettings.defaults("x").withGrid(1, new Color(0, 255, 0)).drawGrid(grid);
+            assertThat(grid.getImageWriter().getRgb(0, 0)).isEqualTo(0x00FF00);
+        }
+    }
+
+    @Nested
+    @DisplayName("the ray budget: the library's, checked as build() checks it")
+    class RayBudget {
+        static Stream<RenderSettings> specifications() {
+            RenderSettings none = RenderSettings.empty();
+            return Stream.of(none, none.withBeamSize(1 << 16).withShadowSamples(1 << 8),
+                    none.withBeamSize(1 << 16).withShadowSamples((1 << 8) + 1),
+                    none.withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(256, 256),
+                    none.withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(256, 256).withBeamSize(17),
+                    none.withAntiAliasingGrid(256, 256).withBeamSize(17),
+                    none.withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(6).withBeamSize(248),
+                    none.withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(6).withBeamSize(256),
+                    none.withAntiAliasing(AntiAliasing.ADAPTIVE).withBeamSize(256).withShadowSamples(256),
+                    none.withDepthOfField(10, 1, 60000).withBeamSize(100),
+                    none.withAntiAliasing(AntiAliasing.CORNERS).withDepthOfField(10, 1, 60000).withBeamSize(100),
+                    none.withBeamSize(Integer.MAX_VALUE).withShadowSamples(Integer.MAX_VALUE));
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("specifications")
+        @DisplayName("requireRayBudget refuses exactly what building the camera refuses, with its message")
+        void sameAsBuild(RenderSettings s) {
+            Throwable built = catchThrowable(() -> apply(s, view()));
+            Throwable checked = catchThrowable(s::requireRayBudget);
+            if (built == null) assertThat(checked).isNull();
+            else assertThat(checked).isInstanceOf(IllegalArgumentException.class).hasMessage(built.getMessage())
+                    .hasMessageContaining("more than the limit of " + RenderSettings.MAX_RAYS_PER_PIXEL);
+        }
+
+        @Test
+        @DisplayName("the library's figures: a 256×256 grid at 16×16 is the limit; ADAPTIVE depth 3 at 256×256 fits")
+        void figures() {
+            RenderSettings grid = RenderSettings.empty().withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(256, 256);
+            assertThat(grid.requireRayBudget()).isSameAs(grid);
+            assertThatThrownBy(() -> grid.withBeamSize(17).requireRayBudget()).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("RANDOM sampling with 65536 samples per pixel × beam size 17 × 16 shadow samples is 17825792"
+                            + " rays per pixel, more than the limit of 16777216");
+            // The lattice of depth 3 traces at most (2^3 + 1)² = 81 camera rays: 81 × 256 × 256 < 2^24.
+            RenderSettings.empty().withAntiAliasing(AntiAliasing.ADAPTIVE).withBeamSize(256).withShadowSamples(256)
+                    .requireRayBudget();
         }
     }
 
@@ -126,6 +272,8 @@ class RenderSettingsTest {
         @DisplayName("refused, naming the size")
         void refused(int width, int height) {
             assertThatThrownBy(() -> RenderSettings.defaults("x").withImage("x", width, height))
+                    .isInstanceOf(IllegalArgumentException.class).hasMessageContaining(width + "x" + height);
+            assertThatThrownBy(() -> RenderSettings.empty().withImageSize(width, height))
                     .isInstanceOf(IllegalArgumentException.class).hasMessageContaining(width + "x" + height);
         }
 
@@ -145,43 +293,6 @@ class RenderSettingsTest {
         void accepted(int width, int height) {
             RenderSettings s = RenderSettings.defaults("x").withImage("x", width, height);
             assertThat(new int[] { s.width(), s.height() }).containsExactly(width, height);
-        }
-    }
-
-    @Nested
-    @DisplayName("the ray budget: samples per pixel × beam size × shadow samples at most 2^24")
-    class RayBudget {
-        @ParameterizedTest(name = "{0}")
-        @CsvSource({ "NONE, 1", "CORNERS, 5", "RANDOM, 12", "ADAPTIVE, 81" })
-        @DisplayName("samples per pixel of each mode (ADAPTIVE: its whole lattice at depth 3, (2^3 + 1)² points)")
-        void samplesPerPixel(AntiAliasing mode, long samples) {
-            RenderSettings s = RenderSettings.defaults("x").withAntiAliasingParameters(3, 4, 3, 8).withAntiAliasing(mode);
-            assertThat(s.samplesPerPixel()).isEqualTo(samples);
-        }
-
-        @Test
-        @DisplayName("lens samples count without anti-aliasing")
-        void lensSamples() {
-            assertThat(RenderSettings.defaults("x").withDepthOfField(10, 1, 40).samplesPerPixel()).isEqualTo(40);
-        }
-
-        @Test
-        @DisplayName("up to the budget accepted; one factor more refused, naming every factor")
-        void limit() {
-            RenderSettings grid = RenderSettings.defaults("x").withAntiAliasingParameters(256, 256, 3, 8)
-                    .withAntiAliasing(AntiAliasing.RANDOM);
-            assertThat(grid.withTracer(true, 16, 16).samplesPerPixel() * 16 * 16).isEqualTo(RenderSettings.MAX_RAYS_PER_PIXEL);
-            assertThatThrownBy(() -> grid.withTracer(true, 17, 16)).isInstanceOf(IllegalArgumentException.class)
-                    .hasMessage("RANDOM sampling with 65536 samples per pixel × beam size 17 × 16 shadow samples is 17825792"
-                            + " rays per pixel, more than the limit of 16777216");
-        }
-
-        @Test
-        @DisplayName("factors whose product overflows a long are still refused")
-        void noOverflow() {
-            assertThatThrownBy(() -> RenderSettings.defaults("x").withAntiAliasingParameters(65536, 65536, 3, 8)
-                    .withAntiAliasing(AntiAliasing.RANDOM).withTracer(true, Integer.MAX_VALUE, Integer.MAX_VALUE))
-                    .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("more than the limit of 16777216");
         }
     }
 
@@ -220,6 +331,20 @@ class RenderSettingsTest {
             RenderSettings.defaults("x".repeat(RenderSettings.MAX_IMAGE_NAME_LENGTH));
             assertThatThrownBy(() -> RenderSettings.defaults("x".repeat(201))).isInstanceOf(IllegalArgumentException.class)
                     .hasMessage("the image name has 201 characters, more than the limit of 200");
+        }
+    }
+
+    @Test
+    @DisplayName("serialized and read back (as a cluster's executors receive it): equal, the stated values kept")
+    void serializable() throws IOException, ClassNotFoundException {
+        RenderSettings s = Then.FILE.then(RenderSettings.empty().withAntiAliasing(AntiAliasing.RANDOM));
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {
+            out.writeObject(s);
+        }
+        try (ObjectInputStream in = new ObjectInputStream(new ByteArrayInputStream(bytes.toByteArray()))) {
+            Object copy = in.readObject();
+            assertThat(copy).isEqualTo(s).hasSameHashCodeAs(s).hasToString(s.toString());
         }
     }
 }

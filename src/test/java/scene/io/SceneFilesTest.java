@@ -123,7 +123,8 @@ class SceneFilesTest {
         assertThat(loaded.scene().geometries.getItems()).hasSize(Showcase.create().geometries.getItems().size()).hasSize(133);
         assertThat(loaded.scene().lights).hasSize(3);
         RenderSettings s = loaded.settings();
-        assertThat(new Object[] { s.width(), s.height(), s.antiAliasing() }).containsExactly(600, 600, AntiAliasing.ADAPTIVE);
+        assertThat(s).isEqualTo(RenderSettings.defaults("showcase").withImage("showcase", 600, 600)
+                .withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(3).withAdaptiveThreshold(8));
 
         Scene javaScene = Showcase.create();
         Camera.Builder javaCamera = Camera.getBuilder().setLocation(Showcase.CAMERA_LOCATION)
@@ -165,7 +166,8 @@ class SceneFilesTest {
         assertThat(wall).hasSize(64);
         assertThat(wall).allSatisfy(g -> assertThat(((Geometry) g).getMaterial().reflectionSpread).isEqualTo(0.1));
         assertThat(loaded.scene().lights).hasSize(4);
-        assertThat(loaded.settings().beamSize()).isEqualTo(10);
+        assertThat(loaded.settings()).isEqualTo(RenderSettings.defaults("glossy").withImage("glossy", 1000, 1000)
+                .withBeamSize(10));
         // The wall spans ±250: a ray from the camera through (±240, ±240, -250) hits a tile.
         Camera camera = loaded.requireCamera().setSummary(false).build();
         assertThat(camera.getLocation()).isEqualTo(new Point(0, 0, 1000));

@@ -428,7 +428,7 @@ class XmlSceneReaderTest {
     @DisplayName("<image> and <render>")
     class Settings {
         @Test
-        @DisplayName("every setting is read")
+        @DisplayName("every setting is read, stated as the file states it")
         void everything() throws Exception {
             RenderSettings s = readScene("""
                     <image name="picture" width="64" height="32" grid-interval="8" grid-color="0 255 0"/>
@@ -436,37 +436,38 @@ class XmlSceneReaderTest {
                         <anti-aliasing mode="random" grid="3 5" depth="4" threshold="2.5"/>
                         <depth-of-field focal-distance="900" aperture="5" samples="12"/>
                     </render>""").settings();
-            assertThat(s.imageName()).isEqualTo("picture");
-            assertThat(s.width()).isEqualTo(64);
-            assertThat(s.height()).isEqualTo(32);
-            assertThat(s.gridInterval()).isEqualTo(8);
+            assertThat(s).isEqualTo(RenderSettings.defaults("picture").withImage("picture", 64, 32)
+                    .withGrid(8, new Color(0, 255, 0)).withThreads(3).withSeed(-42).withTracer(false, 7, 9)
+                    .withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingParameters(3, 5, 4, 2.5)
+                    .withDepthOfField(900, 5, 12));
+            assertThat(new int[] { s.width(), s.height(), s.gridInterval() }).containsExactly(64, 32, 8);
             assertColor(s.gridColor(), 0, 255, 0);
-            assertThat(s.threads()).isEqualTo(3);
-            assertThat(s.seed()).isEqualTo(-42);
-            assertThat(s.bvh()).isFalse();
-            assertThat(s.beamSize()).isEqualTo(7);
-            assertThat(s.shadowSamples()).isEqualTo(9);
-            assertThat(s.antiAliasing()).isEqualTo(AntiAliasing.RANDOM);
-            assertThat(new int[] { s.aaColumns(), s.aaRows(), s.adaptiveDepth() }).containsExactly(3, 5, 4);
-            assertThat(s.adaptiveThreshold()).isEqualTo(2.5);
-            assertThat(s.focalDistance()).isEqualTo(900);
-            assertThat(s.aperture()).isEqualTo(5);
-            assertThat(s.dofSamples()).isEqualTo(12);
+        }
+
+        @Test
+        @DisplayName("only what the file states: <render> with one attribute states that one")
+        void onlyStated() throws Exception {
+            assertThat(readScene("<render seed=\"5\"/>").settings()).isEqualTo(RenderSettings.defaults("scene").withSeed(5));
+            assertThat(readScene("<render><anti-aliasing mode=\"adaptive\" depth=\"5\"/></render>").settings())
+                    .isEqualTo(RenderSettings.defaults("scene").withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(5));
+            assertThat(readScene("<image height=\"20\"/>").settings()).as("a size is stated whole")
+                    .isEqualTo(RenderSettings.defaults("scene").withImageSize(RenderSettings.DEFAULT_SIZE, 20));
         }
 
         @ParameterizedTest(name = "mode=\"{0}\"")
         @CsvSource({ "none, NONE", "random, RANDOM", "CORNERS, CORNERS", "Adaptive, ADAPTIVE" })
         @DisplayName("anti-aliasing modes, case-insensitive")
         void modes(String mode, AntiAliasing expected) throws Exception {
-            assertThat(readScene("<render><anti-aliasing mode=\"" + mode + "\"/></render>").settings().antiAliasing())
-                    .isEqualTo(expected);
+            assertThat(readScene("<render><anti-aliasing mode=\"" + mode + "\"/></render>").settings())
+                    .isEqualTo(RenderSettings.defaults("scene").withAntiAliasing(expected));
         }
 
         @Test
         @DisplayName("one grid number means a square grid")
         void squareGrid() throws Exception {
             RenderSettings s = readScene("<render><anti-aliasing mode=\"random\" grid=\"17\"/></render>").settings();
-            assertThat(new int[] { s.aaColumns(), s.aaRows() }).containsExactly(17, 17);
+            assertThat(s).isEqualTo(RenderSettings.defaults("scene").withAntiAliasing(AntiAliasing.RANDOM)
+                    .withAntiAliasingGrid(17, 17));
         }
 
         @Test
