@@ -4,5 +4,40 @@
  * {@link renderer.ImageWriter} and what a render did, {@link renderer.RenderStats}. One render
  * loop serves every anti-aliasing mode, depth of field and thread count; every random number
  * comes from a stream keyed by (seed, pixel, sample), so images do not depend on threads.
+ *
+ * <p>Roles in this package, in the order a render meets them (values flow one way: nothing
+ * below reads settings back from what is above it):
+ * <ul>
+ * <li>The course's face, which scene tests call: {@code Camera} and its {@code Builder},
+ * {@code ImageWriter}, {@code RayTracerBase} with {@code RayTracerBasic} (the Whitted tracer) and
+ * {@code SimpleRayTracer}, {@code AntiAliasing}, {@code RayTracerType}, and what a render reports,
+ * {@code RenderStats} (with the JDK Flight Recorder event {@code RenderEvent}).</li>
+ * <li>The values a built camera is a facade over, each checked once, where it is made:
+ * {@code View} (location, frame, view plane and resolution, lens: it makes camera rays from film
+ * and lens coordinates), {@code Sampling} (the anti-aliasing mode and its parameters, lens samples,
+ * seed: it makes each worker's sampler and knows the camera rays a pixel may take) and
+ * {@code Execution} (threads, tile size, progress, output). {@code RayBudget} holds the rays of a
+ * pixel to one limit.</li>
+ * <li>The loop: {@code RenderLoop(View, Sampling, Execution, tracer, image)} cuts the image into
+ * tiles that workers claim; each worker asks the tracer for its {@code TraceContext} (its scratch
+ * state, never shared) and the sampling for a {@code PixelSampler} ({@code CenterSampler},
+ * {@code GridSampler}, {@code LatticeSampler}), which positions the {@code SampleStream} of each
+ * sample, draws film and lens coordinates and gets the sample's colour back as the return value.
+ * {@code RegionRenderer} renders rectangles of an image for a distributed render;
+ * {@code Progress} prints the progress lines; {@code SceneStamp} notices a scene changed during a
+ * render.</li>
+ * <li>The shading, package-private under {@code RayTracerBasic}: {@code WhittedShader} (Phong per
+ * light, shadows, reflection and refraction by one ray or a beam, colours in one small mutable
+ * {@code primitives.Rgb} per recursion level), {@code Transmittance} (the kT product of a shadow
+ * ray's any-hit walk) and {@code ShadowCache} (the occluder a shadow ray found last).</li>
+ * <li>Around the write: {@code InFlightFile} (a PNG is written to a temporary file and moved into
+ * place) and {@code CallingTest} (the image name a 2024&ndash;25 flow takes from the JUnit test).</li>
+ * </ul>
+ *
+ * <p>Invariants the tests hold: an image does not depend on the thread count or the tiling
+ * ({@code DeterminismTest}, {@code RegionRendererTest}); the camera rays a pixel traces in the worst
+ * case equal the budget's figure for every mode ({@code SamplingTest}); the render path allocates
+ * at most 16 bytes per ray ({@code AllocationTest}); every image equals its committed reference
+ * (the golden tests, {@code renderer.golden}).
  */
 package renderer;
