@@ -691,6 +691,22 @@ public final class Camera {
         }
 
         /**
+         * Checks the ray budget of the current sampling, lens and tracer settings, as
+         * {@link #build()} does, without a view or an image: what a scene file's settings are
+         * checked with before any camera is made.
+         *
+         * @return this builder, for chaining
+         * @throws IllegalArgumentException when a pixel would take more than
+         *                                  {@link RayBudget#MAX_RAYS_PER_PIXEL} rays (camera
+         *                                  samples × the tracer's beam size × shadow samples,
+         *                                  naming them)
+         */
+        public Builder requireRayBudget() {
+            sampling().requireRayBudget(new View.Lens(aperture, focalDistance), tracer());
+            return this;
+        }
+
+        /**
          * Checks the settings and makes the camera, with a 1×1 image and a
          * {@link SimpleRayTracer} on an empty scene when none were given.
          *

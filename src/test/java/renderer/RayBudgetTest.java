@@ -49,6 +49,19 @@ class RayBudgetTest {
         }
 
         @Test
+        @DisplayName("requireRayBudget() checks the sampling, lens and tracer alone: no view, no image needed")
+        void withoutAView() {
+            Camera.Builder noView = Camera.getBuilder()
+                    .setRayTracer(new RayTracerBasic(new Scene("s")).setBeamSize(1_000_000_000));
+            assertThatThrownBy(noView::requireRayBudget).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("NONE sampling with 1 samples per pixel × beam size 1000000000 × 16 shadow samples"
+                            + " is 16000000000 rays per pixel, more than the limit of 16777216");
+            Camera.Builder fits = Camera.getBuilder().setRayTracer(new RayTracerBasic(new Scene("s")))
+                    .setAntiAliasing(AntiAliasing.ADAPTIVE);
+            assertThat(fits.requireRayBudget()).isSameAs(fits);
+        }
+
+        @Test
         @DisplayName("refused before the image is allocated: a 40000x40000 resolution costs nothing")
         void beforeTheImage() {
             Camera.Builder builder = camera(new RayTracerBasic(new Scene("s")).setBeamSize(1_000_000_000), 1)

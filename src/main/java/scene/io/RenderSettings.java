@@ -477,9 +477,9 @@ public final class RenderSettings implements java.io.Serializable {
 
     /**
      * Checks this specification against the library's ray budget, as {@code Camera.Builder.build()}
-     * will when it is replayed: the stated values over the library's defaults. The library checks
-     * the budget when it builds a camera, so one is built, with a stand-in view (the budget does
-     * not depend on it but on the lens, which is stated or the builder's) and a 1×1 image.
+     * will when it is replayed: the stated values over the library's defaults, replayed onto a
+     * fresh builder and tracer ({@link Camera.Builder#requireRayBudget()}; the budget depends on
+     * the sampling, the lens and the tracer, not on the view).
      *
      * @return this specification
      * @throws IllegalArgumentException for a stated value the camera or the tracer refuses, or
@@ -487,9 +487,7 @@ public final class RenderSettings implements java.io.Serializable {
      *                                  with the library's message naming the factors
      */
     public RenderSettings requireRayBudget() {
-        Camera.Builder camera = Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Point(0, 0, -1))
-                .setVpSize(1, 1).setVpDistance(1);
-        applyTo(camera, new Scene("ray budget"), new ImageWriter(1, 1)).build();
+        applyTo(Camera.getBuilder(), new Scene("ray budget"), new ImageWriter(1, 1)).requireRayBudget();
         return this;
     }
 
