@@ -65,9 +65,8 @@ abstract class BvhLeaf {
      * How a tree may keep this leaf's primitives: {@link #OWN} (the default: it calls the
      * queries), or a kind it tests from {@link #pack packed} numbers with the same arithmetic as
      * the queries, so with the same hits, bit for bit, without reaching the object. Only the
-     * library's own scattered objects (a sphere, a triangle) are packed, and never a subclass,
-     * which may override the queries ({@link Geometry#isLibraryShape()}); a mesh keeps its
-     * triangles in arrays already.
+     * library's own shapes (a sphere, a triangle, a mesh's triangles) are packed, and never a
+     * subclass, which may override the queries ({@link Geometry#isLibraryShape()}).
      */
     byte packedKind() {
         return OWN;

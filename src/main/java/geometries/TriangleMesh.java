@@ -27,10 +27,11 @@ import primitives.Vector;
  *
  * <p>Memory: 12 bytes per triangle (three {@code int} indices) plus 24 bytes per vertex (48 with
  * normals). A closed mesh has about half as many vertices as triangles, so that is about 24 bytes
- * per triangle (36 with normals). Edge vectors are not stored: precomputing the kernel's nine
- * doubles would cost 72 more bytes per triangle, while recomputing them costs six subtractions
- * next to a test of about thirty flops. Measured on a 1,000,000-triangle sphere: 25 bytes per
- * triangle for the mesh, about 130 more for the {@link Bvh} over it.
+ * per triangle (36 with normals). The mesh stores no edge vectors: its own queries recompute
+ * them (six subtractions next to a test of about thirty flops). A {@link Bvh} over a library mesh
+ * keeps a packed copy of the kernel's nine doubles per triangle in leaf order (72 bytes and a
+ * kind byte), which its walks read instead of the mesh's arrays. Measured on a 1,000,000-triangle
+ * sphere before that copy: 25 bytes per triangle for the mesh, about 130 more for the tree.
  *
  * <p>Immutable: the constructor copies its arrays.
  */
@@ -247,6 +248,36 @@ public class TriangleMesh extends Geometry {
     @Override
     int primitiveCount() {
         return triangleCount();
+    }
+
+    /**
+     * A tree keeps the library's mesh triangles packed in leaf order, as it keeps the library's
+     * {@link Triangle}s: a leaf's triangles are then tested from one run of memory, not through
+     * this mesh's index array into vertices scattered over its position array (a cache miss per
+     * vertex on a big mesh). The packed numbers are the ones {@link #intersect(int, Hit)} feeds
+     * the kernel, so a packed triangle gives the same distances, bit for bit
+     * ({@code TriangleMeshTest}, the golden meshes). A subclass keeps its own queries.
+     */
+    @Override
+    byte packedKind() {
+        return isLibraryShape() ? TRIANGLE : OWN;
+    }
+
+    /** The kernel's arguments for triangle {@code prim}: its first vertex and the two edges from it. */
+    @Override
+    void pack(int prim, double[] out, int at) {
+        double[] p = positions;
+        int a = 3 * indices[3 * prim], b = 3 * indices[3 * prim + 1], c = 3 * indices[3 * prim + 2];
+        double ax = p[a], ay = p[a + 1], az = p[a + 2];
+        out[at] = ax;
+        out[at + 1] = ay;
+        out[at + 2] = az;
+        out[at + 3] = p[b] - ax;
+        out[at + 4] = p[b + 1] - ay;
+        out[at + 5] = p[b + 2] - az;
+        out[at + 6] = p[c] - ax;
+        out[at + 7] = p[c + 1] - ay;
+        out[at + 8] = p[c + 2] - az;
     }
 
     @Override

@@ -720,7 +720,7 @@ class BvhTest {
     @DisplayName("packed primitives: library spheres and triangles are tested from the tree's own numbers")
     class Packed {
         @Test
-        @DisplayName("only the library's own sphere and triangle pack; subclasses, polygons and meshes keep their hooks")
+        @DisplayName("only the library's own sphere, triangle and mesh triangles pack; subclasses and polygons keep their hooks")
         void kinds() {
             Point a = new Point(0, 0, 0), b = new Point(1, 0, 0), c = new Point(0, 1, 0);
             assertThat(new Sphere(a, 1).packedKind()).isEqualTo(BvhLeaf.SPHERE);
@@ -728,8 +728,11 @@ class BvhTest {
             assertThat(new Ghost(a, 1).packedKind()).isEqualTo(BvhLeaf.OWN);
             assertThat(new GhostTriangle(a, b, c).packedKind()).isEqualTo(BvhLeaf.OWN);
             assertThat(new Polygon(a, b, c).packedKind()).isEqualTo(BvhLeaf.OWN);
-            assertThat(new TriangleMesh(new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, new int[] { 0, 1, 2 }).packedKind())
-                    .isEqualTo(BvhLeaf.OWN);
+            double[] v = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+            int[] tri = { 0, 1, 2 };
+            assertThat(new TriangleMesh(v, tri).packedKind()).isEqualTo(BvhLeaf.TRIANGLE);
+            assertThat(new TriangleMesh(v, tri) {
+            }.packedKind()).as("a user's mesh subclass").isEqualTo(BvhLeaf.OWN);
         }
 
         @Test
@@ -768,9 +771,13 @@ class BvhTest {
         @Test
         @DisplayName("the packed numbers take memory only when something is packed")
         void indexBytes() {
-            Geometries meshOnly = new Geometries(gridMesh(20));
-            Bvh mesh = Bvh.build(meshOnly);
-            assertThat(mesh.indexBytes()).isEqualTo(mesh.nodeCount() * 32L + mesh.primitiveTotal() * 9L);
+            Geometries polygons = new Geometries();
+            for (int i = 0; i < 50; ++i)
+                polygons.add(new Polygon(new Point(i, 0, 0), new Point(i + 0.5, 0, 0), new Point(i + 0.5, 1, 0), new Point(i, 1, 0)));
+            Bvh own = Bvh.build(polygons);
+            assertThat(own.indexBytes()).isEqualTo(own.nodeCount() * 32L + 50 * 9L);
+            Bvh mesh = Bvh.build(new Geometries(gridMesh(20)));
+            assertThat(mesh.indexBytes()).isEqualTo(mesh.nodeCount() * 32L + mesh.primitiveTotal() * (9L + 72));
             Geometries spheres = new Geometries();
             for (int i = 0; i < 50; ++i) spheres.add(new Sphere(new Point(i, 0, 0), 0.4));
             Bvh packed = Bvh.build(spheres);
