@@ -267,8 +267,12 @@ final class WhittedShader {
         Level below = at.below;
         Rgb k = bounce.k;
         double dirX = bounce.dirX, dirY = bounce.dirY, dirZ = bounce.dirZ;
+        // The secondary rays below are set on the level's record here, not through a helper of
+        // Level: one call level fewer keeps Hit.setRay's normalization inlined into this loop
+        // (without it the glossy row ran 4-12 % slower; BENCHMARKS.md, the pipeline's A/B).
         if (bounce.spread == 0) {
-            below.secondaryRay(hit, dirX, dirY, dirZ);
+            below.hit.reset(Double.POSITIVE_INFINITY).setRay(hit.pointX(), hit.pointY(), hit.pointZ(), dirX, dirY, dirZ,
+                    hit.normalX(), hit.normalY(), hit.normalZ());
             return at.beam.setProduct(shadeSecondaryRay(below, budget, ctx), k);
         }
         double[] basis = ctx.vector;
@@ -294,7 +298,8 @@ final class WhittedShader {
                 dy -= 2 * dn * ny;
                 dz -= 2 * dn * nz;
             }
-            below.secondaryRay(hit, dx, dy, dz);
+            below.hit.reset(Double.POSITIVE_INFINITY).setRay(hit.pointX(), hit.pointY(), hit.pointZ(), dx, dy, dz,
+                    hit.normalX(), hit.normalY(), hit.normalZ());
             sum.addProduct(shadeSecondaryRay(below, 1, ctx), k);
         }
         return sum.reduce(budget);
