@@ -268,8 +268,9 @@ final class WhittedShader {
         Rgb k = bounce.k;
         double dirX = bounce.dirX, dirY = bounce.dirY, dirZ = bounce.dirZ;
         // The secondary rays below are set on the level's record here, not through a helper of
-        // Level: one call level fewer keeps Hit.setRay's normalization inlined into this loop
-        // (without it the glossy row ran 4-12 % slower; BENCHMARKS.md, the pipeline's A/B).
+        // Level: one call level fewer, so that the JIT inlines Hit.setRay's normalization into
+        // this loop as it did before the shading moved here (a profile showed it as a call of its
+        // own; BENCHMARKS.md, the pipeline's A/B).
         if (bounce.spread == 0) {
             below.hit.reset(Double.POSITIVE_INFINITY).setRay(hit.pointX(), hit.pointY(), hit.pointZ(), dirX, dirY, dirZ,
                     hit.normalX(), hit.normalY(), hit.normalZ());
