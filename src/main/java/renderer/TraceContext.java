@@ -109,6 +109,15 @@ final class TraceContext {
             this.level = level;
             this.below = below;
         }
+
+        /**
+         * This level's record, reset, holding the secondary ray {@code new Ray(p, d, n)} from the
+         * hit point p (normal n) of {@code from}: d normalized, the head moved off the surface.
+         */
+        Hit secondaryRay(Hit from, double dx, double dy, double dz) {
+            return hit.reset(Double.POSITIVE_INFINITY).setRay(from.pointX(), from.pointY(), from.pointZ(), dx, dy, dz,
+                    from.normalX(), from.normalY(), from.normalZ());
+        }
     }
 
     /**

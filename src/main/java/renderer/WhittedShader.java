@@ -267,13 +267,8 @@ final class WhittedShader {
         Level below = at.below;
         Rgb k = bounce.k;
         double dirX = bounce.dirX, dirY = bounce.dirY, dirZ = bounce.dirZ;
-        // The secondary rays below are set on the level's record here, not through a helper of
-        // Level: one call level fewer, so that the JIT inlines Hit.setRay's normalization into
-        // this loop as it did before the shading moved here (a profile showed it as a call of its
-        // own; BENCHMARKS.md, the pipeline's A/B).
         if (bounce.spread == 0) {
-            below.hit.reset(Double.POSITIVE_INFINITY).setRay(hit.pointX(), hit.pointY(), hit.pointZ(), dirX, dirY, dirZ,
-                    hit.normalX(), hit.normalY(), hit.normalZ());
+            below.secondaryRay(hit, dirX, dirY, dirZ);
             return at.beam.setProduct(shadeSecondaryRay(below, budget, ctx), k);
         }
         double[] basis = ctx.vector;
@@ -299,8 +294,7 @@ final class WhittedShader {
                 dy -= 2 * dn * ny;
                 dz -= 2 * dn * nz;
             }
-            below.hit.reset(Double.POSITIVE_INFINITY).setRay(hit.pointX(), hit.pointY(), hit.pointZ(), dx, dy, dz,
-                    hit.normalX(), hit.normalY(), hit.normalZ());
+            below.secondaryRay(hit, dx, dy, dz);
             sum.addProduct(shadeSecondaryRay(below, 1, ctx), k);
         }
         return sum.reduce(budget);
