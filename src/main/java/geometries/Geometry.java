@@ -23,6 +23,10 @@ public abstract class Geometry extends Intersectable {
             Plane.class, Tube.class, Cylinder.class);
     /** The library's own shapes: the one list behind {@link #isLibraryShape()}. */
     private static final LibraryClasses SHAPES = PRIMITIVES.and(TriangleMesh.class);
+    // The two answers, fixed per class, asked once: the shadow cache asks one per shadow ray, and
+    // a set lookup there cost the one-thread showcase render several per cent.
+    private final boolean libraryShape = SHAPES.contains(this);
+    private final boolean libraryPrimitive = PRIMITIVES.contains(this);
 
     /**
      * Whether this is one of the library's own shapes, not a subclass of one: its geometry is fixed
@@ -34,7 +38,7 @@ public abstract class Geometry extends Intersectable {
      * @return true for an instance of exactly one of the library's shape classes
      */
     public final boolean isLibraryShape() {
-        return SHAPES.contains(this);
+        return libraryShape;
     }
 
     /**
@@ -47,7 +51,7 @@ public abstract class Geometry extends Intersectable {
      *         {@link TriangleMesh}
      */
     public final boolean isLibraryPrimitive() {
-        return PRIMITIVES.contains(this);
+        return libraryPrimitive;
     }
 
     /** @return the light the surface gives off by itself; black by default */

@@ -1,0 +1,137 @@
+package bench;
+
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.PrintStream;
+import java.lang.reflect.InvocationTargetException;
+import java.lang.reflect.Method;
+import java.net.MalformedURLException;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+/**
+ * Old code against new, in one JVM: two class paths (each a tree's bench classes, main classes
+ * and dependencies) loaded by two isolated class loaders, and {@link RenderBenchmark} of each run
+ * in turn, A then B then B then A…, with the same arguments. For each row: the median over the
+ * pairs of B's median / A's median (each pair measured seconds apart), the same of the fastest
+ * renders, and B's fastest render of all / A's.
+ *
+ * <p>Why not two processes: on a shared two-core machine the speed drifts by tens of per cent
+ * over minutes, so the medians of two processes run one after the other differ by more than the
+ * few per cent being asked about; a pair measured back to back in one process sees the same
+ * drift. The fastest renders matter as much: the slow spells last seconds and slow a render by up
+ * to 1.6×, so the fastest of many renders is the code's speed with the least interference. Each loader has its own classes, so each side keeps its own compiled code and profile.
+ *
+ * <pre>
+ * java -cp target/bench/classes bench.InterleavedAB --a OLD_CP --b NEW_CP --pairs 12 \
+ *      -- --only glossy --match "beam 10, 1 thread" --runs 3 --warmup 2
+ * </pre>
+ * Everything after {@code --} goes to both sides' {@code RenderBenchmark}.
+ */
+public final class InterleavedAB {
+    private InterleavedAB() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        String a = null, b = null;
+        int pairs = 10;
+        int split = Arrays.asList(args).indexOf("--");
+        if (split < 0) throw new IllegalArgumentException("missing -- before RenderBenchmark's arguments");
+        for (int i = 0; i < split; i += 2) {
+            if (i + 1 >= split) throw new IllegalArgumentException(args[i] + " needs a value");
+            switch (args[i]) {
+                case "--a" -> a = args[i + 1];
+                case "--b" -> b = args[i + 1];
+                case "--pairs" -> pairs = Integer.parseInt(args[i + 1]);
+                default -> throw new IllegalArgumentException("unknown option " + args[i]);
+            }
+        }
+        if (a == null || b == null) throw new IllegalArgumentException("--a and --b are required");
+        String[] benchArgs = Arrays.copyOfRange(args, split + 1, args.length);
+        Method mainA = benchMain(a), mainB = benchMain(b);
+        // Per row, per pair: A's median, B's median, A's fastest, B's fastest.
+        Map<String, List<double[]>> rows = new LinkedHashMap<>();
+        for (int p = 0; p < pairs; ++p) {
+            // A first in even pairs, B first in odd ones: a drift within a pair cancels over two.
+            boolean aFirst = p % 2 == 0;
+            Map<String, double[]> first = run(aFirst ? mainA : mainB, benchArgs);
+            Map<String, double[]> second = run(aFirst ? mainB : mainA, benchArgs);
+            Map<String, double[]> ta = aFirst ? first : second, tb = aFirst ? second : first;
+            for (var e : ta.entrySet()) {
+                double[] other = tb.get(e.getKey());
+                if (other == null) continue;
+                double[] x = e.getValue();
+                rows.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(new double[] {x[0], other[0], x[1], other[1]});
+                System.err.printf(Locale.ROOT, "pair %d %s: median A %.3f s, B %.3f s, B/A %.3f; fastest A %.3f s, B %.3f s%n",
+                        p + 1, e.getKey(), x[0], other[0], other[0] / x[0], x[1], other[1]);
+            }
+        }
+        System.out.println("| row | pairs | A median s | B median s | B/A of medians (median of pairs) | its quartiles "
+                + "| B/A of fastest (median of pairs) | fastest A s | fastest B s | B/A of fastest of all |");
+        System.out.println("|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
+        for (var e : rows.entrySet()) {
+            List<double[]> list = e.getValue();
+            double[] ratio = list.stream().mapToDouble(x -> x[1] / x[0]).sorted().toArray();
+            double[] fastRatio = list.stream().mapToDouble(x -> x[3] / x[2]).toArray();
+            double fastA = list.stream().mapToDouble(x -> x[2]).min().orElseThrow();
+            double fastB = list.stream().mapToDouble(x -> x[3]).min().orElseThrow();
+            System.out.printf(Locale.ROOT, "| %s | %d | %.3f | %.3f | %.3f | %.3f–%.3f | %.3f | %.3f | %.3f | %.3f |%n",
+                    e.getKey(), list.size(), RenderBenchmark.median(column(list, 0)), RenderBenchmark.median(column(list, 1)),
+                    RenderBenchmark.median(ratio), quantile(ratio, 0.25), quantile(ratio, 0.75),
+                    RenderBenchmark.median(fastRatio), fastA, fastB, fastB / fastA);
+        }
+    }
+
+    private static double[] column(List<double[]> rows, int i) {
+        return rows.stream().mapToDouble(x -> x[i]).toArray();
+    }
+
+    private static Method benchMain(String classPath) throws ReflectiveOperationException, MalformedURLException {
+        String[] parts = classPath.split(File.pathSeparator);
+        URL[] urls = new URL[parts.length];
+        for (int i = 0; i < parts.length; ++i) urls[i] = new File(parts[i]).toURI().toURL();
+        // The platform loader as parent: nothing of either tree comes from this class's own path.
+        ClassLoader loader = new URLClassLoader(urls, ClassLoader.getPlatformClassLoader());
+        return loader.loadClass("bench.RenderBenchmark").getMethod("main", String[].class);
+    }
+
+    /** One RenderBenchmark run; its table's median and fastest render by row (scene, settings, threads). */
+    private static Map<String, double[]> run(Method main, String[] args) throws IllegalAccessException {
+        PrintStream out = System.out, err = System.err;
+        ByteArrayOutputStream report = new ByteArrayOutputStream();
+        try (PrintStream capture = new PrintStream(report, true, StandardCharsets.UTF_8);
+             PrintStream quiet = new PrintStream(PrintStream.nullOutputStream())) {
+            System.setOut(capture);
+            System.setErr(quiet);
+            main.invoke(null, (Object) args.clone());
+        } catch (InvocationTargetException e) {
+            throw new IllegalStateException("RenderBenchmark failed", e.getCause());
+        } finally {
+            System.setOut(out);
+            System.setErr(err);
+        }
+        Map<String, double[]> medians = new LinkedHashMap<>();
+        for (String line : report.toString(StandardCharsets.UTF_8).split("\n")) {
+            String[] cells = line.split("\\|");
+            // | scene | resolution | settings | threads | runs | median s | …: cells[0] is empty.
+            if (cells.length < 8 || !cells[6].trim().matches("[0-9.]+")) continue;
+            String key = cells[1].trim() + ", " + cells[3].trim() + ", " + cells[4].trim() + " t";
+            medians.put(key, new double[] {Double.parseDouble(cells[6].trim()), Double.parseDouble(cells[7].trim())});
+        }
+        if (medians.isEmpty()) throw new IllegalStateException("no rows in the report:\n" + report);
+        return medians;
+    }
+
+    private static double quantile(double[] sorted, double q) {
+        double pos = q * (sorted.length - 1);
+        int lo = (int) Math.floor(pos), hi = (int) Math.ceil(pos);
+        return sorted[lo] + (sorted[hi] - sorted[lo]) * (pos - lo);
+    }
+}

@@ -1,0 +1,145 @@
+package geometries;
+
+import java.io.IOException;
+import java.lang.reflect.Field;
+import java.nio.ByteBuffer;
+import java.nio.ByteOrder;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Locale;
+
+/**
+ * The work behind {@code bench.MeshRays}'s times: per ray, the node boxes and triangles that
+ * {@link Bvh#closestHit(Hit)} tests, counted by a copy of its walk (the same order, the same
+ * skips) over the tree's own arrays, and the tree's shape (leaves, primitives per leaf, depth,
+ * the surface-area cost). Lives in the bench profile, in the package whose arrays it reads; the
+ * library has no counters on its hot path.
+ *
+ * <pre>java -cp target/bench/classes:target/classes geometries.WalkCounts MESH RAYS</pre>
+ * with the files {@code scripts/embree_benchmark.py} writes (see {@code bench.MeshRays}).
+ */
+public final class WalkCounts {
+    private WalkCounts() {
+    }
+
+    public static void main(String[] args) throws IOException, ReflectiveOperationException {
+        if (args.length != 2) throw new IllegalArgumentException("usage: WalkCounts MESH RAYS");
+        ByteBuffer mesh = ByteBuffer.wrap(Files.readAllBytes(Path.of(args[0]))).order(ByteOrder.LITTLE_ENDIAN);
+        int vertices = mesh.getInt(), triangles = mesh.getInt();
+        double[] positions = new double[3 * vertices];
+        mesh.asDoubleBuffer().get(positions);
+        mesh.position(8 + 8 * positions.length);
+        int[] indices = new int[3 * triangles];
+        mesh.asIntBuffer().get(indices);
+        ByteBuffer rayFile = ByteBuffer.wrap(Files.readAllBytes(Path.of(args[1]))).order(ByteOrder.LITTLE_ENDIAN);
+        int count = rayFile.getInt();
+        double[] rays = new double[6 * count];
+        rayFile.asDoubleBuffer().get(rays);
+
+        Bvh bvh = Bvh.build(new Geometries(new TriangleMesh(positions, indices)), 1);
+        float[] node = field(bvh, "node");
+        double[] packed = field(bvh, "packed");
+        int nodeCount = bvh.nodeCount();
+        long[] totals = new long[3]; // boxes, triangles, hits
+        Hit hit = new Hit();
+        for (int i = 0; i < count; ++i) {
+            int r = 6 * i;
+            hit.setRay(rays[r], rays[r + 1], rays[r + 2], rays[r + 3], rays[r + 4], rays[r + 5]);
+            hit.reset(Double.POSITIVE_INFINITY);
+            if (walk(bvh, node, packed, hit, totals)) totals[2]++;
+        }
+        // The tree's shape: leaves, their sizes, and the SAH cost (1 per box pair, 1 per triangle).
+        long leaves = 0, leafPrims = 0;
+        double rootArea = area(node, 0), sah = 0;
+        for (int n = 0; n < nodeCount; ++n) {
+            int at = BvhNodes.at(n);
+            int c = BvhNodes.count(node, at);
+            if (c > 0) {
+                leaves++;
+                leafPrims += c;
+                sah += area(node, n) / rootArea * c;
+            } else {
+                sah += area(node, n) / rootArea;
+            }
+        }
+        System.out.println(String.format(Locale.ROOT,
+                "{\"triangles\": %d, \"rays\": %d, \"hits\": %d, \"nodes\": %d, \"leaves\": %d, \"per_leaf\": %.2f, "
+                        + "\"depth\": %d, \"sah_cost\": %.2f, \"boxes_per_ray\": %.2f, \"triangles_per_ray\": %.2f}",
+                triangles, count, totals[2], nodeCount, leaves, leafPrims / (double) leaves, bvh.depth(), sah,
+                totals[0] / (double) count, totals[1] / (double) count));
+    }
+
+    /** {@link Bvh#closestHit(Hit)}'s walk for a tree of packed triangles only, counting its tests. */
+    private static boolean walk(Bvh bvh, float[] nd, double[] packed, Hit hit, long[] totals) {
+        int[] stack = new int[bvh.depth() + 1];
+        double[] stackT = new double[bvh.depth() + 1];
+        double ox = hit.ox, oy = hit.oy, oz = hit.oz;
+        double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
+        totals[0]++;
+        if (!(entry(nd, 0, ox, oy, oz, ix, iy, iz, hit.t) < hit.t)) return false;
+        boolean found = false;
+        int top = 0, n = 0;
+        while (true) {
+            int rec = BvhNodes.at(n);
+            int count = BvhNodes.count(nd, rec);
+            if (count > 0) {
+                for (int k = BvhNodes.first(nd, rec), end = k + count; k < end; ++k) {
+                    totals[1]++;
+                    double t = Triangle.intersect(hit, packed, k * BvhLeaf.PACKED);
+                    if (Intersectable.inRange(t, hit.t)) {
+                        hit.t = t;
+                        found = true;
+                    }
+                }
+            } else {
+                int left = n + 1, right = BvhNodes.right(nd, rec);
+                double tMax = hit.t;
+                totals[0] += 2;
+                double tl = entry(nd, left, ox, oy, oz, ix, iy, iz, tMax);
+                double tr = entry(nd, right, ox, oy, oz, ix, iy, iz, tMax);
+                if (tl < tMax || tr < tMax) {
+                    boolean leftFirst = tl <= tr;
+                    int far = leftFirst ? right : left;
+                    double tf = leftFirst ? tr : tl;
+                    n = leftFirst ? left : right;
+                    stack[top] = far;
+                    stackT[top] = tf;
+                    top += tf < tMax ? 1 : 0;
+                    continue;
+                }
+            }
+            do {
+                if (top == 0) return found;
+                --top;
+            } while (!(stackT[top] < hit.t));
+            n = stack[top];
+        }
+    }
+
+    private static double entry(float[] nd, int n, double ox, double oy, double oz, double ix, double iy, double iz,
+                                double tMax) {
+        int at = BvhNodes.at(n);
+        double t0 = 0, t1 = tMax;
+        double[] o = {ox, oy, oz}, inv = {ix, iy, iz};
+        for (int axis = 0; axis < 3; ++axis) {
+            t0 = BoundingBox.enter(t0, BvhNodes.min(nd, at, axis), BvhNodes.max(nd, at, axis), o[axis], inv[axis]);
+            t1 = BoundingBox.exit(t1, BvhNodes.min(nd, at, axis), BvhNodes.max(nd, at, axis), o[axis], inv[axis]);
+        }
+        return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
+    }
+
+    private static double area(float[] nd, int n) {
+        int at = BvhNodes.at(n);
+        double dx = BvhNodes.max(nd, at, BvhNodes.X) - BvhNodes.min(nd, at, BvhNodes.X);
+        double dy = BvhNodes.max(nd, at, BvhNodes.Y) - BvhNodes.min(nd, at, BvhNodes.Y);
+        double dz = BvhNodes.max(nd, at, BvhNodes.Z) - BvhNodes.min(nd, at, BvhNodes.Z);
+        return dx * dy + dy * dz + dz * dx;
+    }
+
+    @SuppressWarnings("unchecked")
+    private static <T> T field(Bvh bvh, String name) throws ReflectiveOperationException {
+        Field f = Bvh.class.getDeclaredField(name);
+        f.setAccessible(true);
+        return (T) f.get(bvh);
+    }
+}
