@@ -40,6 +40,10 @@ public final class Camera {
      * ends (ADAPTIVE's depth 6 stays below it, at most 65² lattice points).
      */
     public static final int MAX_SAMPLES_PER_PIXEL = 1 << 16;
+    /** ADAPTIVE's deepest subdivision when none is set ({@link Builder#setAdaptive}): sub-pixels down to 1/8 of the side. */
+    public static final int DEFAULT_ADAPTIVE_DEPTH = 3;
+    /** ADAPTIVE's pixel-level corner spread that subdivides when none is set ({@link Builder#setAdaptive}), 0..255 scale. */
+    public static final double DEFAULT_ADAPTIVE_THRESHOLD = 8;
 
     private final View view;
     private final Sampling sampling;
@@ -539,13 +543,14 @@ public final class Camera {
         }
 
         /**
-         * ADAPTIVE settings: sub-pixels down to 1/2^maxDepth of the pixel side (1..6, default 3,
-         * i.e. up to 8×8). A square (first the pixel) is traced at its four corners, shared with
-         * its neighbours; it is cut into its four quadrants when its corners spread over more
-         * than {@code threshold} divided by the square's share of the pixel in some channel
-         * (0..255 scale, values clamped to 255; default 8): 8 for the pixel, 32 for a quarter,
-         * 128 for a sixteenth. The test bounds what a square can add to its pixel's error, so
-         * deeper levels split only at strong edges. The defaults trace about 2 camera rays per
+         * ADAPTIVE settings: sub-pixels down to 1/2^maxDepth of the pixel side (1..6, default
+         * {@value Camera#DEFAULT_ADAPTIVE_DEPTH}, i.e. up to 8×8). A square (first the pixel) is
+         * traced at its four corners, shared with its neighbours; it is cut into its four quadrants
+         * when its corners spread over more than {@code threshold} divided by the square's share of
+         * the pixel in some channel (0..255 scale, values clamped to 255; default
+         * {@value Camera#DEFAULT_ADAPTIVE_THRESHOLD}): 8 for the pixel, 32 for a quarter, 128 for a
+         * sixteenth. The test bounds what a square can add to its pixel's error, so deeper levels
+         * split only at strong edges. The defaults trace about 2 camera rays per
          * pixel on the showcase at 600×600 (see BENCHMARKS.md, image quality per ray).
          *
          * @param maxDepth  the deepest subdivision, 1..6

@@ -20,7 +20,8 @@ import primitives.Util;
  */
 record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, int lensSamples, long seed) {
     /** The defaults: no anti-aliasing, a 4×4 grid, adaptive depth 3 and threshold 8, 16 lens samples, seed 0. */
-    static final Sampling DEFAULT = new Sampling(AntiAliasing.NONE, new Grid(4, 4), new Adaptive(3, 8), 16, 0);
+    static final Sampling DEFAULT = new Sampling(AntiAliasing.NONE, new Grid(4, 4),
+            new Adaptive(Camera.DEFAULT_ADAPTIVE_DEPTH, Camera.DEFAULT_ADAPTIVE_THRESHOLD), 16, 0);
 
     /**
      * @throws NullPointerException     naming a missing part

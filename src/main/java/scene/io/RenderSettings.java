@@ -62,13 +62,6 @@ public final class RenderSettings implements java.io.Serializable {
     public static final int MAX_IMAGE_NAME_LENGTH = 200;
     /** The thread count when none is stated: all cores ({@link Camera.Builder#setMultithreading}'s -2). */
     private static final int ALL_CORES = -2;
-    /**
-     * ADAPTIVE's depth and threshold as a fresh {@link Camera.Builder} has them, for a
-     * specification that states one of the two: the builder takes them together and does not
-     * tell its own. {@code RenderSettingsTest} holds them equal to the builder's.
-     */
-    private static final int ADAPTIVE_DEPTH = 3;
-    private static final double ADAPTIVE_THRESHOLD = 8;
 
     // Each field is null when the specification does not state it.
     // The image: its name (images/<name>.png), size in pixels (stated together) and grid.
@@ -465,8 +458,9 @@ public final class RenderSettings implements java.io.Serializable {
         if (antiAliasing != null) camera.setAntiAliasing(antiAliasing);
         if (gridColumns != null) camera.setAntiAliasingGrid(gridColumns, gridRows);
         if (adaptiveDepth != null || adaptiveThreshold != null) camera.setAdaptive(
-                adaptiveDepth != null ? adaptiveDepth : ADAPTIVE_DEPTH,
-                adaptiveThreshold != null ? adaptiveThreshold : ADAPTIVE_THRESHOLD);
+                // The builder takes the two together: a specification stating one gets the library's other.
+                adaptiveDepth != null ? adaptiveDepth : Camera.DEFAULT_ADAPTIVE_DEPTH,
+                adaptiveThreshold != null ? adaptiveThreshold : Camera.DEFAULT_ADAPTIVE_THRESHOLD);
         // Aperture 0 is the pinhole whatever the focal distance, so a stated pinhole undoes a lens
         // set on the builder before.
         if (focalDistance != null) camera.setDepthOfField(focalDistance == 0 ? 1 : focalDistance, aperture);
