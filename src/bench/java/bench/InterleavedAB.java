@@ -2,6 +2,7 @@ package bench;
 
 import java.io.ByteArrayOutputStream;
 import java.io.File;
+import java.io.IOException;
 import java.io.PrintStream;
 import java.lang.reflect.InvocationTargetException;
 import java.lang.reflect.Method;
@@ -9,6 +10,7 @@ import java.net.MalformedURLException;
 import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -32,8 +34,14 @@ import java.util.Map;
  * <pre>
  * java -cp target/bench/classes bench.InterleavedAB --a OLD_CP --b NEW_CP --pairs 12 \
  *      -- --only glossy --match "beam 10, 1 thread" --runs 3 --warmup 2
+ * java -cp target/bench/classes bench.InterleavedAB --a OLD_CP --b NEW_CP --processes 30 --pairs 2 -- …
  * </pre>
- * Everything after {@code --} goes to both sides' {@code RenderBenchmark}.
+ * Everything after {@code --} goes to both sides' {@code RenderBenchmark}. With
+ * {@code --processes N}, N fresh JVMs one after the other, each of {@code --pairs} pairs, and the
+ * figures are medians over the processes: the compiled code itself varies between processes
+ * (and between the two loaders of one), by as much as the few per cent asked about, so one
+ * process's pairs compare one compilation of each side; an A/A run (the same class path twice)
+ * shows the spread the method can resolve.
  */
 public final class InterleavedAB {
     private InterleavedAB() {
@@ -41,52 +49,105 @@ public final class InterleavedAB {
 
     public static void main(String[] args) throws Exception {
         String a = null, b = null;
-        int pairs = 10;
+        int pairs = 10, processes = 1;
+        boolean raw = false;
         int split = Arrays.asList(args).indexOf("--");
         if (split < 0) throw new IllegalArgumentException("missing -- before RenderBenchmark's arguments");
-        for (int i = 0; i < split; i += 2) {
+        for (int i = 0; i < split; ++i) {
+            if (args[i].equals("--raw")) {
+                raw = true;
+                continue;
+            }
             if (i + 1 >= split) throw new IllegalArgumentException(args[i] + " needs a value");
             switch (args[i]) {
-                case "--a" -> a = args[i + 1];
-                case "--b" -> b = args[i + 1];
-                case "--pairs" -> pairs = Integer.parseInt(args[i + 1]);
+                case "--a" -> a = args[++i];
+                case "--b" -> b = args[++i];
+                case "--pairs" -> pairs = Integer.parseInt(args[++i]);
+                case "--processes" -> processes = Integer.parseInt(args[++i]);
                 default -> throw new IllegalArgumentException("unknown option " + args[i]);
             }
         }
         if (a == null || b == null) throw new IllegalArgumentException("--a and --b are required");
         String[] benchArgs = Arrays.copyOfRange(args, split + 1, args.length);
-        Method mainA = benchMain(a), mainB = benchMain(b);
-        // Per row, per pair: A's median, B's median, A's fastest, B's fastest.
+        // Per row, per unit (a pair, or with --processes a whole process): A's median, B's median,
+        // A's fastest, B's fastest.
         Map<String, List<double[]>> rows = new LinkedHashMap<>();
-        for (int p = 0; p < pairs; ++p) {
-            // A first in even pairs, B first in odd ones: a drift within a pair cancels over two.
-            boolean aFirst = p % 2 == 0;
-            Map<String, double[]> first = run(aFirst ? mainA : mainB, benchArgs);
-            Map<String, double[]> second = run(aFirst ? mainB : mainA, benchArgs);
-            Map<String, double[]> ta = aFirst ? first : second, tb = aFirst ? second : first;
-            for (var e : ta.entrySet()) {
-                double[] other = tb.get(e.getKey());
-                if (other == null) continue;
-                double[] x = e.getValue();
-                rows.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(new double[] {x[0], other[0], x[1], other[1]});
-                System.err.printf(Locale.ROOT, "pair %d %s: median A %.3f s, B %.3f s, B/A %.3f; fastest A %.3f s, B %.3f s%n",
-                        p + 1, e.getKey(), x[0], other[0], other[0] / x[0], x[1], other[1]);
+        if (processes > 1) {
+            for (int p = 0; p < processes; ++p) {
+                for (var e : child(a, b, pairs, benchArgs).entrySet()) {
+                    List<double[]> list = e.getValue();
+                    double[] unit = {RenderBenchmark.median(column(list, 0)), RenderBenchmark.median(column(list, 1)),
+                            RenderBenchmark.median(column(list, 2)), RenderBenchmark.median(column(list, 3))};
+                    rows.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(unit);
+                    System.err.printf(Locale.ROOT, "process %d %s: B/A of medians %.3f, of fastest %.3f%n", p + 1,
+                            e.getKey(), unit[1] / unit[0], unit[3] / unit[2]);
+                }
             }
+        } else {
+            Method mainA = benchMain(a), mainB = benchMain(b);
+            for (int p = 0; p < pairs; ++p) {
+                // A first in even pairs, B first in odd ones: a drift within a pair cancels over two.
+                boolean aFirst = p % 2 == 0;
+                Map<String, double[]> first = run(aFirst ? mainA : mainB, benchArgs);
+                Map<String, double[]> second = run(aFirst ? mainB : mainA, benchArgs);
+                Map<String, double[]> ta = aFirst ? first : second, tb = aFirst ? second : first;
+                for (var e : ta.entrySet()) {
+                    double[] other = tb.get(e.getKey());
+                    if (other == null) continue;
+                    double[] x = e.getValue();
+                    rows.computeIfAbsent(e.getKey(), k -> new ArrayList<>()).add(new double[] {x[0], other[0], x[1], other[1]});
+                    if (raw) {
+                        System.out.printf(Locale.ROOT, "RAW\t%s\t%s\t%s\t%s\t%s%n", e.getKey(), x[0], other[0], x[1], other[1]);
+                    } else {
+                        System.err.printf(Locale.ROOT, "pair %d %s: median A %.3f s, B %.3f s, B/A %.3f; fastest A %.3f s, B %.3f s%n",
+                                p + 1, e.getKey(), x[0], other[0], other[0] / x[0], x[1], other[1]);
+                    }
+                }
+            }
+            if (raw) return;
         }
-        System.out.println("| row | pairs | A median s | B median s | B/A of medians (median of pairs) | its quartiles "
-                + "| B/A of fastest (median of pairs) | fastest A s | fastest B s | B/A of fastest of all |");
+        String unit = processes > 1 ? "processes" : "pairs";
+        System.out.println("| row | " + unit + " | A median s | B median s | B/A of medians (median of " + unit + ") | its quartiles "
+                + "| B/A of fastest (median of " + unit + ") | its quartiles | fastest A s | fastest B s |");
         System.out.println("|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|");
         for (var e : rows.entrySet()) {
             List<double[]> list = e.getValue();
             double[] ratio = list.stream().mapToDouble(x -> x[1] / x[0]).sorted().toArray();
-            double[] fastRatio = list.stream().mapToDouble(x -> x[3] / x[2]).toArray();
+            double[] fastRatio = list.stream().mapToDouble(x -> x[3] / x[2]).sorted().toArray();
             double fastA = list.stream().mapToDouble(x -> x[2]).min().orElseThrow();
             double fastB = list.stream().mapToDouble(x -> x[3]).min().orElseThrow();
-            System.out.printf(Locale.ROOT, "| %s | %d | %.3f | %.3f | %.3f | %.3f–%.3f | %.3f | %.3f | %.3f | %.3f |%n",
+            System.out.printf(Locale.ROOT, "| %s | %d | %.3f | %.3f | %.3f | %.3f–%.3f | %.3f | %.3f–%.3f | %.3f | %.3f |%n",
                     e.getKey(), list.size(), RenderBenchmark.median(column(list, 0)), RenderBenchmark.median(column(list, 1)),
                     RenderBenchmark.median(ratio), quantile(ratio, 0.25), quantile(ratio, 0.75),
-                    RenderBenchmark.median(fastRatio), fastA, fastB, fastB / fastA);
+                    RenderBenchmark.median(fastRatio), quantile(fastRatio, 0.25), quantile(fastRatio, 0.75), fastA, fastB);
         }
+    }
+
+    /**
+     * One child JVM of this class with {@code --raw}: its pairs by row (A's median, B's median,
+     * A's fastest, B's fastest). Each process compiles both sides afresh, so the spread between
+     * processes includes the compiler's own: the same code, compiled in two processes (or by two
+     * class loaders of one), can run several per cent apart for as long as the process lives.
+     */
+    private static Map<String, List<double[]>> child(String a, String b, int pairs, String[] benchArgs)
+            throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xmx8g", "-cp", System.getProperty("java.class.path"), InterleavedAB.class.getName(),
+                "--a", a, "--b", b, "--pairs", Integer.toString(pairs), "--raw", "--"));
+        command.addAll(Arrays.asList(benchArgs));
+        Process process = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.DISCARD).start();
+        Map<String, List<double[]>> rows = new LinkedHashMap<>();
+        try (var out = new java.io.BufferedReader(new java.io.InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8))) {
+            for (String line; (line = out.readLine()) != null;) {
+                String[] f = line.split("\t");
+                if (f.length != 6 || !f[0].equals("RAW")) continue;
+                rows.computeIfAbsent(f[1], k -> new ArrayList<>()).add(new double[] {Double.parseDouble(f[2]),
+                        Double.parseDouble(f[3]), Double.parseDouble(f[4]), Double.parseDouble(f[5])});
+            }
+        }
+        int exit = process.waitFor();
+        if (exit != 0 || rows.isEmpty()) throw new IllegalStateException("child run exited with " + exit + ", rows " + rows.keySet());
+        return rows;
     }
 
     private static double[] column(List<double[]> rows, int i) {
