@@ -49,20 +49,13 @@ public final class MeshRays {
     public static void main(String[] args) throws IOException, InterruptedException {
         if (args.length != 5)
             throw new IllegalArgumentException("usage: MeshRays MESH RAYS THREADS PASSES OUT, got " + Arrays.toString(args));
-        ByteBuffer mesh = read(Path.of(args[0]));
-        int vertices = mesh.getInt(), triangles = mesh.getInt();
-        double[] positions = new double[3 * vertices];
-        mesh.asDoubleBuffer().get(positions);
-        mesh.position(8 + 8 * positions.length);
-        int[] indices = new int[3 * triangles];
-        mesh.asIntBuffer().get(indices);
-        ByteBuffer rayFile = read(Path.of(args[1]));
-        int count = rayFile.getInt();
-        double[] rays = new double[6 * count];
-        rayFile.asDoubleBuffer().get(rays);
+        TriangleMesh triangleMesh = readMesh(Path.of(args[0]));
+        int triangles = triangleMesh.triangleCount();
+        double[] rays = readRays(Path.of(args[1]));
+        int count = rays.length / 6;
         int threads = Integer.parseInt(args[2]), passes = Integer.parseInt(args[3]);
 
-        Geometries scene = new Geometries(new TriangleMesh(positions, indices));
+        Geometries scene = new Geometries(triangleMesh);
         double[] builds = new double[3];
         Bvh bvh = null;
         for (int i = 0; i < builds.length; ++i) {
@@ -87,6 +80,34 @@ public final class MeshRays {
         System.out.println(String.format(Locale.ROOT,
                 "{\"triangles\": %d, \"rays\": %d, \"hits\": %d, \"threads\": %d, \"build_s\": %.4f, \"trace_s\": %s, \"median_trace_s\": %.5f}",
                 triangles, count, hits, threads, builds[builds.length / 2], times, times.get(times.size() / 2)));
+    }
+
+    /**
+     * @param file a mesh file as the script writes it (see the class comment)
+     * @return the mesh
+     * @throws IOException when it cannot be read
+     */
+    public static TriangleMesh readMesh(Path file) throws IOException {
+        ByteBuffer mesh = read(file);
+        int vertices = mesh.getInt(), triangles = mesh.getInt();
+        double[] positions = new double[3 * vertices];
+        mesh.asDoubleBuffer().get(positions);
+        mesh.position(8 + 8 * positions.length);
+        int[] indices = new int[3 * triangles];
+        mesh.asIntBuffer().get(indices);
+        return new TriangleMesh(positions, indices);
+    }
+
+    /**
+     * @param file a rays file as the script writes it (see the class comment)
+     * @return origin and direction of each ray, six doubles a ray
+     * @throws IOException when it cannot be read
+     */
+    public static double[] readRays(Path file) throws IOException {
+        ByteBuffer rayFile = read(file);
+        double[] rays = new double[6 * rayFile.getInt()];
+        rayFile.asDoubleBuffer().get(rays);
+        return rays;
     }
 
     private static ByteBuffer read(Path file) throws IOException {

@@ -2,17 +2,16 @@ package geometries;
 
 import java.io.IOException;
 import java.lang.reflect.Field;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Locale;
+
+import bench.MeshRays;
 
 /**
  * The work behind {@code bench.MeshRays}'s times: per ray, the node boxes and triangles that
  * {@link Bvh#closestHit(Hit)} tests, counted by a copy of its walk (the same order, the same
- * skips) over the tree's own arrays, and the tree's shape (leaves, primitives per leaf, depth,
- * the surface-area cost). Lives in the bench profile, in the package whose arrays it reads; the
+ * skips; checked against the walk's own answer on every ray) over the tree's own arrays, and the
+ * tree's shape (leaves, primitives per leaf, depth, the surface-area cost). Lives in the bench profile, in the package whose arrays it reads; the
  * library has no counters on its hot path.
  *
  * <pre>java -cp target/bench/classes:target/classes geometries.WalkCounts MESH RAYS</pre>
@@ -24,19 +23,11 @@ public final class WalkCounts {
 
     public static void main(String[] args) throws IOException, ReflectiveOperationException {
         if (args.length != 2) throw new IllegalArgumentException("usage: WalkCounts MESH RAYS");
-        ByteBuffer mesh = ByteBuffer.wrap(Files.readAllBytes(Path.of(args[0]))).order(ByteOrder.LITTLE_ENDIAN);
-        int vertices = mesh.getInt(), triangles = mesh.getInt();
-        double[] positions = new double[3 * vertices];
-        mesh.asDoubleBuffer().get(positions);
-        mesh.position(8 + 8 * positions.length);
-        int[] indices = new int[3 * triangles];
-        mesh.asIntBuffer().get(indices);
-        ByteBuffer rayFile = ByteBuffer.wrap(Files.readAllBytes(Path.of(args[1]))).order(ByteOrder.LITTLE_ENDIAN);
-        int count = rayFile.getInt();
-        double[] rays = new double[6 * count];
-        rayFile.asDoubleBuffer().get(rays);
+        TriangleMesh mesh = MeshRays.readMesh(Path.of(args[0]));
+        double[] rays = MeshRays.readRays(Path.of(args[1]));
+        int count = rays.length / 6, triangles = mesh.triangleCount();
 
-        Bvh bvh = Bvh.build(new Geometries(new TriangleMesh(positions, indices)), 1);
+        Bvh bvh = Bvh.build(new Geometries(mesh), 1);
         float[] node = field(bvh, "node");
         double[] packed = field(bvh, "packed");
         int nodeCount = bvh.nodeCount();
@@ -46,7 +37,14 @@ public final class WalkCounts {
             int r = 6 * i;
             hit.setRay(rays[r], rays[r + 1], rays[r + 2], rays[r + 3], rays[r + 4], rays[r + 5]);
             hit.reset(Double.POSITIVE_INFINITY);
-            if (walk(bvh, node, packed, hit, totals)) totals[2]++;
+            boolean found = walk(bvh, node, packed, hit, totals);
+            if (found) totals[2]++;
+            // The copy must be the walk it counts for: the same answer on every ray, to the bit.
+            double t = hit.t;
+            hit.reset(Double.POSITIVE_INFINITY);
+            if (bvh.closestHit(hit) != found || Double.compare(hit.t, t) != 0)
+                throw new IllegalStateException("the counted walk and Bvh.closestHit disagree on ray " + i + ": "
+                        + t + " against " + hit.t);
         }
         // The tree's shape: leaves, their sizes, and the SAH cost (1 per box pair, 1 per triangle).
         long leaves = 0, leafPrims = 0;
