@@ -1,6 +1,6 @@
 """The launcher script `raytracer` at the project root: what it does without a jar, with a stale or
-broken class-data-sharing archive, and with the user's options. Needs the runnable jar
-(`mvn package`); those cases are skipped without it."""
+broken class-data-sharing archive, with the user's options, and which archive it takes on which
+JDK. Needs the runnable jar (`mvn package`) except for the last; those cases are skipped without it."""
 from __future__ import annotations
 
 import os
@@ -62,3 +62,36 @@ def test_the_users_options_come_after_the_launchers(tmp_path):
     assert done.returncode == 0, done.stderr
     assert "-XX:TieredStopAtLevel=4" in done.stdout
     assert "-XX:TieredStopAtLevel=1" not in done.stdout
+
+
+def fake_jdk(tmp_path: Path, version: str) -> Path:
+    """A JAVA_HOME whose release file names `version` and whose java prints its arguments, one a line."""
+    home = tmp_path / f"jdk-{version}"
+    (home / "bin").mkdir(parents=True)
+    (home / "release").write_text(f'IMPLEMENTOR="test"\nJAVA_VERSION="{version}"\n')
+    java = home / "bin" / "java"
+    java.write_text('#!/bin/sh\nfor a in "$@"; do echo "$a"; done\n')
+    java.chmod(0o755)
+    return home
+
+
+@pytest.mark.parametrize("version, uses_cache", [("25.0.1", True), ("24", True), ("21.0.5", False), ("17.0.12", False)])
+def test_the_ahead_of_time_cache_is_used_on_jdk_24_and_later_only(tmp_path, version, uses_cache):
+    # JDK 17 refuses -XX:AOTCache as an unknown option, so the launcher reads the JDK's release file.
+    (tmp_path / "project").mkdir()
+    folder = project(tmp_path / "project", with_jar=False)
+    (folder / "target").mkdir()
+    for name in ("raytracer.jar", "raytracer.jsa", "raytracer.aot"):
+        (folder / "target" / name).write_bytes(b"")
+    done = run(folder, "scene.xml", env={"JAVA_HOME": str(fake_jdk(tmp_path, version)), "RAYTRACER_JAVA_OPTS": "-Dmine=1"})
+    assert done.returncode == 0, done.stderr
+    args = done.stdout.splitlines()
+    assert args[-3:] == ["-jar", str(folder / "target" / "raytracer.jar"), "scene.xml"]
+    assert args[-4] == "-Dmine=1"  # the user's options last before the jar
+    if uses_cache:
+        assert f"-XX:AOTCache={folder / 'target' / 'raytracer.aot'}" in args
+        assert not any(a.startswith("-XX:SharedArchiveFile") for a in args)
+    else:
+        assert not any(a.startswith("-XX:AOTCache") for a in args)
+        assert f"-XX:SharedArchiveFile={folder / 'target' / 'raytracer.jsa'}" in args
+    assert "-XX:TieredStopAtLevel=1" in args and "-XX:+UseSerialGC" in args
