@@ -11,8 +11,9 @@ import bench.MeshRays;
  * The work behind {@code bench.MeshRays}'s times: per ray, the node boxes and triangles that
  * {@link Bvh#closestHit(Hit)} tests, counted by a copy of its walk (the same order, the same
  * skips; checked against the walk's own answer on every ray) over the tree's own arrays, and the
- * tree's shape (leaves, primitives per leaf, depth, the surface-area cost). Lives in the bench profile, in the package whose arrays it reads; the
- * library has no counters on its hot path.
+ * tree's shape (leaves, primitives per leaf, depth, the surface-area cost). Lives in the bench
+ * profile, in the package whose arrays it reads: the library has no counters on its hot path, so
+ * the walk is copied here rather than instrumented there.
  *
  * <pre>java -cp target/bench/classes:target/classes geometries.WalkCounts MESH RAYS</pre>
  * with the files {@code scripts/embree_benchmark.py} writes (see {@code bench.MeshRays}).
@@ -33,11 +34,13 @@ public final class WalkCounts {
         int nodeCount = bvh.nodeCount();
         long[] totals = new long[3]; // boxes, triangles, hits
         Hit hit = new Hit();
+        int[] stack = new int[bvh.depth() + 1];
+        double[] stackT = new double[bvh.depth() + 1];
         for (int i = 0; i < count; ++i) {
             int r = 6 * i;
             hit.setRay(rays[r], rays[r + 1], rays[r + 2], rays[r + 3], rays[r + 4], rays[r + 5]);
             hit.reset(Double.POSITIVE_INFINITY);
-            boolean found = walk(bvh, node, packed, hit, totals);
+            boolean found = walk(node, packed, hit, stack, stackT, totals);
             if (found) totals[2]++;
             // The copy must be the walk it counts for: the same answer on every ray, to the bit.
             double t = hit.t;
@@ -68,9 +71,7 @@ public final class WalkCounts {
     }
 
     /** {@link Bvh#closestHit(Hit)}'s walk for a tree of packed triangles only, counting its tests. */
-    private static boolean walk(Bvh bvh, float[] nd, double[] packed, Hit hit, long[] totals) {
-        int[] stack = new int[bvh.depth() + 1];
-        double[] stackT = new double[bvh.depth() + 1];
+    private static boolean walk(float[] nd, double[] packed, Hit hit, int[] stack, double[] stackT, long[] totals) {
         double ox = hit.ox, oy = hit.oy, oz = hit.oz;
         double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
         totals[0]++;
@@ -114,15 +115,14 @@ public final class WalkCounts {
         }
     }
 
+    /** {@code Bvh.entry}'s slab test of node {@code n}, through the same per-axis kernel. */
     private static double entry(float[] nd, int n, double ox, double oy, double oz, double ix, double iy, double iz,
                                 double tMax) {
         int at = BvhNodes.at(n);
-        double t0 = 0, t1 = tMax;
-        double[] o = {ox, oy, oz}, inv = {ix, iy, iz};
-        for (int axis = 0; axis < 3; ++axis) {
-            t0 = BoundingBox.enter(t0, BvhNodes.min(nd, at, axis), BvhNodes.max(nd, at, axis), o[axis], inv[axis]);
-            t1 = BoundingBox.exit(t1, BvhNodes.min(nd, at, axis), BvhNodes.max(nd, at, axis), o[axis], inv[axis]);
-        }
+        float x0 = BvhNodes.min(nd, at, BvhNodes.X), y0 = BvhNodes.min(nd, at, BvhNodes.Y), z0 = BvhNodes.min(nd, at, BvhNodes.Z);
+        float x1 = BvhNodes.max(nd, at, BvhNodes.X), y1 = BvhNodes.max(nd, at, BvhNodes.Y), z1 = BvhNodes.max(nd, at, BvhNodes.Z);
+        double t0 = BoundingBox.enter(BoundingBox.enter(BoundingBox.enter(0, x0, x1, ox, ix), y0, y1, oy, iy), z0, z1, oz, iz);
+        double t1 = BoundingBox.exit(BoundingBox.exit(BoundingBox.exit(tMax, x0, x1, ox, ix), y0, y1, oy, iy), z0, z1, oz, iz);
         return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
     }
 
