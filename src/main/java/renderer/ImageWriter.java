@@ -273,7 +273,7 @@ public class ImageWriter {
         Path tmp = null;
         try {
             Files.createDirectories(target.getParent());
-            tmp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".tmp");
+            tmp = InFlightFile.createBeside(target);
             inFlight.created(tmp);
             if (!ImageIO.write(image, "png", tmp.toFile()))
                 throw new IOException("no PNG writer available");

@@ -1,6 +1,7 @@
 package renderer;
 
 import java.io.IOException;
+import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.TimeUnit;
@@ -15,10 +16,38 @@ import java.util.concurrent.TimeUnit;
 final class InFlightFile {
     /** How long the exiting JVM waits for the writer to let go of the file. */
     private static final long WAIT_MS = 10_000;
+    /** Names tried before {@link #createBeside} gives up (each try takes a new one). */
+    private static final int NAME_TRIES = 64;
 
     private Path file;
     private boolean abandoned;
     private boolean released;
+
+    /**
+     * Creates an empty hidden file beside {@code target}, named after it, for the image to be
+     * written into before it is moved into place. Not {@code Files.createTempFile}: its first call
+     * in a JVM seeds a {@code SecureRandom}, about 30 ms of a test JVM's first image write
+     * (BENCHMARKS.md, "The first render"). The name here comes from the thread and the clock; its
+     * uniqueness comes from the file system, which refuses to create a name that exists, and a
+     * refused try takes the clock again.
+     *
+     * @return the new file: {@code .<target's name>.<thread>-<clock>.tmp} in target's folder
+     * @throws IOException when the folder cannot take the file, or {@value #NAME_TRIES} names in a
+     *                     row were taken
+     */
+    static Path createBeside(Path target) throws IOException {
+        String stem = "." + target.getFileName() + "." + Long.toHexString(Thread.currentThread().getId()) + "-";
+        FileAlreadyExistsException taken = null;
+        for (int i = 0; i < NAME_TRIES; ++i) {
+            try {
+                return Files.createFile(target.resolveSibling(stem + Long.toHexString(System.nanoTime()) + ".tmp"));
+            } catch (FileAlreadyExistsException e) {
+                taken = e;
+            }
+        }
+        throw new IOException(NAME_TRIES + " temporary names beside " + target + " were taken, the last "
+                + taken.getFile(), taken);
+    }
 
     /** @param file the temporary file, once it exists */
     synchronized void created(Path file) {
