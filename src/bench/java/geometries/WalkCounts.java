@@ -115,15 +115,13 @@ public final class WalkCounts {
         }
     }
 
-    /** {@code Bvh.entry}'s slab test of node {@code n}, through the same per-axis kernel. */
+    /** {@code Bvh.entry}'s slab test of node {@code n}, through the same kernel. */
     private static double entry(float[] nd, int n, double ox, double oy, double oz, double ix, double iy, double iz,
                                 double tMax) {
         int at = BvhNodes.at(n);
-        float x0 = BvhNodes.min(nd, at, BvhNodes.X), y0 = BvhNodes.min(nd, at, BvhNodes.Y), z0 = BvhNodes.min(nd, at, BvhNodes.Z);
-        float x1 = BvhNodes.max(nd, at, BvhNodes.X), y1 = BvhNodes.max(nd, at, BvhNodes.Y), z1 = BvhNodes.max(nd, at, BvhNodes.Z);
-        double t0 = BoundingBox.enter(BoundingBox.enter(BoundingBox.enter(0, x0, x1, ox, ix), y0, y1, oy, iy), z0, z1, oz, iz);
-        double t1 = BoundingBox.exit(BoundingBox.exit(BoundingBox.exit(tMax, x0, x1, ox, ix), y0, y1, oy, iy), z0, z1, oz, iz);
-        return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
+        return BoundingBox.entry(BvhNodes.min(nd, at, BvhNodes.X), BvhNodes.min(nd, at, BvhNodes.Y),
+                BvhNodes.min(nd, at, BvhNodes.Z), BvhNodes.max(nd, at, BvhNodes.X), BvhNodes.max(nd, at, BvhNodes.Y),
+                BvhNodes.max(nd, at, BvhNodes.Z), ox, oy, oz, ix, iy, iz, tMax);
     }
 
     private static double area(float[] nd, int n) {

@@ -86,7 +86,7 @@ public final class BoundingBox {
      * The slab test. Works for axis-parallel rays and rays starting inside. For an axis the ray
      * is parallel to, the inverse must be +∞ (use {@link #inverse}; a −∞ is turned into +∞
      * here): then a = (min − o)·∞ ≤ b = (max − o)·∞, and when the origin lies on a slab plane the
-     * 0·∞ = NaN lands on the side that {@link #enter} and {@link #exit} ignore. With −∞ the NaN
+     * 0·∞ = NaN lands on the side that the kernel ({@link #entry}) ignores. With −∞ the NaN
      * would land in a while b = −∞ empties the interval: a ray grazing a face would miss.
      *
      * The ray is passed as doubles, precomputed once per ray, because the BVH walk tests many
@@ -105,51 +105,48 @@ public final class BoundingBox {
         if (invDx == Double.NEGATIVE_INFINITY) invDx = Double.POSITIVE_INFINITY; // 1/-0.0 from a caller
         if (invDy == Double.NEGATIVE_INFINITY) invDy = Double.POSITIVE_INFINITY;
         if (invDz == Double.NEGATIVE_INFINITY) invDz = Double.POSITIVE_INFINITY;
-        double t0 = enter(0, minX, maxX, ox, invDx), t1 = exit(tMax, minX, maxX, ox, invDx);
-        t0 = enter(t0, minY, maxY, oy, invDy);
-        t1 = exit(t1, minY, maxY, oy, invDy);
-        t0 = enter(t0, minZ, maxZ, oz, invDz);
-        t1 = exit(t1, minZ, maxZ, oz, invDz);
-        return t0 <= t1;
-    }
-
-    /*
-     * The slab test's kernel, one axis at a time: the segment [t0, t1] of the ray that lies in
-     * every slab seen so far is narrowed by the slab [min, max] of one more axis. The ray enters
-     * that slab at the smaller of a = (min − o)·inv and b = (max − o)·inv and leaves it at the
-     * larger. Each comparison is written so that a NaN (0·∞: the origin on a slab plane of a ray
-     * parallel to it, with inv = +∞ as inverse() gives it) leaves the bound as it was: then the
-     * ray grazes the face and still counts as inside. The callers, this box's intersects and a
-     * tree's node test (Bvh), narrow enter and exit axis by axis; the two share a, b and the
-     * comparison a > b, which the compiler computes once.
-     */
-
-    /**
-     * @param t0  the entry distance so far (0 at first: the segment starts at the ray head)
-     * @param min the slab's lower bound on this axis
-     * @param max the slab's upper bound on this axis
-     * @param o   the ray head's coordinate on this axis
-     * @param inv 1 / the direction's component on this axis, +∞ for 0 ({@link #inverse})
-     * @return the later of {@code t0} and the distance at which the ray enters the slab
-     */
-    static double enter(double t0, double min, double max, double o, double inv) {
-        double a = (min - o) * inv, b = (max - o) * inv;
-        double near = a > b ? b : a;
-        return near > t0 ? near : t0;
+        return entry(minX, minY, minZ, maxX, maxY, maxZ, ox, oy, oz, invDx, invDy, invDz, tMax) != Double.POSITIVE_INFINITY;
     }
 
     /**
-     * @param t1  the exit distance so far (the segment's far end, tMax, at first)
-     * @param min the slab's lower bound on this axis
-     * @param max the slab's upper bound on this axis
-     * @param o   the ray head's coordinate on this axis
-     * @param inv 1 / the direction's component on this axis, +∞ for 0 ({@link #inverse})
-     * @return the earlier of {@code t1} and the distance at which the ray leaves the slab
+     * The slab test's kernel, for this class and a tree's node test ({@code Bvh}), one axis at a
+     * time: the segment [t0, t1] of the ray that lies in every slab seen so far starts as
+     * [0, tMax] and is narrowed by the slab [min, max] of each axis. The ray enters that slab at
+     * the smaller of a = (min − o)·inv and b = (max − o)·inv and leaves it at the larger. Each
+     * comparison is written so that a NaN (0·∞: the origin on a slab plane of a ray parallel to
+     * it, with inv = +∞ as {@link #inverse} gives it) leaves the bound as it was: then the ray
+     * grazes the face and still counts as inside.
+     *
+     * <p>One method with the box and the ray as thirteen doubles, not an array or an object:
+     * a walk calls it for every box it tests, and with the quick compiler only (the launcher's and
+     * a test JVM's {@code -XX:TieredStopAtLevel=1}), which inlines methods of up to 35 bytes, each
+     * call left in the walk costs; six calls of per-axis halves cost the one-sample render of the
+     * 137-primitive scene several per cent (BENCHMARKS.md, "The first render"). The full compiler
+     * inlines it either way.
+     *
+     * @return the distance at which the ray segment [0, tMax] enters the box [x0, x1] × [y0, y1]
+     *         × [z0, z1] (0 when its head is inside), or +∞ when it misses it
      */
-    static double exit(double t1, double min, double max, double o, double inv) {
-        double a = (min - o) * inv, b = (max - o) * inv;
-        double far = a > b ? a : b;
-        return far < t1 ? far : t1;
+    static double entry(double x0, double y0, double z0, double x1, double y1, double z1, double ox, double oy,
+                        double oz, double ix, double iy, double iz, double tMax) {
+        double t0 = 0, t1 = tMax;
+        double a = (x0 - ox) * ix, b = (x1 - ox) * ix;
+        double near = a > b ? b : a, far = a > b ? a : b;
+        t0 = near > t0 ? near : t0;
+        t1 = far < t1 ? far : t1;
+        a = (y0 - oy) * iy;
+        b = (y1 - oy) * iy;
+        near = a > b ? b : a;
+        far = a > b ? a : b;
+        t0 = near > t0 ? near : t0;
+        t1 = far < t1 ? far : t1;
+        a = (z0 - oz) * iz;
+        b = (z1 - oz) * iz;
+        near = a > b ? b : a;
+        far = a > b ? a : b;
+        t0 = near > t0 ? near : t0;
+        t1 = far < t1 ? far : t1;
+        return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
     }
 
     @Override

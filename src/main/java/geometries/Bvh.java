@@ -194,14 +194,8 @@ public final class Bvh extends Intersectable {
     private double entry(int n, double ox, double oy, double oz, double ix, double iy, double iz, double tMax) {
         float[] nd = node;
         int at = BvhNodes.at(n);
-        double x0 = BvhNodes.min(nd, at, X), y0 = BvhNodes.min(nd, at, Y), z0 = BvhNodes.min(nd, at, Z);
-        double x1 = BvhNodes.max(nd, at, X), y1 = BvhNodes.max(nd, at, Y), z1 = BvhNodes.max(nd, at, Z);
-        double t0 = BoundingBox.enter(0, x0, x1, ox, ix), t1 = BoundingBox.exit(tMax, x0, x1, ox, ix);
-        t0 = BoundingBox.enter(t0, y0, y1, oy, iy);
-        t1 = BoundingBox.exit(t1, y0, y1, oy, iy);
-        t0 = BoundingBox.enter(t0, z0, z1, oz, iz);
-        t1 = BoundingBox.exit(t1, z0, z1, oz, iz);
-        return t0 <= t1 ? t0 : Double.POSITIVE_INFINITY;
+        return BoundingBox.entry(BvhNodes.min(nd, at, X), BvhNodes.min(nd, at, Y), BvhNodes.min(nd, at, Z),
+                BvhNodes.max(nd, at, X), BvhNodes.max(nd, at, Y), BvhNodes.max(nd, at, Z), ox, oy, oz, ix, iy, iz, tMax);
     }
 
     /**
