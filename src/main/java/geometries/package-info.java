@@ -15,7 +15,7 @@
  * <li>The renderer's side: {@code Hit}, the per-thread record a query fills without allocating;
  * {@code HitVisitor}, which receives an any-hit walk's hits; {@code Bvh}, which the tracer asks
  * for ({@code Bvh.of(scene.geometries)}) and then queries like any intersectable; and
- * {@code BoundingBox}, whose slab test ({@code enter}, {@code exit}) the tree's node test shares.</li>
+ * {@code BoundingBox}, whose slab test ({@code entry}, one call per box) the tree's node test shares.</li>
  * <li>Internal, package-private: {@code BvhLeaf}, what a tree asks of its leaves (the superclass of
  * {@code Intersectable}, out of the course's sight); {@code BvhBuilder}, which builds a tree
  * (called by {@code Bvh}'s factories) with the surface-area heuristic of {@code BvhBinner};
