@@ -121,7 +121,7 @@ public final class BoundingBox {
      * a walk calls it for every box it tests, and with the quick compiler only (the launcher's and
      * a test JVM's {@code -XX:TieredStopAtLevel=1}), which inlines methods of up to 35 bytes, each
      * call left in the walk costs; six calls of per-axis halves cost the one-sample render of the
-     * 137-primitive scene several per cent (BENCHMARKS.md, "The first render"). The full compiler
+     * 137-primitive scene several per cent (BENCHMARKS.md, "One call per box"). The full compiler
      * inlines it either way.
      *
      * @return the distance at which the ray segment [0, tMax] enters the box [x0, x1] × [y0, y1]
