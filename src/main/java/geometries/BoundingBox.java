@@ -117,12 +117,13 @@ public final class BoundingBox {
      * it, with inv = +∞ as {@link #inverse} gives it) leaves the bound as it was: then the ray
      * grazes the face and still counts as inside.
      *
-     * <p>One method with the box and the ray as thirteen doubles, not an array or an object:
-     * a walk calls it for every box it tests, and with the quick compiler only (the launcher's and
-     * a test JVM's {@code -XX:TieredStopAtLevel=1}), which inlines methods of up to 35 bytes, each
-     * call left in the walk costs; six calls of per-axis halves cost the one-sample render of the
-     * 137-primitive scene several per cent (BENCHMARKS.md, "One call per box"). The full compiler
-     * inlines it either way.
+     * <p>One method with the box and the ray as thirteen doubles, not an array or an object, and
+     * the three axes written out rather than through a per-axis helper: a walk calls it for every
+     * box it tests, and with the quick compiler only (the launcher's and a test JVM's
+     * {@code -XX:TieredStopAtLevel=1}), which inlines methods of up to 35 bytes, each call left in
+     * the walk costs; six calls of per-axis halves cost the one-sample render of the 137-primitive
+     * scene several per cent (BENCHMARKS.md, "One call per box"). The full compiler inlines it
+     * either way.
      *
      * @return the distance at which the ray segment [0, tMax] enters the box [x0, x1] × [y0, y1]
      *         × [z0, z1] (0 when its head is inside), or +∞ when it misses it

@@ -26,10 +26,10 @@ final class InFlightFile {
     /**
      * Creates an empty hidden file beside {@code target}, named after it, for the image to be
      * written into before it is moved into place. Not {@code Files.createTempFile}: its first call
-     * in a JVM seeds a {@code SecureRandom}, about 30 ms of a test JVM's first image write
-     * (BENCHMARKS.md, "The first render"). The name here comes from the thread and the clock; its
-     * uniqueness comes from the file system, which refuses to create a name that exists, and a
-     * refused try takes the clock again.
+     * in a JVM seeds a {@code SecureRandom}, about 20 ms of a fresh JVM's first image write
+     * (BENCHMARKS.md, "One call per box, a static archive"). The name here comes from the thread
+     * and the clock; its uniqueness comes from the file system, which refuses to create a name
+     * that exists, and a refused try takes the clock again.
      *
      * @return the new file: {@code .<target's name>.<thread>-<clock>.tmp} in target's folder
      * @throws IOException when the folder cannot take the file, or {@value #NAME_TRIES} names in a
