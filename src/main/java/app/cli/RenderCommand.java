@@ -168,6 +168,7 @@ public final class RenderCommand implements Callable<Integer> {
     /** The command line, with its streams, ready to {@code execute}. */
     static CommandLine commandLine(PrintStream out, PrintStream err, boolean terminal) {
         CommandLine cl = new CommandLine(new RenderCommand(out, err, terminal));
+        cl.addSubcommand("migrate", new MigrateCommand(out, err));
         cl.getCommandSpec().usageMessage().footerHeading("%nLimits (docs/scene-format.md, \"Limits\"):%n").footer(LIMITS);
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         cl.setOut(new PrintWriter(out, true, StandardCharsets.UTF_8));

@@ -1,0 +1,84 @@
+package app.migrate;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.function.Predicate;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * Where the student's own course classes chose otherwise than the library, at the points where
+ * course years disagree and the library picked one (README, "Which course year?"). Read from the
+ * classes before they move, so the student learns which of their tests will change and why
+ * before a single test runs on the library.
+ */
+final class CourseChoices {
+    /** One difference: what the student's code does, where, the library's choice, and the tests it touches. */
+    record Choice(String what, String where, String library, List<String> tests) {
+        String line() {
+            String touched = tests.isEmpty() ? "no test of yours uses it"
+                    : tests.size() + " test file" + (tests.size() == 1 ? "" : "s") + " will change: "
+                            + String.join(", ", tests.subList(0, Math.min(5, tests.size())))
+                            + (tests.size() > 5 ? ", ..." : "");
+            return what + " (" + where + "); the library: " + library + "; " + touched;
+        }
+    }
+
+    private record Rule(String className, Pattern pattern, String what, String library, Predicate<String> touches) {
+    }
+
+    private static final Pattern QUERY_WITH_MAX = Pattern.compile(
+            "\\b(findGeoIntersections|calculateIntersections|calcIntersections|findIntersections)\\s*\\([^;()]*(\\([^;()]*\\))?[^;()]*,");
+
+    private static final List<Rule> RULES = List.of(
+            new Rule("primitives.Vector",
+                    Pattern.compile("\\bZ\\s*=\\s*new\\s+Vector\\s*\\(\\s*0(?:\\.0)?d?\\s*,\\s*0(?:\\.0)?d?\\s*,\\s*-\\s*1"),
+                    "your Vector.Z is (0, 0, -1)",
+                    "Vector.Z is +z (0, 0, 1), as AXIS_Z; renders looking along your -z come out blank",
+                    text -> text.matches("(?s).*\\bVector\\.Z\\b.*")),
+            new Rule("geometries.Cylinder",
+                    Pattern.compile("\\bCylinder\\s*\\(\\s*(?:final\\s+)?double\\s+\\w*(?i:height)\\w*\\s*,\\s*(?:final\\s+)?Ray\\s+\\w+\\s*,\\s*(?:final\\s+)?double\\s+\\w+\\s*\\)"),
+                    "your Cylinder(height, axis, radius) takes the height first",
+                    "Cylinder(radius, axis, height), radius first (Java cannot tell the two apart); swap the numbers or use Cylinder(height, radius, axis)",
+                    text -> text.contains("new Cylinder(")),
+            new Rule(null,
+                    Pattern.compile("alignZero\\s*\\(\\s*\\w+\\s*-\\s*maxDistance\\s*\\)\\s*<\\s*0|\\b\\w+\\s*<\\s*maxDistance\\b|maxDistance\\s*>\\s*\\w+\\s*\\)"),
+                    "your queries exclude a hit exactly at maxDistance",
+                    "a hit exactly at maxDistance counts, in every year's query",
+                    text -> QUERY_WITH_MAX.matcher(text).find()),
+            new Rule("renderer.Camera",
+                    Pattern.compile("\\b(?:location|p0|position|cameraLocation|place)\\s*=\\s*(?:Point\\.ZERO|new\\s+Point\\s*\\(\\s*0(?:\\.0)?\\s*,\\s*0(?:\\.0)?\\s*,\\s*0(?:\\.0)?\\s*\\))\\s*;"),
+                    "your camera defaults its location (to the origin)",
+                    "build() without setLocation throws MissingResourceException",
+                    text -> text.matches("(?s).*\\b(getBuilder|Camera\\.Builder)\\b.*") && !text.contains("setLocation")
+                            && !text.contains("setP0") && !text.contains("setPosition")));
+
+    private CourseChoices() {
+    }
+
+    /**
+     * @param course the student's course classes that the library replaces
+     * @param tests  the student's tests
+     */
+    static List<Choice> find(List<SourceFile> course, List<SourceFile> tests, Path projectDir) {
+        List<Choice> found = new ArrayList<>();
+        for (Rule rule : RULES) {
+            for (SourceFile f : course) {
+                if (rule.className != null && !Catalog.libraryName(f.className()).equals(rule.className)) continue;
+                if (rule.className == null && !Catalog.libraryPackage(f.packageName()).equals("geometries")) continue;
+                Matcher m = rule.pattern.matcher(f.text());
+                if (!m.find()) continue;
+                List<String> touched = tests.stream().filter(t -> rule.touches.test(t.text()))
+                        .map(t -> t.path().getFileName().toString()).toList();
+                found.add(new Choice(rule.what, f.relative(projectDir) + ":" + line(f.text(), m.start()), rule.library, touched));
+                break; // one line per choice: the first class that makes it
+            }
+        }
+        return found;
+    }
+
+    private static long line(String text, int offset) {
+        return text.substring(0, offset).chars().filter(c -> c == '\n').count() + 1;
+    }
+}

@@ -1,0 +1,188 @@
+package app.migrate;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+/**
+ * Where a course project keeps its sources and tests, read from what it has: an IntelliJ module
+ * ({@code *.iml}: its source and test folders), a Maven {@code pom.xml}, an Eclipse
+ * {@code .classpath}, or plain folders ({@code src/} and {@code unittests/}, {@code test/} or
+ * {@code tests/}). Folders a module names but that do not exist are ignored (course templates name
+ * {@code UnitTests} where the tests sit in {@code src/unittests}).
+ *
+ * @param dir       the project's folder (absolute, normalized)
+ * @param kind      what the layout was read from
+ * @param mainRoots the source folders, as the project's build declares them
+ * @param testRoots the test folders (may be empty, or nested in a source folder)
+ * @param iml       the IntelliJ module file, or null
+ * @param pom       the Maven pom, or null
+ * @param jars      jars the project's module lists (its {@code lib/} JUnit, say): on the class path
+ *                  of the compile checks, so that a test compiles as it did in the IDE
+ */
+record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, Path iml, Path pom, List<Path> jars) {
+    /** What the layout was read from. */
+    enum Kind {
+        INTELLIJ("IntelliJ module"), MAVEN("Maven project"), ECLIPSE("Eclipse project"), PLAIN("plain folders");
+
+        final String label;
+
+        Kind(String label) {
+            this.label = label;
+        }
+    }
+
+    /** The backup folder's name: never a source folder, never walked. */
+    static final String BACKUP = "course-backup";
+    /** Folders that hold build output or tool state, never sources of the project. */
+    private static final Set<String> SKIPPED = Set.of(BACKUP, "out", "target", "bin", "build", ".git", ".idea",
+            ".gradle", "node_modules");
+
+    private static final Pattern IML_FOLDER = Pattern.compile("<sourceFolder\\s+url=\"file://\\$MODULE_DIR\\$/?([^\"]*)\"([^>]*)/?>");
+    private static final Pattern IML_JAR = Pattern.compile("jar://(\\$MODULE_DIR\\$|\\$MAVEN_REPOSITORY\\$)/([^\"!]+\\.jar)!/");
+    private static final Pattern ECLIPSE_ENTRY = Pattern.compile("<classpathentry\\s+[^>]*?kind=\"(src|lib)\"[^>]*?path=\"([^\"]+)\"");
+    private static final Pattern POM_SOURCE = Pattern.compile("<sourceDirectory>\\s*([^<]+?)\\s*</sourceDirectory>");
+    private static final Pattern POM_TEST = Pattern.compile("<testSourceDirectory>\\s*([^<]+?)\\s*</testSourceDirectory>");
+
+    /**
+     * @throws MigrationException when {@code dir} is not a folder or holds no Java sources
+     */
+    static Layout read(Path dir, Path mavenRepository) throws MigrationException {
+        Path d = dir.toAbsolutePath().normalize();
+        if (!Files.isDirectory(d)) throw new MigrationException(d + " is not a folder");
+        try {
+            Layout layout = readKind(d, mavenRepository);
+            if (layout.sources().isEmpty())
+                throw new MigrationException(d + " is not a course project: no .java file in "
+                        + (layout.mainRoots.isEmpty() ? "src/" : names(d, layout.mainRoots)) + " or its test folders");
+            return layout;
+        } catch (IOException e) {
+            throw new MigrationException("cannot read " + d + ": " + e, e);
+        }
+    }
+
+    private static Layout readKind(Path d, Path repo) throws IOException {
+        Path pom = d.resolve("pom.xml");
+        Path iml = findIml(d);
+        List<Path> jars = new ArrayList<>(libJars(d));
+        if (Files.isRegularFile(pom)) {
+            String text = Files.readString(pom, StandardCharsets.UTF_8);
+            Path main = d.resolve(first(POM_SOURCE, text, "src/main/java")).normalize();
+            Path test = d.resolve(first(POM_TEST, text, "src/test/java")).normalize();
+            return new Layout(d, Kind.MAVEN, existing(List.of(main)), existing(List.of(test)), iml, pom, jars);
+        }
+        if (iml != null) {
+            String text = Files.readString(iml, StandardCharsets.UTF_8);
+            List<Path> main = new ArrayList<>(), test = new ArrayList<>();
+            Matcher m = IML_FOLDER.matcher(text);
+            while (m.find()) {
+                if (m.group(2).contains("java-resource")) continue;
+                Path folder = d.resolve(m.group(1)).normalize();
+                (m.group(2).contains("isTestSource=\"true\"") ? test : main).add(folder);
+            }
+            Matcher j = IML_JAR.matcher(text);
+            while (j.find())
+                jars.add((j.group(1).contains("MODULE_DIR") ? d : repo).resolve(j.group(2)).normalize());
+            if (!existing(main).isEmpty())
+                return new Layout(d, Kind.INTELLIJ, existing(main), existing(test), iml, null, existingJars(jars));
+        }
+        Path classpath = d.resolve(".classpath");
+        if (Files.isRegularFile(classpath)) {
+            List<Path> main = new ArrayList<>();
+            Matcher m = ECLIPSE_ENTRY.matcher(Files.readString(classpath, StandardCharsets.UTF_8));
+            while (m.find())
+                (m.group(1).equals("src") ? main : jars).add(d.resolve(m.group(2)).normalize());
+            if (!existing(main).isEmpty())
+                return new Layout(d, Kind.ECLIPSE, existing(main), List.of(), iml, null, existingJars(jars));
+        }
+        if (Files.isDirectory(d.resolve("src/main/java")))
+            return new Layout(d, Kind.PLAIN, List.of(d.resolve("src/main/java")),
+                    existing(List.of(d.resolve("src/test/java"))), iml, null, existingJars(jars));
+        List<Path> tests = existing(List.of(d.resolve("unittests"), d.resolve("test"), d.resolve("tests")));
+        return new Layout(d, iml != null ? Kind.INTELLIJ : Kind.PLAIN, existing(List.of(d.resolve("src"))), tests, iml,
+                null, existingJars(jars));
+    }
+
+    /** The module file: one at the top (the one named after the folder when there are several), else in .idea/. */
+    private static Path findIml(Path d) throws IOException {
+        for (Path where : List.of(d, d.resolve(".idea"))) {
+            if (!Files.isDirectory(where)) continue;
+            try (Stream<Path> files = Files.list(where)) {
+                List<Path> imls = files.filter(f -> f.getFileName().toString().endsWith(".iml")).sorted().toList();
+                if (imls.isEmpty()) continue;
+                return imls.stream().filter(f -> f.getFileName().toString().equals(d.getFileName() + ".iml"))
+                        .findFirst().orElse(imls.get(0));
+            }
+        }
+        return null;
+    }
+
+    private static List<Path> libJars(Path d) throws IOException {
+        Path lib = d.resolve("lib");
+        if (!Files.isDirectory(lib)) return List.of();
+        try (Stream<Path> files = Files.list(lib)) {
+            return files.filter(f -> f.getFileName().toString().endsWith(".jar")).sorted().toList();
+        }
+    }
+
+    private static String first(Pattern p, String text, String fallback) {
+        Matcher m = p.matcher(text);
+        return m.find() ? m.group(1).replace("${project.basedir}/", "").replace("${basedir}/", "") : fallback;
+    }
+
+    private static List<Path> existing(List<Path> folders) {
+        return folders.stream().filter(Files::isDirectory).distinct().toList();
+    }
+
+    private static List<Path> existingJars(List<Path> jars) {
+        return new ArrayList<>(new LinkedHashSet<>(jars.stream().filter(Files::isRegularFile).toList()));
+    }
+
+    static String names(Path dir, List<Path> folders) {
+        return String.join(", ", folders.stream().map(f -> dir.relativize(f).toString().replace('\\', '/') + "/").toList());
+    }
+
+    /** A source or test folder. */
+    private record Root(Path path, boolean test) {
+    }
+
+    /**
+     * Every {@code .java} file of the project, each with the deepest folder that holds it (a test
+     * folder inside a source folder owns its files); build output and {@code course-backup/} left out.
+     */
+    List<SourceFile> sources() throws IOException {
+        List<Root> roots = new ArrayList<>();
+        mainRoots.forEach(r -> roots.add(new Root(r, false)));
+        testRoots.forEach(r -> roots.add(new Root(r, true)));
+        roots.sort(Comparator.comparingInt((Root r) -> r.path.getNameCount()).reversed());
+        List<SourceFile> found = new ArrayList<>();
+        Set<Path> seen = new LinkedHashSet<>();
+        for (Root r : roots) {
+            try (Stream<Path> walk = Files.walk(r.path)) {
+                for (Path f : walk.filter(f -> f.toString().endsWith(".java") && Files.isRegularFile(f)).sorted().toList()) {
+                    if (skipped(r.path, f) || !seen.add(f)) continue;
+                    found.add(SourceFile.read(f, r.path, r.test));
+                }
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
+            }
+        }
+        return found;
+    }
+
+    private static boolean skipped(Path root, Path file) {
+        for (Path part : root.relativize(file.getParent() == null ? root : file.getParent()))
+            if (SKIPPED.contains(part.toString())) return true;
+        return false;
+    }
+}

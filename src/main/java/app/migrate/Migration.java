@@ -1,0 +1,542 @@
+package app.migrate;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.Stream;
+
+/**
+ * {@code raytracer migrate DIR}: a course project onto the library, with nothing lost.
+ *
+ * <ol>
+ * <li>Reads the layout ({@link Layout}) and refuses, in one line and before anything changes, a
+ * folder that is not a course project, one that does not compile as it is, one that cannot be
+ * written, an earlier run's {@code course-backup/}, uncommitted git changes (unless allowed).</li>
+ * <li>Names where the student's course classes chose otherwise than the library
+ * ({@link CourseChoices}).</li>
+ * <li>Compiles, in a scratch folder, the student's other classes (their extras) and then their
+ * tests against the library, 2025–26's {@code api}/{@code impl} packages folded: an extra that
+ * does not compile is set aside into {@code course-backup/set-aside/}, a test that does not is
+ * left out of the build (excluded in the pom; the file stays where it is, untouched), each with
+ * its reason ({@link Reasons}).</li>
+ * <li>Moves the course classes the library provides into {@code course-backup/}, writes the pom
+ * (and the IntelliJ module's library entry), records every change in the {@link Manifest}, and
+ * prints the summary, also kept as {@code course-backup/migration-report.txt}.</li>
+ * </ol>
+ * A failure while changing files takes back what was changed; {@link #undo} takes back a whole
+ * migration, refusing when a file changed since.
+ */
+public final class Migration {
+    static final String REPORT = Layout.BACKUP + "/migration-report.txt";
+    static final String SET_ASIDE = Layout.BACKUP + "/set-aside/";
+    static final String ORIGINALS = Layout.BACKUP + "/originals/";
+    /** Jars of a project's lib/ that are JUnit's (the pom's JUnit replaces them), by name prefix. */
+    private static final List<String> TEST_FRAMEWORK_JARS = List.of("junit", "opentest4j", "apiguardian", "hamcrest");
+
+    private final Toolchain tools;
+    private final Catalog catalog;
+    private final PrintStream out;
+
+    Migration(Toolchain tools, ClassLoader library, PrintStream out) {
+        this.tools = tools;
+        this.catalog = new Catalog(library);
+        this.out = out;
+    }
+
+    /**
+     * @param out where the summary goes
+     * @return a migration with the library this command runs with, JUnit from the local Maven repository
+     */
+    public static Migration ofThisProcess(PrintStream out) {
+        return new Migration(Toolchain.ofThisProcess(), Migration.class.getClassLoader(), out);
+    }
+
+    /**
+     * Migrates the project in {@code dir}, printing its summary.
+     *
+     * @param dir        the course project's folder
+     * @param allowDirty go on despite uncommitted changes in a git folder
+     * @param dryRun     print what would change, change nothing
+     * @return true when it changed the project; false when there was nothing to do (already migrated)
+     * @throws MigrationException refused or taken back, with the one line to print; nothing changed
+     */
+    public boolean migrate(Path dir, boolean allowDirty, boolean dryRun) throws MigrationException {
+        Layout layout = Layout.read(dir, tools.mavenRepository());
+        Path d = layout.dir();
+        List<SourceFile> files;
+        try {
+            files = layout.sources();
+        } catch (IOException e) {
+            throw new MigrationException("cannot read " + d + ": " + e.getMessage(), e);
+        }
+        List<SourceFile> tests = files.stream().filter(SourceFile::test).toList();
+        List<SourceFile> course = files.stream().filter(f -> !f.test() && catalog.provides(f.className())).toList();
+        List<SourceFile> extras = files.stream().filter(f -> !f.test() && !catalog.provides(f.className())).toList();
+
+        Path backup = d.resolve(Layout.BACKUP);
+        if (Files.exists(backup)) {
+            if (!Files.isRegularFile(d.resolve(Manifest.FILE)))
+                throw new MigrationException(backup + " is already there, and not from raytracer migrate: rename or remove it,"
+                        + " then run migrate again (nothing was changed)");
+            if (course.isEmpty()) {
+                out.println("raytracer migrate: " + d + " is already migrated (" + Manifest.FILE
+                        + "); nothing changed. Undo: raytracer migrate --undo " + d);
+                return false;
+            }
+            throw new MigrationException(d + " was migrated before (" + Manifest.FILE + "), and has course classes again ("
+                    + relative(d, course.get(0)) + "): undo the earlier migration first (raytracer migrate --undo " + d
+                    + "), or move " + Layout.BACKUP + "/ away (nothing was changed)");
+        }
+        if (course.isEmpty())
+            throw new MigrationException(d + " has no course class the library provides (such as primitives.Point or"
+                    + " renderer.Camera, in " + Layout.names(d, layout.mainRoots()) + "): nothing to migrate");
+        if (!allowDirty && !dryRun) requireCleanGit(d);
+        if (!dryRun) requireWritable(d, files, layout);
+        List<Path> junit = new ArrayList<>(tools.junit());
+        if (junit.isEmpty() && layout.jars().stream().noneMatch(j -> j.getFileName().toString().startsWith("junit-jupiter-api")))
+            throw new MigrationException("JUnit 5 is not in " + tools.mavenRepository() + " (the library's own build puts it"
+                    + " there): run mvn -q install -DskipTests in the library's clone first, then migrate again");
+
+        Plan plan;
+        try (Scratch scratch = new Scratch()) {
+            plan = plan(layout, course, extras, tests, junit, scratch.dir);
+        } catch (IOException e) {
+            throw new MigrationException("cannot compile in a scratch folder: " + e.getMessage(), e);
+        }
+        List<String> report = plan.report(d, layout, tools);
+        if (dryRun) {
+            out.println("raytracer migrate --dry-run: nothing changed; a migration would do this:");
+            report.forEach(out::println);
+            return false;
+        }
+        apply(d, plan, report);
+        report.forEach(out::println);
+        return true;
+    }
+
+    /**
+     * Takes back the migration of {@code dir}, as its manifest records it.
+     *
+     * @param dir the folder migrated
+     * @throws MigrationException when there is none, or a file changed since (all named; nothing changed)
+     */
+    public void undo(Path dir) throws MigrationException {
+        Path d = dir.toAbsolutePath().normalize();
+        if (!Files.isDirectory(d)) throw new MigrationException(d + " is not a folder");
+        Manifest manifest = Manifest.load(d);
+        try {
+            List<String> conflicts = manifest.conflicts();
+            if (!conflicts.isEmpty())
+                throw new MigrationException("cannot undo the migration of " + d + ": " + String.join("; ", conflicts)
+                        + " (nothing was changed; put them back, or undo by hand from " + Layout.BACKUP + "/)");
+            manifest.undoAll();
+            Files.deleteIfExists(d.resolve(Manifest.FILE));
+            Files.deleteIfExists(d.resolve(REPORT));
+            deleteEmptyFolders(d.resolve(Layout.BACKUP));
+        } catch (IOException e) {
+            throw new MigrationException("undo of " + d + " stopped part-way: " + e.getMessage()
+                    + " (what is left is listed in " + Manifest.FILE + ")", e, true);
+        }
+        long moved = manifest.entries().stream().filter(e -> e.kind().equals(Manifest.Entry.MOVE)).count();
+        out.println("raytracer migrate --undo: " + d + " is as it was before the migration (" + moved + " files moved back, "
+                + (manifest.entries().size() - moved) + " restored or removed)");
+    }
+
+    // ===== the plan: everything decided in a scratch folder before the project changes =====
+
+    /** A file that stays, with its text after the 2025–26 packages are folded, and where it goes. */
+    private record Kept(SourceFile file, String text, Path target) {
+        boolean changed() {
+            return !text.equals(file.text()) || !target.equals(file.path());
+        }
+    }
+
+    /** Everything a migration will do and say. */
+    private record Plan(List<SourceFile> course, List<Kept> extras, Map<SourceFile, String> setAside, List<Kept> tests,
+            Map<SourceFile, String> leftOut, List<CourseChoices.Choice> choices, BuildPlan build) {
+        List<String> report(Path d, Layout layout, Toolchain tools) {
+            List<String> r = new ArrayList<>();
+            r.add("raytracer migrate: " + d + " (" + layout.kind().label + ": " + Layout.names(d, layout.mainRoots())
+                    + (layout.testRoots().isEmpty() ? "" : "; tests " + Layout.names(d, layout.testRoots()))
+                    + "; Java release " + build.release() + ")");
+            if (!choices.isEmpty()) {
+                r.add("Where your code chose otherwise than the library (README, \"Which course year?\"):");
+                choices.forEach(c -> r.add("  " + c.line()));
+            }
+            r.add("Moved to " + Layout.BACKUP + "/ (the library provides them): " + course.size() + " classes");
+            Map<String, List<String>> byPackage = new TreeMap<>();
+            course.forEach(f -> byPackage.computeIfAbsent(f.packageName(), p -> new ArrayList<>()).add(f.simpleName()));
+            byPackage.forEach((p, names) -> r.add("  " + (p.isEmpty() ? "(no package)" : p) + ": " + String.join(", ", names)));
+            r.add("Kept (your own classes; they compile against the library): " + extras.size());
+            extras.forEach(k -> r.add("  " + d.relativize(k.target).toString().replace('\\', '/')));
+            if (!setAside.isEmpty()) {
+                r.add("Set aside into " + SET_ASIDE + " (they do not compile against the library): " + setAside.size());
+                setAside.forEach((f, why) -> r.add("  " + why));
+            }
+            r.add("Tests kept: " + tests.size() + " files" + (leftOut.isEmpty() ? "" : "; left out of the build (the files"
+                    + " stay where they are, excluded in pom.xml): " + leftOut.size()));
+            leftOut.forEach((f, why) -> r.add("  " + why));
+            long rewritten = Stream.concat(extras.stream(), tests.stream()).filter(Kept::changed).count();
+            if (rewritten > 0)
+                r.add("Rewritten (2025-26 api/impl packages folded into geometries, lighting): " + rewritten
+                        + " files (originals in " + ORIGINALS + ")");
+            r.add("pom.xml: " + (layout.pom() == null ? "written" : "updated") + " (" + build.library() + ", JUnit "
+                    + build.junit() + ", Java release " + build.release() + ", every test class runs whatever its name)");
+            if (layout.iml() != null)
+                r.add(d.relativize(layout.iml()) + ": the library jar added (from " + tools.mavenRepository() + ")");
+            if (!Files.isRegularFile(tools.installedJar()))
+                r.add("The library is not installed in " + tools.mavenRepository() + " yet: run mvn -q install -DskipTests"
+                        + " in its clone first (and again after pulling a newer version)");
+            r.add("Next: cd " + d + " && mvn test   (IntelliJ: Build > Rebuild Project, then run your tests)");
+            r.add("Undo: raytracer migrate --undo " + d + (Files.isDirectory(d.resolve(".git"))
+                    ? "   (or with git: git status lists every change)" : ""));
+            return r;
+        }
+    }
+
+    private Plan plan(Layout layout, List<SourceFile> course, List<SourceFile> extras, List<SourceFile> tests,
+            List<Path> junit, Path scratch) throws IOException, MigrationException {
+        Path d = layout.dir();
+        Javac javac = new Javac();
+        int jdk = tools.jdk();
+        List<Path> projectJars = layout.jars();
+
+        // 1. The project as it is must compile (else its errors would be blamed on the library).
+        requireCompilesAsIs(javac, d, course, extras, tests, junit, projectJars, scratch);
+
+        List<CourseChoices.Choice> choices = CourseChoices.find(course, tests, d);
+
+        // 2. The extras against the library, folded and staged; those that fail are set aside.
+        Map<String, String> own = new LinkedHashMap<>();
+        course.forEach(f -> own.putIfAbsent(f.simpleName(), f.text()));
+        List<Kept> keptExtras = extras.stream().map(f -> kept(f)).toList();
+        Map<Path, Kept> staged = stage(keptExtras, d, scratch.resolve("stage-main"));
+        List<Path> libraryPath = new ArrayList<>(List.of(tools.library()));
+        libraryPath.addAll(nonJUnit(projectJars));
+        Javac.Outcome main = javac.compile(staged.keySet(), libraryPath, jdk, scratch.resolve("main"));
+        Map<String, String> setAsideNames = new LinkedHashMap<>();
+        main.failed().keySet().forEach(p -> setAsideNames.put(staged.get(p).file.simpleName(),
+                "it does not compile against the library (" + SET_ASIDE + ")"));
+        Reasons reasons = new Reasons(own, setAsideNames, jdk);
+        Map<SourceFile, String> setAside = explain(main.failed(), staged, reasons, d);
+
+        // 3. The tests against the library and the kept extras; those that fail are left out.
+        List<Kept> keptTests = tests.stream().map(f -> kept(f)).toList();
+        Map<Path, Kept> stagedTests = stage(keptTests, d, scratch.resolve("stage-test"));
+        List<Path> testPath = new ArrayList<>(libraryPath);
+        testPath.add(scratch.resolve("main"));
+        testPath.addAll(junit);
+        testPath.addAll(projectJars);
+        Javac.Outcome test = javac.compile(stagedTests.keySet(), testPath, jdk, scratch.resolve("test"));
+        Map<SourceFile, String> leftOut = explain(test.failed(), stagedTests, reasons, d);
+
+        // 4. The lowest release of 17, 21 and this JDK's at which all that stays compiles.
+        List<Kept> extrasKept = main.compiled().stream().map(staged::get).toList();
+        List<Kept> testsKept = test.compiled().stream().map(stagedTests::get).toList();
+        int release = jdk;
+        for (int candidate : new int[] { 17, 21 }) {
+            if (candidate >= jdk) break;
+            Javac.Outcome m = javac.compile(main.compiled(), libraryPath, candidate, scratch.resolve("r-main"));
+            if (!m.failed().isEmpty()) continue;
+            List<Path> path = new ArrayList<>(testPath);
+            path.set(path.indexOf(scratch.resolve("main")), scratch.resolve("r-main"));
+            if (javac.compile(test.compiled(), path, candidate, scratch.resolve("r-test")).failed().isEmpty()) {
+                release = candidate;
+                break;
+            }
+        }
+        return new Plan(course, extrasKept, setAside, testsKept, leftOut, choices,
+                buildPlan(layout, extras, tests, leftOut.keySet(), release, d));
+    }
+
+    private void requireCompilesAsIs(Javac javac, Path d, List<SourceFile> course, List<SourceFile> extras,
+            List<SourceFile> tests, List<Path> junit, List<Path> jars, Path scratch) throws IOException, MigrationException {
+        List<Path> main = Stream.concat(course.stream(), extras.stream()).map(SourceFile::path).toList();
+        Javac.Outcome m = javac.compile(main, jars, tools.jdk(), scratch.resolve("as-is-main"));
+        List<Path> path = new ArrayList<>(List.of(scratch.resolve("as-is-main")));
+        path.addAll(junit);
+        path.addAll(jars);
+        Javac.Outcome t = javac.compile(tests.stream().map(SourceFile::path).toList(), path, tools.jdk(),
+                scratch.resolve("as-is-test"));
+        Map<Path, List<Javac.Problem>> failed = new LinkedHashMap<>(m.failed());
+        failed.putAll(t.failed());
+        // A file that needs a newer Java is named later, with its reason; so is a file that failed
+        // only because such a file was left out, directly or through others.
+        Set<String> excused = new LinkedHashSet<>();
+        failed.forEach((f, problems) -> {
+            if (Reasons.releaseNeeded(problems.get(0)) > tools.jdk()) excused.add(className(f));
+        });
+        for (boolean grew = true; grew;) {
+            grew = false;
+            for (Map.Entry<Path, List<Javac.Problem>> e : failed.entrySet()) {
+                String name = className(e.getKey());
+                Javac.Problem p = e.getValue().get(0);
+                if (!excused.contains(name) && excused.stream().anyMatch(x -> p.message().contains(x))) grew = excused.add(name);
+            }
+        }
+        for (Map.Entry<Path, List<Javac.Problem>> e : failed.entrySet()) {
+            if (excused.contains(className(e.getKey()))) continue;
+            Javac.Problem p = e.getValue().get(0);
+            throw new MigrationException(d + " does not compile as it is (" + d.relativize(p.file()).toString().replace('\\', '/')
+                    + ":" + p.line() + ": " + oneLine(p.message()) + "): fix it first, or run migrate"
+                    + " with the JDK it was written for (nothing was changed)");
+        }
+    }
+
+    private static String className(Path file) {
+        return file.getFileName().toString().replaceFirst("\\.java$", "");
+    }
+
+    /** The file with 2025–26's {@code geometries.api/impl} and {@code lighting.api/impl} folded, and its new place. */
+    private static Kept kept(SourceFile f) {
+        String text = fold(f.text());
+        Path target = f.path();
+        String pkg = Catalog.libraryPackage(f.packageName());
+        if (!pkg.equals(f.packageName()) && f.path().getParent().equals(f.root().resolve(f.packageName().replace('.', '/')))) {
+            Path moved = f.root().resolve(pkg.replace('.', '/')).resolve(f.path().getFileName());
+            if (!Files.exists(moved)) target = moved;
+        }
+        return new Kept(f, text, target);
+    }
+
+    static String fold(String text) {
+        return text.replaceAll("(?m)^(\\s*(?:package|import)\\s+(?:static\\s+)?)(geometries|lighting)\\.(?:api|impl)\\s*;", "$1$2;")
+                .replaceAll("\\b(geometries|lighting)\\.(?:api|impl)\\.", "$1.");
+    }
+
+    /** Writes the files, as they will be, under {@code stage} at their paths in the project. */
+    private static Map<Path, Kept> stage(List<Kept> files, Path d, Path stage) throws IOException {
+        Map<Path, Kept> staged = new LinkedHashMap<>();
+        for (Kept k : files) {
+            Path p = stage.resolve(d.relativize(k.target).toString()).toAbsolutePath().normalize();
+            Files.createDirectories(p.getParent());
+            Files.writeString(p, k.text, StandardCharsets.UTF_8);
+            staged.put(p, k);
+        }
+        return staged;
+    }
+
+    private static Map<SourceFile, String> explain(Map<Path, List<Javac.Problem>> failed, Map<Path, Kept> staged,
+            Reasons reasons, Path d) {
+        Map<SourceFile, String> lines = new LinkedHashMap<>();
+        failed.forEach((p, problems) -> {
+            SourceFile f = staged.get(p).file;
+            Javac.Problem first = problems.get(0);
+            lines.put(f, f.relative(d) + ":" + first.line() + ": " + reasons.explain(first, f.test())
+                    + (problems.size() > 1 ? " (and " + (problems.size() - 1) + " more)" : ""));
+        });
+        return lines;
+    }
+
+    private BuildPlan buildPlan(Layout layout, List<SourceFile> extras, List<SourceFile> tests, Set<SourceFile> leftOut,
+            int release, Path d) {
+        List<String> mainRoots = layout.mainRoots().stream().map(r -> rel(d, r)).toList();
+        Set<Path> testRootPaths = new LinkedHashSet<>(layout.testRoots());
+        tests.forEach(t -> testRootPaths.add(t.root()));
+        List<String> testRoots = testRootPaths.stream().filter(r -> tests.stream().anyMatch(t -> t.root().equals(r)))
+                .map(r -> rel(d, r)).toList();
+        // Tests in a folder that also holds sources: out of the main compile, and the only part of
+        // that folder the test compile takes.
+        List<SourceFile> mixed = tests.stream().filter(t -> layout.mainRoots().contains(t.root())).toList();
+        List<SourceFile> all = new ArrayList<>(extras);
+        all.addAll(tests);
+        List<String> mainExcludes = patterns(mixed, all);
+        List<String> testIncludes = mixed.isEmpty() ? List.of() : patterns(tests, all);
+        List<String> testExcludes = leftOut.stream().map(SourceFile::inRoot).sorted().toList();
+        List<String> jars = layout.jars().stream().filter(j -> j.startsWith(d) && !isTestFramework(j)).map(j -> rel(d, j)).toList();
+        return new BuildPlan(tools.coordinates(), tools.junitVersion(), release, mainRoots, testRoots, mainExcludes,
+                testIncludes, testExcludes, jars);
+    }
+
+    /** Patterns for {@code chosen} within their folders: {@code unittests/**} where a whole top folder is chosen. */
+    static List<String> patterns(List<SourceFile> chosen, List<SourceFile> all) {
+        Set<String> out = new LinkedHashSet<>();
+        for (SourceFile f : chosen) {
+            String inRoot = f.inRoot();
+            int slash = inRoot.indexOf('/');
+            if (slash < 0) {
+                out.add(inRoot);
+                continue;
+            }
+            String top = inRoot.substring(0, slash + 1);
+            boolean whole = all.stream().filter(a -> a.root().equals(f.root()) && a.inRoot().startsWith(top))
+                    .allMatch(chosen::contains);
+            out.add(whole ? top + "**" : inRoot);
+        }
+        return List.copyOf(out);
+    }
+
+    private static boolean isTestFramework(Path jar) {
+        String name = jar.getFileName().toString();
+        return TEST_FRAMEWORK_JARS.stream().anyMatch(name::startsWith);
+    }
+
+    // ===== applying the plan =====
+
+    private void apply(Path d, Plan plan, List<String> report) throws MigrationException {
+        Manifest manifest = new Manifest(d);
+        try {
+            for (SourceFile f : plan.course) manifest.move(f.relative(d), Layout.BACKUP + "/" + f.relative(d));
+            for (SourceFile f : plan.setAside.keySet()) manifest.move(f.relative(d), SET_ASIDE + f.relative(d));
+            for (Kept k : Stream.concat(plan.extras.stream(), plan.tests.stream()).filter(Kept::changed).toList())
+                manifest.replace(k.file.relative(d), rel(d, k.target), ORIGINALS + k.file.relative(d), k.text);
+            Path pom = d.resolve("pom.xml");
+            if (Files.isRegularFile(pom)) {
+                PomFile.Updated updated = PomFile.update(Files.readString(pom, StandardCharsets.UTF_8), plan.build);
+                manifest.replace("pom.xml", "pom.xml", ORIGINALS + "pom.xml", updated.text());
+            } else {
+                manifest.create("pom.xml", PomFile.create(plan.build, d.getFileName().toString()));
+            }
+            Layout after = Layout.read(d, tools.mavenRepository());
+            if (after.iml() != null) {
+                String iml = Files.readString(after.iml(), StandardCharsets.UTF_8);
+                String added = ImlFile.addLibrary(iml, plan.build);
+                if (added != null && !added.equals(iml))
+                    manifest.replace(rel(d, after.iml()), rel(d, after.iml()), ORIGINALS + rel(d, after.iml()), added);
+            }
+            Path compilerXml = d.resolve(".idea/compiler.xml");
+            if (Files.isDirectory(d.resolve(".idea")) && !plan.leftOut.isEmpty()) {
+                List<String> leftOut = plan.leftOut.keySet().stream().map(f -> f.relative(d)).toList();
+                if (Files.isRegularFile(compilerXml)) {
+                    String xml = Files.readString(compilerXml, StandardCharsets.UTF_8);
+                    manifest.replace(".idea/compiler.xml", ".idea/compiler.xml", ORIGINALS + ".idea/compiler.xml",
+                            ImlFile.exclude(xml, leftOut));
+                } else {
+                    manifest.create(".idea/compiler.xml", ImlFile.exclude(null, leftOut));
+                }
+            }
+            manifest.save();
+            Manifest.write(d.resolve(REPORT), String.join("\n", report) + "\n");
+        } catch (IOException | MigrationException | RuntimeException e) {
+            try {
+                manifest.rollBack();
+                Files.deleteIfExists(d.resolve(Manifest.FILE));
+                Files.deleteIfExists(d.resolve(REPORT));
+                deleteEmptyFolders(d.resolve(Layout.BACKUP));
+            } catch (IOException again) {
+                e.addSuppressed(again);
+                throw new MigrationException("the migration failed (" + e.getMessage() + ") and could not be taken back whole ("
+                        + again.getMessage() + "): what was changed is listed in the lines of " + Manifest.FILE, e, true);
+            }
+            throw new MigrationException("the migration failed and was taken back, nothing changed: "
+                    + (e.getMessage() == null ? e.toString() : e.getMessage()), e, true);
+        }
+        for (Path root : emptiedRoots(d, plan)) {
+            try {
+                deleteEmptyFolders(root);
+            } catch (IOException e) {
+                // an empty package folder left behind changes nothing in the build
+            }
+        }
+    }
+
+    /** The folders the moved classes left: emptied package folders go, the source folder itself stays. */
+    private static Set<Path> emptiedRoots(Path d, Plan plan) {
+        Set<Path> roots = new LinkedHashSet<>();
+        plan.course.forEach(f -> roots.add(f.root()));
+        plan.setAside.keySet().forEach(f -> roots.add(f.root()));
+        return roots;
+    }
+
+    /** Deletes the empty folders under {@code top} (deepest first), and {@code top} itself when it empties. */
+    private static void deleteEmptyFolders(Path top) throws IOException {
+        if (!Files.isDirectory(top)) return;
+        List<Path> dirs;
+        try (Stream<Path> walk = Files.walk(top)) {
+            dirs = walk.filter(Files::isDirectory).sorted((a, b) -> b.getNameCount() - a.getNameCount()).toList();
+        }
+        for (Path dir : dirs) {
+            try (Stream<Path> in = Files.list(dir)) {
+                if (in.findAny().isEmpty() && (!dir.equals(top) || top.getFileName().toString().equals(Layout.BACKUP)))
+                    Files.delete(dir);
+            }
+        }
+    }
+
+    // ===== the checks before anything changes =====
+
+    private static void requireCleanGit(Path d) throws MigrationException {
+        String status;
+        try {
+            Process git = new ProcessBuilder("git", "-C", d.toString(), "status", "--porcelain", "--", ".")
+                    .redirectErrorStream(false).start();
+            git.getOutputStream().close();
+            status = new String(git.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            git.getErrorStream().readAllBytes();
+            if (!git.waitFor(30, TimeUnit.SECONDS) || git.exitValue() != 0) return; // not a git folder
+        } catch (IOException e) {
+            return; // no git on this machine: nothing to compare with
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new MigrationException("interrupted while asking git for the folder's state (nothing was changed)", e);
+        }
+        if (!status.isBlank()) {
+            long n = status.lines().count();
+            throw new MigrationException(d + " has uncommitted changes (" + n + " in git status): commit or stash them first,"
+                    + " so that git can show and take back what the migration changes, or pass --allow-dirty (nothing was changed)");
+        }
+    }
+
+    private static void requireWritable(Path d, List<SourceFile> files, Layout layout) throws MigrationException {
+        Set<Path> need = new LinkedHashSet<>();
+        need.add(d);
+        files.forEach(f -> need.add(f.path().getParent()));
+        if (layout.pom() != null) need.add(layout.pom());
+        if (layout.iml() != null) need.add(layout.iml());
+        for (Path p : need)
+            if (!Files.isWritable(p))
+                throw new MigrationException("cannot write " + p + " (read-only): the migration moves and writes files there;"
+                        + " nothing was changed");
+    }
+
+    /** javac's message in one line: {@code cannot find symbol (symbol: method f(), location: class A)}. */
+    static String oneLine(String message) {
+        List<String> lines = message.lines().map(String::strip).filter(l -> !l.isEmpty()).toList();
+        return lines.isEmpty() ? "" : lines.get(0) + (lines.size() > 1 ? " (" + String.join(", ", lines.subList(1, lines.size())).replaceAll("\\s+", " ") + ")" : "");
+    }
+
+    private static String rel(Path d, Path p) {
+        String r = d.relativize(p).toString().replace('\\', '/');
+        return r.isEmpty() ? "." : r;
+    }
+
+    private static String relative(Path d, SourceFile f) {
+        return f.relative(d);
+    }
+
+    private static List<Path> nonJUnit(List<Path> jars) {
+        return jars.stream().filter(j -> !isTestFramework(j)).toList();
+    }
+
+    /** A scratch folder for the compile checks, deleted afterwards. */
+    private static final class Scratch implements AutoCloseable {
+        final Path dir;
+
+        Scratch() throws MigrationException {
+            try {
+                dir = Files.createTempDirectory("raytracer-migrate");
+            } catch (IOException e) {
+                throw new MigrationException("cannot make a scratch folder: " + e.getMessage(), e);
+            }
+        }
+
+        @Override
+        public void close() {
+            try {
+                Javac.deleteTree(dir);
+            } catch (IOException e) {
+                // a scratch folder in the temporary folder: the system cleans it
+            }
+        }
+    }
+}

@@ -1,0 +1,126 @@
+package app.migrate;
+
+import java.util.Map;
+import java.util.Set;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * Why a file does not compile against the library, in one line a student can act on: the missing
+ * name and whose it is (a method of their own course class that the course API does not have, a
+ * class of theirs that was set aside, a package that is not there), or the Java release it needs.
+ * From javac's first error in the file; its message where nothing better can be said.
+ */
+final class Reasons {
+    private static final Pattern SYMBOL = Pattern.compile("symbol:\\s+(method|variable|class|interface|enum|static)\\s+([^\\n]+)");
+    private static final Pattern LOCATION = Pattern.compile(
+            "location:\\s+(?:class|interface|enum|record|variable \\S+ of type|package)\\s+([\\w.$]+)");
+    private static final Pattern PACKAGE_MISSING = Pattern.compile("package ([\\w.]+) does not exist");
+    /** {@code o instanceof Point(double x, …)} or {@code case Point(…)}: a record pattern. */
+    private static final Pattern RECORD_PATTERN = Pattern.compile("(\\binstanceof|\\bcase)\\s+[\\w.<>]+\\s*\\(");
+    private static final Pattern SOURCE_LEVEL = Pattern.compile("use --?(?:source|release) (\\d+) or higher");
+    /** The API of Java 21's sequenced collections, which course code of 2025–26 uses on lists. */
+    private static final Set<String> SEQUENCED = Set.of("getFirst()", "getLast()", "removeFirst()", "removeLast()",
+            "reversed()");
+
+    /** The student's own course classes by simple name: their text, to tell their own methods. */
+    private final Map<String, String> ownCourseClasses;
+    /** Classes set aside (simple name → why), which files that use them cannot reach. */
+    private final Map<String, String> setAside;
+    /** The release the compile ran at: this JDK's newest. */
+    private final int jdk;
+
+    Reasons(Map<String, String> ownCourseClasses, Map<String, String> setAside, int jdk) {
+        this.ownCourseClasses = ownCourseClasses;
+        this.setAside = setAside;
+        this.jdk = jdk;
+    }
+
+    /**
+     * The release a compile error asks for, when it is one of a newer Java (0 otherwise): the
+     * unnamed {@code _} (22), a language feature javac names with its release, the sequenced
+     * collections (21).
+     */
+    static int releaseNeeded(Javac.Problem p) {
+        String code = p.code();
+        if (code.contains("underscore") || p.message().contains("unnamed")) return 22;
+        Matcher m = SOURCE_LEVEL.matcher(p.message());
+        if (m.find()) return Integer.parseInt(m.group(1));
+        // Java 17's javac does not know record patterns (21) and reads one as a syntax error;
+        // it knows switch patterns only as a preview.
+        if (code.startsWith("compiler.err.preview.feature.disabled") || code.equals("compiler.err.enum.label.must.be.unqualified.enum"))
+            return 21;
+        if (code.startsWith("compiler.err.expected") || code.startsWith("compiler.err.illegal.start")) {
+            String line = p.sourceLine();
+            if (RECORD_PATTERN.matcher(line).find()) return 21;
+        }
+        if (code.startsWith("compiler.err.cant.resolve")) {
+            Matcher s = SYMBOL.matcher(p.message());
+            if (s.find() && SEQUENCED.contains(s.group(2).trim())) return 21;
+        }
+        return 0;
+    }
+
+    /**
+     * The one-line reason, without the file and line (the caller puts them first).
+     *
+     * @param test whether the file is a test (the advice differs: port the test, or port the class)
+     */
+    String explain(Javac.Problem p, boolean test) {
+        int release = releaseNeeded(p);
+        if (release > jdk)
+            return "needs Java " + release + " (" + feature(p) + "), and this JDK is " + jdk
+                    + ": run migrate with JDK " + release + " or newer, or port it";
+        Matcher pkg = PACKAGE_MISSING.matcher(p.message());
+        if (pkg.find()) return "package " + pkg.group(1) + " is not in the build (neither the library's nor yours)";
+        if (p.code().startsWith("compiler.err.cant.resolve")) {
+            Matcher s = SYMBOL.matcher(p.message());
+            Matcher l = LOCATION.matcher(p.message());
+            if (s.find()) {
+                String kind = s.group(1), name = s.group(2).trim();
+                String owner = l.find() ? simple(l.group(1)) : null;
+                if ((kind.equals("class") || kind.equals("interface") || kind.equals("enum")) && setAside.containsKey(name))
+                    return name + " is your own class, set aside: " + setAside.get(name);
+                String shown = owner == null ? name : owner + "." + name;
+                String bare = name.replaceAll("\\(.*", "");
+                if (owner != null && declares(ownText(owner), bare))
+                    return shown + " is your own " + (kind.equals("method") ? "method" : "name")
+                            + " (not in the course API): port " + (test ? "the test" : "it") + " or keep it aside";
+                if (owner == null && kind.equals("class"))
+                    return "class " + name + " is not in the build (neither the library's nor yours)";
+                return shown + " is not in the library (nor in your course classes)";
+            }
+        }
+        return Migration.oneLine(p.message());
+    }
+
+    /** The text of the student's course class of this simple name, nested ones ({@code Builder}) included. */
+    private String ownText(String simpleName) {
+        String top = ownCourseClasses.get(simpleName);
+        if (top != null) return top;
+        Pattern nested = Pattern.compile("\\b(class|interface|record|enum)\\s+" + Pattern.quote(simpleName) + "\\b");
+        return ownCourseClasses.values().stream().filter(t -> nested.matcher(t).find()).findFirst().orElse(null);
+    }
+
+    private static String feature(Javac.Problem p) {
+        if (p.code().contains("underscore") || p.message().contains("unnamed")) return "the unnamed variable _";
+        if (RECORD_PATTERN.matcher(p.sourceLine()).find()) return "a record pattern";
+        if (p.message().contains("getFirst") || p.message().contains("getLast")) return "List.getFirst/getLast";
+        String first = p.message().lines().findFirst().orElse("").trim();
+        return first.length() > 80 ? first.substring(0, 77) + "..." : first;
+    }
+
+    /** {@code java.util.List<primitives.Point>} → {@code List}. */
+    private static String simple(String type) {
+        String t = type.replaceAll("<.*", "");
+        return t.substring(t.lastIndexOf('.') + 1);
+    }
+
+    /** Whether a class's text declares a method or field of this name (a declaration, not a call). */
+    private static boolean declares(String text, String name) {
+        if (text == null) return false;
+        Pattern declaration = Pattern.compile("(?m)^[\\t ]*(?:(?:public|protected|private|static|final|abstract|default"
+                + "|synchronized)\\s+)*[\\w.<>\\[\\], ?]+\\s+" + Pattern.quote(name) + "\\s*[(=;]");
+        return declaration.matcher(text).find();
+    }
+}

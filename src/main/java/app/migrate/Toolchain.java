@@ -1,0 +1,107 @@
+package app.migrate;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.UncheckedIOException;
+import java.net.URISyntaxException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.security.CodeSource;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.Properties;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import java.util.stream.Stream;
+
+/**
+ * What a migration compiles with and writes down: the library (the classes this command runs
+ * with, so the check is made against exactly the library that ships with it), JUnit 5's API for
+ * the tests, the local Maven repository the IDE and Maven read, the coordinates a pom names, and
+ * the newest Java release this JDK compiles for.
+ *
+ * @param library         the library's classes: a jar or a folder
+ * @param junit           JUnit 5's API jars (jupiter api and params, platform commons, opentest4j,
+ *                        apiguardian); empty when the project's own {@code lib/} must do
+ * @param mavenRepository the local Maven repository ({@code ~/.m2/repository})
+ * @param coordinates     {@code group:artifact:version} of the library
+ * @param junitVersion    the JUnit BOM version a new pom imports
+ * @param jdk             the newest release this JDK compiles for
+ */
+record Toolchain(Path library, List<Path> junit, Path mavenRepository, String coordinates, String junitVersion, int jdk) {
+    /** The JUnit artifacts a course test compiles against, as {@code group path/artifact}. */
+    private static final List<String> JUNIT_ARTIFACTS = List.of("org/junit/jupiter/junit-jupiter-api",
+            "org/junit/jupiter/junit-jupiter-params", "org/junit/platform/junit-platform-commons",
+            "org/opentest4j/opentest4j", "org/apiguardian/apiguardian-api");
+
+    /** The toolchain of this process: the library it runs with, JUnit from the local repository. */
+    static Toolchain ofThisProcess() {
+        Path library = location(Catalog.class);
+        Properties p = new Properties();
+        try (InputStream in = Toolchain.class.getResourceAsStream("library.properties")) {
+            if (in != null) p.load(in);
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        String coordinates = p.getProperty("groupId", "io.github.raytracer") + ":" + p.getProperty("artifactId", "raytracer")
+                + ":" + p.getProperty("version", "1.0.0-SNAPSHOT");
+        String junit = p.getProperty("junit", "5.11.3");
+        Path repo = defaultMavenRepository();
+        return new Toolchain(library, junitJars(repo, junit), repo, coordinates, junit, Javac.newestRelease());
+    }
+
+    /** Where the library's jar lies in the local repository (it may not be installed yet). */
+    Path installedJar() {
+        String[] c = coordinates.split(":");
+        return mavenRepository.resolve(c[0].replace('.', '/')).resolve(c[1]).resolve(c[2]).resolve(c[1] + "-" + c[2] + ".jar");
+    }
+
+    /** {@code -Dmaven.repo.local}, else {@code localRepository} of {@code ~/.m2/settings.xml}, else {@code ~/.m2/repository}. */
+    static Path defaultMavenRepository() {
+        String set = System.getProperty("maven.repo.local");
+        if (set != null && !set.isBlank()) return Path.of(set);
+        Path m2 = Path.of(System.getProperty("user.home"), ".m2");
+        Path settings = m2.resolve("settings.xml");
+        if (Files.isRegularFile(settings)) {
+            try {
+                Matcher m = Pattern.compile("<localRepository>\\s*([^<]+?)\\s*</localRepository>")
+                        .matcher(Files.readString(settings, StandardCharsets.UTF_8));
+                if (m.find() && !m.group(1).contains("${")) return Path.of(m.group(1));
+            } catch (IOException e) {
+                // an unreadable settings file: Maven would fail on it too; the default stands
+            }
+        }
+        return m2.resolve("repository");
+    }
+
+    /** JUnit's API jars in the repository: the BOM's version of each where present, else the newest. */
+    static List<Path> junitJars(Path repo, String jupiterVersion) {
+        List<Path> jars = new ArrayList<>();
+        for (String artifact : JUNIT_ARTIFACTS) {
+            Path dir = repo.resolve(artifact);
+            if (!Files.isDirectory(dir)) continue;
+            String name = artifact.substring(artifact.lastIndexOf('/') + 1);
+            try (Stream<Path> versions = Files.list(dir)) {
+                versions.filter(v -> Files.isRegularFile(v.resolve(name + "-" + v.getFileName() + ".jar")))
+                        .max(Comparator.comparing((Path v) -> v.getFileName().toString().equals(jupiterVersion))
+                                .thenComparing((a, b) -> PomFile.compareVersions(a.getFileName().toString(),
+                                        b.getFileName().toString())))
+                        .ifPresent(v -> jars.add(v.resolve(name + "-" + v.getFileName() + ".jar")));
+            } catch (IOException e) {
+                // an unreadable folder of the repository: that jar is missing, which is reported
+            }
+        }
+        return jars;
+    }
+
+    static Path location(Class<?> c) {
+        CodeSource source = c.getProtectionDomain().getCodeSource();
+        try {
+            return Path.of(source.getLocation().toURI());
+        } catch (URISyntaxException | NullPointerException e) {
+            throw new IllegalStateException("cannot tell where the library's classes are loaded from", e);
+        }
+    }
+}
