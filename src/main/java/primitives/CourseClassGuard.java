@@ -75,6 +75,22 @@ public final class CourseClassGuard {
      *         no code source)
      */
     static String shadowed(ClassLoader loader) {
+        String names = shadowing(loader);
+        return names == null ? null : "Your own course classes shadow the library's: " + names
+                + ". The library (" + location(CourseClassGuard.class) + ") cannot run with them. Delete or move them (see README"
+                + " 'Moving an existing course project onto the library'): keep your tests and your own extra"
+                + " classes; then rebuild clean (mvn clean test, or your IDE's Rebuild Project).";
+    }
+
+    /**
+     * Internal (for the test-run listener of {@code renderer.junit}): which of the library's course
+     * classes {@code loader} loads from somewhere else than the library.
+     *
+     * @param loader the class loader the tests run with
+     * @return {@code primitives.{Point, Vector} from /project/out}, groups joined by {@code ; },
+     *         or null when none is shadowed (or nothing can be told)
+     */
+    public static String shadowing(ClassLoader loader) {
         String library = location(CourseClassGuard.class);
         if (loader == null || library == null) return null;
         // location → package → simple names, sorted, so that the message reads in one order
@@ -99,10 +115,7 @@ public final class CourseClassGuard {
         if (found.isEmpty()) return null;
         List<String> groups = new ArrayList<>();
         found.forEach((where, packages) -> groups.add(names(packages) + " from " + where));
-        return "Your own course classes shadow the library's: " + String.join("; ", groups)
-                + ". The library (" + library + ") cannot run with them. Delete or move them (see README"
-                + " 'Moving an existing course project onto the library'): keep your tests and your own extra"
-                + " classes; then rebuild clean (mvn clean test, or your IDE's Rebuild Project).";
+        return String.join("; ", groups);
     }
 
     /**

@@ -1,0 +1,376 @@
+package app.migrate;
+
+import static app.migrate.CourseProjects.snapshot;
+import static app.migrate.CourseProjects.write;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+import static org.junit.platform.engine.discovery.DiscoverySelectors.selectClass;
+
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.net.URL;
+import java.net.URLClassLoader;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.Map;
+
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.platform.testkit.engine.EngineTestKit;
+
+import renderer.Camera;
+
+/**
+ * {@code raytracer migrate} on course projects built for the test ({@link CourseProjects}): each
+ * layout, what moves, what stays, what is left out and why, the pom, the undo, and every refusal
+ * with nothing changed.
+ */
+class MigrationTest {
+    @TempDir
+    Path dir;
+    private final ByteArrayOutputStream printed = new ByteArrayOutputStream();
+
+    /** The library of this build (target/classes), JUnit from the test's own class path, an empty Maven repository. */
+    private Migration migration() {
+        Toolchain mine = Toolchain.ofThisProcess();
+        List<Path> junit = Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
+                .filter(p -> p.matches(".*(junit-jupiter-api|junit-jupiter-params|junit-platform-commons|opentest4j|apiguardian).*\\.jar"))
+                .map(Path::of).toList();
+        Toolchain tools = new Toolchain(Toolchain.location(Camera.class), junit, dir.resolveSibling(dir.getFileName() + "-m2"),
+                mine.coordinates(), mine.junitVersion(), mine.jdk());
+        return new Migration(tools, Camera.class.getClassLoader(), new PrintStream(printed, true, StandardCharsets.UTF_8));
+    }
+
+    private String printed() {
+        return printed.toString(StandardCharsets.UTF_8);
+    }
+
+    private String read(String path) throws IOException {
+        return Files.readString(dir.resolve(path), StandardCharsets.UTF_8);
+    }
+
+    @Nested
+    @DisplayName("an IntelliJ course project (src/, unittests/, an .iml, no pom)")
+    class IntelliJ {
+        private Map<String, String> before;
+
+        @BeforeEach
+        void migrate() throws Exception {
+            CourseProjects.intellij(dir);
+            before = snapshot(dir);
+            assertThat(migration().migrate(dir, false, false)).isTrue();
+        }
+
+        @Test
+        @DisplayName("moves the course classes the library provides into course-backup/, keeping their paths")
+        void movesCourseClasses() {
+            assertThat(dir.resolve("src/primitives")).doesNotExist();
+            assertThat(dir.resolve("course-backup/src/primitives/Vector.java")).hasContent(before.get("src/primitives/Vector.java"));
+            assertThat(dir.resolve("course-backup/src/primitives/Point.java")).exists();
+        }
+
+        @Test
+        @DisplayName("keeps an extra class on the course API, sets aside one that uses the student's own method, with the reason")
+        void keepsAndSetsAsideExtras() {
+            assertThat(dir.resolve("src/renderer/PixelHelper.java")).exists();
+            assertThat(dir.resolve("course-backup/set-aside/src/renderer/Turner.java")).exists();
+            assertThat(printed()).contains(
+                    "src/renderer/Turner.java:6: Vector.rotate(int) is your own method (not in the course API): port it or keep it aside");
+        }
+
+        @Test
+        @DisplayName("leaves a test that calls the student's own method out of the build, untouched, naming the call and its line")
+        void leavesOutTests() throws IOException {
+            assertThat(dir.resolve("unittests/primitives/RotateTest.java")).hasContent(before.get("unittests/primitives/RotateTest.java"));
+            assertThat(printed()).contains("unittests/primitives/RotateTest.java:10: Vector.rotate(int) is your own method"
+                    + " (not in the course API): port the test or keep it aside");
+            assertThat(read("pom.xml")).contains("<testExclude>primitives/RotateTest.java</testExclude>");
+        }
+
+        @Test
+        @DisplayName("writes a pom that builds the project where it stands and runs every test class whatever its name")
+        void writesPom() throws IOException {
+            String pom = read("pom.xml");
+            assertThat(pom).contains("<sourceDirectory>src</sourceDirectory>", "<testSourceDirectory>unittests</testSourceDirectory>",
+                    "<artifactId>junit-bom</artifactId>", "<artifactId>raytracer</artifactId>",
+                    "<version>" + BuildPlan.COMPILER_VERSION + "</version>", "<version>" + BuildPlan.SUREFIRE_VERSION + "</version>",
+                    "<include>**/*.java</include>", "<maven.compiler.release>17</maven.compiler.release>");
+        }
+
+        @Test
+        @DisplayName("adds the library jar to the IntelliJ module, from the local Maven repository")
+        void addsLibraryToIml() throws IOException {
+            assertThat(read("course.iml")).contains(ImlFile.LIBRARY_NAME, "jar://$MAVEN_REPOSITORY$/io/github/raytracer/raytracer/")
+                    .contains("<orderEntry type=\"sourceFolder\" forTests=\"false\" />");
+        }
+
+        @Test
+        @DisplayName("the kept tests compile against the library and pass, the one not named *Test included")
+        void keptTestsPass() throws Exception {
+            Path classes = Files.createTempDirectory("migrated-tests");
+            List<Path> sources = new ArrayList<>();
+            for (String f : List.of("unittests/primitives/VectorTests.java", "unittests/renderer/CameraIntersectionIntegration.java",
+                    "src/renderer/PixelHelper.java"))
+                sources.add(dir.resolve(f));
+            List<Path> classPath = new ArrayList<>(Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
+                    .map(Path::of).toList());
+            Javac.Outcome compiled = new Javac().compile(sources, classPath, 17, classes);
+            assertThat(compiled.failed()).isEmpty();
+            try (URLClassLoader loader = new URLClassLoader(new URL[] { classes.toUri().toURL() }, getClass().getClassLoader())) {
+                var results = EngineTestKit.engine("junit-jupiter")
+                        .selectors(selectClass(loader.loadClass("primitives.VectorTests")),
+                                selectClass(loader.loadClass("renderer.CameraIntersectionIntegration")))
+                        .execute().testEvents();
+                assertThat(results.succeeded().count()).isEqualTo(2);
+                assertThat(results.failed().count()).isZero();
+            }
+        }
+
+        @Test
+        @DisplayName("a second run changes nothing and says so")
+        void secondRun() throws Exception {
+            Map<String, String> after = snapshot(dir);
+            printed.reset();
+            assertThat(migration().migrate(dir, false, false)).isFalse();
+            assertThat(snapshot(dir)).isEqualTo(after);
+            assertThat(printed()).contains("is already migrated", "nothing changed");
+        }
+
+        @Test
+        @DisplayName("--undo puts every file back as it was")
+        void undo() throws Exception {
+            migration().undo(dir);
+            assertThat(snapshot(dir)).isEqualTo(before);
+        }
+
+        @Test
+        @DisplayName("--undo refuses when a file changed since the migration, and changes nothing")
+        void undoRefusesChangedFile() throws Exception {
+            write(dir, "course-backup/src/primitives/Vector.java", "changed");
+            Map<String, String> now = snapshot(dir);
+            assertThatThrownBy(() -> migration().undo(dir)).isInstanceOf(MigrationException.class)
+                    .hasMessageContaining("course-backup/src/primitives/Vector.java changed since the migration");
+            assertThat(snapshot(dir)).isEqualTo(now);
+        }
+    }
+
+    @Nested
+    @DisplayName("a 2025-26 project (geometries.api/impl, lighting.impl, the course's Main with _)")
+    class Year5786 {
+        @BeforeEach
+        void project() throws IOException {
+            write(dir, "src/primitives/Point.java", CourseProjects.POINT);
+            write(dir, "src/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1"));
+            write(dir, "src/geometries/api/Intersectable.java", "package geometries.api;\n\npublic abstract class Intersectable {\n}\n");
+            write(dir, "src/geometries/impl/Sphere.java",
+                    "package geometries.impl;\n\nimport geometries.api.Intersectable;\n\npublic class Sphere extends Intersectable {\n}\n");
+            write(dir, "src/geometries/impl/Cube.java", "package geometries.impl;\n\nimport geometries.api.Intersectable;\n\n"
+                    + "public class Cube {\n    public static Intersectable unit() { return null; }\n}\n");
+            write(dir, "src/test/Main.java", "package test;\n\npublic class Main {\n    public static void main(String[] args) {\n"
+                    + "        try {\n            Integer.parseInt(\"x\");\n        } catch (Exception _) {\n        }\n    }\n}\n");
+            write(dir, "unittests/geometries/impl/CubeTest.java", "package geometries.impl;\n\nimport geometries.api.Intersectable;\n"
+                    + "import org.junit.jupiter.api.Test;\n\nclass CubeTest {\n    @Test\n    void unit() {\n"
+                    + "        Intersectable i = Cube.unit();\n    }\n}\n");
+        }
+
+        @Test
+        @DisplayName("moves impl/Sphere as the library's geometries.Sphere, folds the kept classes' api/impl lines and moves them")
+        void foldsPackages() throws Exception {
+            migration().migrate(dir, false, false);
+            assertThat(dir.resolve("course-backup/src/geometries/impl/Sphere.java")).exists();
+            assertThat(dir.resolve("course-backup/src/geometries/api/Intersectable.java")).exists();
+            assertThat(read("src/geometries/Cube.java")).contains("package geometries;", "import geometries.Intersectable;");
+            assertThat(read("unittests/geometries/CubeTest.java")).contains("package geometries;");
+            assertThat(dir.resolve("course-backup/originals/src/geometries/impl/Cube.java")).exists();
+        }
+
+        @Test
+        @DisplayName("names the course's Main with _ as needing Java 22 where the JDK is older, and keeps it where it is not")
+        void unnamedVariable() throws Exception {
+            migration().migrate(dir, false, false);
+            if (Runtime.version().feature() < 22) {
+                assertThat(dir.resolve("course-backup/set-aside/src/test/Main.java")).exists();
+                assertThat(printed()).contains("src/test/Main.java:7: needs Java 22 (the unnamed variable _), and this JDK is "
+                        + Runtime.version().feature());
+            } else {
+                assertThat(dir.resolve("src/test/Main.java")).exists();
+                assertThat(read("pom.xml")).contains("<maven.compiler.release>" + Runtime.version().feature() + "<");
+            }
+        }
+    }
+
+    @Nested
+    @DisplayName("tests kept inside src/ (one source folder, as the course template has it)")
+    class MixedFolder {
+        @Test
+        @DisplayName("keeps the tests out of the main compile and makes them the only tests of that folder")
+        void mixed() throws Exception {
+            write(dir, "src/primitives/Point.java", CourseProjects.POINT);
+            write(dir, "src/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1"));
+            write(dir, "src/renderer/PixelHelper.java", CourseProjects.HELPER);
+            write(dir, "src/unittests/primitives/VectorTests.java", CourseProjects.vectorTest("unittests.primitives"));
+            migration().migrate(dir, false, false);
+            String pom = read("pom.xml");
+            assertThat(pom).contains("<sourceDirectory>src</sourceDirectory>", "<testSourceDirectory>src</testSourceDirectory>",
+                    "<exclude>unittests/**</exclude>", "<testInclude>unittests/**</testInclude>");
+        }
+    }
+
+    @Nested
+    @DisplayName("a Maven project with a pom of the student's")
+    class Maven {
+        @Test
+        @DisplayName("keeps the student's settings and adds what is missing")
+        void updatesPom() throws Exception {
+            write(dir, "pom.xml", """
+                    <?xml version="1.0" encoding="UTF-8"?>
+                    <project xmlns="http://maven.apache.org/POM/4.0.0">
+                      <modelVersion>4.0.0</modelVersion>
+                      <groupId>me</groupId>
+                      <artifactId>course</artifactId>
+                      <version>2</version>
+                      <!-- my own comment -->
+                      <properties>
+                        <my.setting>kept</my.setting>
+                      </properties>
+                      <build>
+                        <plugins>
+                          <plugin>
+                            <artifactId>maven-surefire-plugin</artifactId>
+                            <version>2.12.4</version>
+                          </plugin>
+                        </plugins>
+                      </build>
+                    </project>
+                    """);
+            write(dir, "src/main/java/primitives/Point.java", CourseProjects.POINT);
+            write(dir, "src/main/java/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1"));
+            write(dir, "src/test/java/primitives/VectorTests.java", CourseProjects.vectorTest("primitives"));
+            migration().migrate(dir, false, false);
+            String pom = read("pom.xml");
+            assertThat(pom).contains("<!-- my own comment -->", "<my.setting>kept</my.setting>", "<groupId>me</groupId>",
+                    "<version>" + BuildPlan.SUREFIRE_VERSION + "</version>", "<artifactId>raytracer</artifactId>")
+                    .doesNotContain("2.12.4", "<sourceDirectory>");
+            assertThat(dir.resolve("course-backup/originals/pom.xml")).content().contains("2.12.4");
+            assertThat(printed()).contains("pom.xml: updated");
+        }
+    }
+
+    @Nested
+    @DisplayName("where the student's code chose otherwise than the library")
+    class Choices {
+        @Test
+        @DisplayName("a Vector.Z of (0, 0, -1) is named before anything moves, with the tests it changes")
+        void minusZ() throws Exception {
+            CourseProjects.intellij(dir);
+            write(dir, "src/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, -1"));
+            migration().migrate(dir, false, true);
+            assertThat(printed()).contains("your Vector.Z is (0, 0, -1) (src/primitives/Vector.java:4)",
+                    "1 test file will change: CameraIntersectionIntegration.java");
+        }
+    }
+
+    @Nested
+    @DisplayName("refuses in one line, and changes nothing,")
+    class Refusals {
+        private void refused(String message) throws IOException {
+            Map<String, String> before = snapshot(dir);
+            assertThatThrownBy(() -> migration().migrate(dir, false, false)).isInstanceOf(MigrationException.class)
+                    .hasMessageContaining(message).satisfies(e -> assertThat(e.getMessage()).doesNotContain("\n"));
+            assertThat(snapshot(dir)).isEqualTo(before);
+        }
+
+        @Test
+        @DisplayName("a folder without Java sources")
+        void notAProject() throws IOException {
+            write(dir, "notes.txt", "hello");
+            refused("is not a course project: no .java file");
+        }
+
+        @Test
+        @DisplayName("a project with no course class")
+        void noCourseClass() throws IOException {
+            write(dir, "src/app/Hello.java", "package app;\n\nclass Hello {\n}\n");
+            refused("has no course class the library provides");
+        }
+
+        @Test
+        @DisplayName("a project that does not compile as it is")
+        void doesNotCompile() throws IOException {
+            CourseProjects.intellij(dir);
+            write(dir, "src/renderer/Broken.java", "package renderer;\n\nclass Broken {\n    int x = y;\n}\n");
+            refused("does not compile as it is (src/renderer/Broken.java:4: cannot find symbol");
+        }
+
+        @Test
+        @DisplayName("a course-backup/ that is not the migration's")
+        void foreignBackup() throws IOException {
+            CourseProjects.intellij(dir);
+            write(dir, "course-backup/mine.txt", "mine");
+            refused("course-backup is already there, and not from raytracer migrate");
+        }
+
+        @Test
+        @DisplayName("a read-only folder")
+        void readOnly() throws IOException {
+            CourseProjects.intellij(dir);
+            Path src = dir.resolve("src/primitives");
+            assumeTrue(src.toFile().setWritable(false) && !Files.isWritable(src), "the file system honours read-only (not root)");
+            try {
+                refused("(read-only)");
+            } finally {
+                src.toFile().setWritable(true);
+            }
+        }
+
+        @Test
+        @DisplayName("--undo where nothing was migrated")
+        void undoWithoutMigration() throws IOException {
+            CourseProjects.intellij(dir);
+            assertThatThrownBy(() -> migration().undo(dir)).hasMessageContaining("nothing of raytracer migrate to undo");
+        }
+    }
+
+    @Nested
+    @DisplayName("pieces")
+    class Pieces {
+        @Test
+        @DisplayName("fold: 2025-26 package and import lines become the library's")
+        void fold() {
+            assertThat(Migration.fold("package geometries.impl;\nimport geometries.api.Intersectable;\nimport lighting.impl.*;\n"
+                    + "import static geometries.api.Intersectable.Intersection;\n"))
+                    .isEqualTo("package geometries;\nimport geometries.Intersectable;\nimport lighting.*;\n"
+                            + "import static geometries.Intersectable.Intersection;\n");
+        }
+
+        @Test
+        @DisplayName("release needed: the unnamed variable, record patterns, sequenced collections")
+        void releaseNeeded() {
+            Path none = Path.of("none");
+            assertThat(Reasons.releaseNeeded(new Javac.Problem(none, 1, "compiler.err.underscore.as.identifier", "x"))).isEqualTo(22);
+            assertThat(Reasons.releaseNeeded(new Javac.Problem(none, 1, "compiler.err.cant.resolve.location.args",
+                    "cannot find symbol\n  symbol:   method getFirst()\n  location: variable l of type List<Point>"))).isEqualTo(21);
+            assertThat(Reasons.releaseNeeded(new Javac.Problem(none, 1, "compiler.err.feature.not.supported.in.source.plural",
+                    "records are not supported in -source 8\n  (use -source 16 or higher to enable records)"))).isEqualTo(16);
+            assertThat(Reasons.releaseNeeded(new Javac.Problem(none, 1, "compiler.err.cant.resolve", "cannot find symbol"))).isZero();
+        }
+
+        @Test
+        @DisplayName("versions compare numerically")
+        void versions() {
+            assertThat(PomFile.compareVersions("2.12.4", "3.0")).isNegative();
+            assertThat(PomFile.compareVersions("3.5.2", "3.0")).isPositive();
+            assertThat(PomFile.compareVersions("3.0", "3.0.0")).isZero();
+        }
+    }
+}
