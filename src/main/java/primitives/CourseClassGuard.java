@@ -77,9 +77,9 @@ public final class CourseClassGuard {
     static String shadowed(ClassLoader loader) {
         String names = shadowing(loader);
         return names == null ? null : "Your own course classes shadow the library's: " + names
-                + ". The library (" + location(CourseClassGuard.class) + ") cannot run with them. Delete or move them (see README"
-                + " 'Moving an existing course project onto the library'): keep your tests and your own extra"
-                + " classes; then rebuild clean (mvn clean test, or your IDE's Rebuild Project).";
+                + ". The library (" + location(CourseClassGuard.class) + ") cannot run with them. Move them out with raytracer"
+                + " migrate (see README 'Moving an existing course project onto the library'): it keeps your tests and your"
+                + " own extra classes; then rebuild clean (mvn clean test, or your IDE's Rebuild Project).";
     }
 
     /**

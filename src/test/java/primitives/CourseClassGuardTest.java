@@ -110,9 +110,9 @@ class CourseClassGuardTest {
     /** The message, with the project's classes as the guard names them and the folders of this run. */
     private static String message(String classes, Path from) {
         return "Your own course classes shadow the library's: " + classes + " from " + from + ". The library ("
-                + LIBRARY + ") cannot run with them. Delete or move them (see README 'Moving an existing course project"
-                + " onto the library'): keep your tests and your own extra classes; then rebuild clean (mvn clean test,"
-                + " or your IDE's Rebuild Project).";
+                + LIBRARY + ") cannot run with them. Move them out with raytracer migrate (see README 'Moving an existing"
+                + " course project onto the library'): it keeps your tests and your own extra classes; then rebuild clean"
+                + " (mvn clean test, or your IDE's Rebuild Project).";
     }
 
     /** A folder shared by the tests of one project's own primitives.Vector, compiled once. */

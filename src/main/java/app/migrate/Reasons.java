@@ -86,6 +86,13 @@ final class Reasons {
                 if (owner != null && declares(ownText(owner), bare))
                     return shown + " is your own " + (kind.equals("method") ? "method" : "name")
                             + " (not in the course API): port " + (test ? "the test" : "it") + " or keep it aside";
+                // Inherited (Triangle.createBoundingBox from the student's Polygon) or called
+                // unqualified in a subclass: the course class that declares it.
+                String declaring = ownCourseClasses.entrySet().stream().filter(e -> declares(e.getValue(), bare))
+                        .map(Map.Entry::getKey).findFirst().orElse(null);
+                if (declaring != null && !kind.equals("class"))
+                    return shown + " is your own " + (kind.equals("method") ? "method" : "name") + " (of your " + declaring
+                            + ", not in the course API): port " + (test ? "the test" : "it") + " or keep it aside";
                 if (owner == null && kind.equals("class"))
                     return "class " + name + " is not in the build (neither the library's nor yours)";
                 return shown + " is not in the library (nor in your course classes)";
