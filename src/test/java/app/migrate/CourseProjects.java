@@ -92,6 +92,92 @@ final class CourseProjects {
             }
             """;
 
+    /** The student's own Ray, Intersectable (5784's hook) and Geometry: what an extra shape of theirs extends. */
+    static final String RAY = """
+            package primitives;
+
+            public class Ray {
+                public Ray(Point head, Vector direction) { }
+            }
+            """;
+
+    static final String INTERSECTABLE = """
+            package geometries;
+
+            import java.util.List;
+            import primitives.Point;
+            import primitives.Ray;
+
+            public abstract class Intersectable {
+                public static class GeoPoint {
+                    public GeoPoint(Geometry geometry, Point point) { }
+                }
+
+                protected abstract List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance);
+            }
+            """;
+
+    static final String GEOMETRY = """
+            package geometries;
+
+            import primitives.Point;
+            import primitives.Vector;
+
+            public abstract class Geometry extends Intersectable {
+                public abstract Vector getNormal(Point point);
+            }
+            """;
+
+    /** An extra shape on the course API (the 5784 hook): it compiles against the library's Geometry too. */
+    static final String CUBE = """
+            package geometries;
+
+            import java.util.List;
+            import primitives.Point;
+            import primitives.Ray;
+            import primitives.Vector;
+
+            public class Cube extends Geometry {
+                @Override
+                public Vector getNormal(Point point) { return new Vector(0, 0, 1); }
+
+                @Override
+                protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) { return null; }
+            }
+            """;
+
+    /** An extra package: a scene parser of the student's on the course API. */
+    static final String PARSER = """
+            package parser;
+
+            import primitives.Point;
+
+            public final class Points {
+                public static Point parse(String text) {
+                    String[] p = text.trim().split("\\s+");
+                    return new Point(Double.parseDouble(p[0]), Double.parseDouble(p[1]), Double.parseDouble(p[2]));
+                }
+            }
+            """;
+
+    /** A test of the extra shape and the extra package: it passes on the library. */
+    static final String CUBE_TEST = """
+            package geometries;
+
+            import static org.junit.jupiter.api.Assertions.assertEquals;
+
+            import org.junit.jupiter.api.Test;
+            import parser.Points;
+            import primitives.Vector;
+
+            class CubeTests {
+                @Test
+                void normal() {
+                    assertEquals(new Vector(0, 0, 1), new Cube().getNormal(Points.parse("1 2 3")));
+                }
+            }
+            """;
+
     /** The IntelliJ module file of a course project: src/ and unittests/. */
     static final String IML = """
             <?xml version="1.0" encoding="UTF-8"?>
@@ -115,6 +201,13 @@ final class CourseProjects {
         write(dir, "src/primitives/Vector.java", vector("primitives", "0, 0, 1"));
         write(dir, "src/renderer/PixelHelper.java", HELPER);
         write(dir, "src/renderer/Turner.java", TURNER);
+        write(dir, "src/primitives/Ray.java", RAY);
+        write(dir, "src/geometries/Intersectable.java", INTERSECTABLE);
+        write(dir, "src/geometries/Geometry.java", GEOMETRY);
+        write(dir, "src/geometries/Cube.java", CUBE);
+        write(dir, "src/parser/Points.java", PARSER);
+        write(dir, "unittests/geometries/CubeTests.java", CUBE_TEST);
+        write(dir, ".idea/misc.xml", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<project version=\"4\">\n</project>\n");
         write(dir, "unittests/primitives/VectorTests.java", vectorTest("primitives"));
         write(dir, "unittests/primitives/RotateTest.java", rotateTest("primitives"));
         write(dir, "unittests/renderer/CameraIntersectionIntegration.java", INTEGRATION);

@@ -77,6 +77,22 @@ class MigrationTest {
             assertThat(dir.resolve("src/primitives")).doesNotExist();
             assertThat(dir.resolve("course-backup/src/primitives/Vector.java")).hasContent(before.get("src/primitives/Vector.java"));
             assertThat(dir.resolve("course-backup/src/primitives/Point.java")).exists();
+            assertThat(dir.resolve("course-backup/src/geometries/Geometry.java")).exists();
+        }
+
+        @Test
+        @DisplayName("keeps an extra shape on the course API and an extra package")
+        void keepsExtraShapeAndPackage() {
+            assertThat(dir.resolve("src/geometries/Cube.java")).exists();
+            assertThat(dir.resolve("src/parser/Points.java")).exists();
+            assertThat(printed()).contains("Tests kept: 3 files", "  src/parser/Points.java");
+        }
+
+        @Test
+        @DisplayName("keeps the left-out test out of IntelliJ's compile too")
+        void excludesInIdea() throws IOException {
+            assertThat(read(".idea/compiler.xml")).contains("<excludeFromCompile>",
+                    "<file url=\"file://$PROJECT_DIR$/unittests/primitives/RotateTest.java\" />");
         }
 
         @Test
@@ -120,7 +136,8 @@ class MigrationTest {
             Path classes = Files.createTempDirectory("migrated-tests");
             List<Path> sources = new ArrayList<>();
             for (String f : List.of("unittests/primitives/VectorTests.java", "unittests/renderer/CameraIntersectionIntegration.java",
-                    "src/renderer/PixelHelper.java"))
+                    "unittests/geometries/CubeTests.java", "src/renderer/PixelHelper.java", "src/geometries/Cube.java",
+                    "src/parser/Points.java"))
                 sources.add(dir.resolve(f));
             List<Path> classPath = new ArrayList<>(Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
                     .map(Path::of).toList());
@@ -129,9 +146,10 @@ class MigrationTest {
             try (URLClassLoader loader = new URLClassLoader(new URL[] { classes.toUri().toURL() }, getClass().getClassLoader())) {
                 var results = EngineTestKit.engine("junit-jupiter")
                         .selectors(selectClass(loader.loadClass("primitives.VectorTests")),
-                                selectClass(loader.loadClass("renderer.CameraIntersectionIntegration")))
+                                selectClass(loader.loadClass("renderer.CameraIntersectionIntegration")),
+                                selectClass(loader.loadClass("geometries.CubeTests")))
                         .execute().testEvents();
-                assertThat(results.succeeded().count()).isEqualTo(2);
+                assertThat(results.succeeded().count()).isEqualTo(3);
                 assertThat(results.failed().count()).isZero();
             }
         }
@@ -331,6 +349,16 @@ class MigrationTest {
             } finally {
                 src.toFile().setWritable(true);
             }
+        }
+
+        @Test
+        @DisplayName("a git folder with uncommitted changes (unless allowed)")
+        void dirtyGit() throws Exception {
+            CourseProjects.intellij(dir);
+            Process git = new ProcessBuilder("git", "init", "-q", dir.toString()).redirectErrorStream(true).start();
+            git.getInputStream().readAllBytes();
+            assumeTrue(git.waitFor() == 0, "git is installed");
+            refused("has uncommitted changes");
         }
 
         @Test
