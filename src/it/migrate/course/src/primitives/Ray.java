@@ -1,0 +1,5 @@
+package primitives;
+
+public class Ray {
+    public Ray(Point head, Vector direction) { }
+}
