@@ -38,7 +38,11 @@ final class CourseChoices {
                     "Vector.Z is +z (0, 0, 1), as AXIS_Z; renders looking along your -z come out blank",
                     text -> text.matches("(?s).*\\bVector\\.Z\\b.*")),
             new Rule("geometries.Cylinder",
-                    Pattern.compile("\\bCylinder\\s*\\(\\s*(?:final\\s+)?double\\s+\\w*(?i:height)\\w*\\s*,\\s*(?:final\\s+)?Ray\\s+\\w+\\s*,\\s*(?:final\\s+)?double\\s+\\w+\\s*\\)"),
+                    // (double, Ray, double) with the height first: told by the names, the first
+                    // a height (h, height, len…) or the last a radius (r, rad, radius…).
+                    Pattern.compile("\\bCylinder\\s*\\(\\s*(?:final\\s+)?double\\s+(?:(?i:h|\\w*height\\w*|len\\w*)\\s*,"
+                            + "\\s*(?:final\\s+)?Ray\\s+\\w+\\s*,\\s*(?:final\\s+)?double\\s+\\w+|\\w+\\s*,\\s*(?:final\\s+)?Ray"
+                            + "\\s+\\w+\\s*,\\s*(?:final\\s+)?double\\s+(?i:r|rad\\w*|\\w*radius\\w*))\\s*\\)"),
                     "your Cylinder(height, axis, radius) takes the height first",
                     "Cylinder(radius, axis, height), radius first (Java cannot tell the two apart); swap the numbers or use Cylinder(height, radius, axis)",
                     text -> text.contains("new Cylinder(")),

@@ -26,6 +26,8 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.platform.testkit.engine.EngineTestKit;
 
 import renderer.Camera;
@@ -295,6 +297,31 @@ class MigrationTest {
             migration().migrate(dir, false, true);
             assertThat(printed()).contains("your Vector.Z is (0, 0, -1) (src/primitives/Vector.java:4)",
                     "1 test file will change: CameraIntersectionIntegration.java");
+        }
+    }
+
+    @Nested
+    @DisplayName("where the student's code chose otherwise than the library: the cylinder")
+    class CylinderChoice {
+        @ParameterizedTest(name = "Cylinder({0}) is named")
+        @ValueSource(strings = { "double h, Ray a, double r", "double height, Ray axis, double radius",
+                "final double len, final Ray axis, final double rad" })
+        void heightFirst(String parameters) throws Exception {
+            CourseProjects.intellij(dir);
+            write(dir, "src/geometries/Cylinder.java", "package geometries;\n\nimport primitives.Ray;\n\npublic class Cylinder {\n"
+                    + "    public Cylinder(" + parameters + ") { }\n}\n");
+            migration().migrate(dir, false, true);
+            assertThat(printed()).contains("your Cylinder(height, axis, radius) takes the height first (src/geometries/Cylinder.java:6)");
+        }
+
+        @Test
+        @DisplayName("the course's Cylinder(radius, axis, height) is not named")
+        void radiusFirst() throws Exception {
+            CourseProjects.intellij(dir);
+            write(dir, "src/geometries/Cylinder.java", "package geometries;\n\nimport primitives.Ray;\n\npublic class Cylinder {\n"
+                    + "    public Cylinder(double radius, Ray axis, double height) { }\n}\n");
+            migration().migrate(dir, false, true);
+            assertThat(printed()).doesNotContain("Cylinder(height, axis, radius)");
         }
     }
 
