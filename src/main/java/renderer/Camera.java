@@ -257,11 +257,12 @@ public final class Camera {
      * unless silenced prints {@code write NAME: /absolute/path.png in 0.042 s} (NAME as in the
      * render's summary).
      *
+     * @return this camera, for chaining (the course's {@code void} callers ignore it)
      * @throws IllegalStateException when the camera's writer has no name (it was made from
      *                               {@link Builder#setResolution}): use {@link #writeToImage(String)}
      */
-    public void writeToImage() {
-        write(imageWriter.getPath());
+    public Camera writeToImage() {
+        return write(imageWriter.getPath());
     }
 
     /**
@@ -269,18 +270,20 @@ public final class Camera {
      * line of {@link #writeToImage()}.
      *
      * @param imageName the file name without ".png"; may contain sub-folders
+     * @return this camera, for chaining (most 2024–25 sources return it; {@code void} callers ignore it)
      * @throws IllegalArgumentException for a blank name
      */
-    public void writeToImage(String imageName) {
-        write(ImageWriter.pathOf(imageName));
+    public Camera writeToImage(String imageName) {
+        return write(ImageWriter.pathOf(imageName));
     }
 
     /** Writes the PNG and, unless silenced, a line with the image's name, the file and the time it took. */
-    private void write(Path file) {
+    private Camera write(Path file) {
         long start = System.nanoTime();
         imageWriter.writeToImage(file);
         if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", imageLabel(),
                 file.toAbsolutePath(), (System.nanoTime() - start) / 1e9));
+        return this;
     }
 
     /**
@@ -297,6 +300,8 @@ public final class Camera {
         private Point target;
         private double vpWidth, vpHeight, vpDistance;
         private boolean vpSizeSet, vpDistanceSet;
+        /** Degrees the frame is turned about the view direction at build ({@link #rotate}), in [0, 360). */
+        private int roll;
         /** The resolution for a writer the camera makes itself; used when imageWriter is null. */
         private int nX = 1, nY = 1;
         private ImageWriter imageWriter;
@@ -417,6 +422,23 @@ public final class Camera {
             this.target = Objects.requireNonNull(target, "camera target");
             this.up = null;
             this.to = null;
+            return this;
+        }
+
+        /**
+         * Turns the camera about its view direction by {@code degrees} (the 2025–26 course's
+         * camera roll). The sign follows the right-hand rule about the view direction: a positive
+         * angle takes the image's up toward its right, so {@code rotate(90)} makes the old right
+         * the new up; seen from behind the camera it turns clockwise, and the scene turns
+         * counter-clockwise in the image. The turn applies to whichever direction is set, before
+         * or after this call, when {@link #build()} makes the frame; calls add up
+         * ({@code rotate(30).rotate(60)} is {@code rotate(90)}).
+         *
+         * @param degrees the angle in degrees, any int (taken modulo 360)
+         * @return this builder
+         */
+        public Builder rotate(int degrees) {
+            this.roll = Math.floorMod(roll + Math.floorMod(degrees, 360), 360);
             return this;
         }
 
@@ -691,7 +713,7 @@ public final class Camera {
             View.ViewPlane.requireSize(vpWidth, vpHeight);
             if (!vpDistanceSet) throw new IllegalArgumentException(missing + ": view plane distance (setVpDistance)");
             View.ViewPlane plane = new View.ViewPlane(vpWidth, vpHeight, vpDistance, nX, nY);
-            View.Frame frame = to != null ? View.Frame.of(to, up) : View.Frame.lookingAt(location, target, up);
+            View.Frame frame = (to != null ? View.Frame.of(to, up) : View.Frame.lookingAt(location, target, up)).rolled(roll);
             return new View(location, frame, plane, new View.Lens(aperture, focalDistance));
         }
 
