@@ -172,7 +172,7 @@ public final class Camera {
 
     /**
      * Renders the image into the image writer and returns what it did; prints the one-line
-     * summary unless silenced ({@code render NAME WxH [sampling]: figures}, the figures being
+     * summary unless silenced ({@code render NAME WxH [sampling] of scene 'SCENE': figures}, the figures being
      * {@link RenderStats#toString()}). NAME is the image writer's name or, for a writer named only
      * when written ({@link Builder#setResolution}), the calling test method's
      * ({@code SpheresTest.twoSpheres()}). While a JDK Flight Recorder recording runs, the render
@@ -185,24 +185,33 @@ public final class Camera {
      *                                                    may mix two states and must not be written
      */
     public RenderStats render() {
-        String name = imageLabel();
+        String name = getImageLabel();
+        String scene = getSceneName();
         RenderEvent event = FlightRecorder.isInitialized() ? new RenderEvent() : null; // see RenderEvent
         RenderStats stats = new RenderLoop(view, sampling, execution, rayTracer, imageWriter).render(name);
-        if (event != null) event.commit(name, imageWriter, sampling.antiAliasing(), stats);
+        if (event != null) event.commit(name, scene, imageWriter, sampling.antiAliasing(), stats);
         renderListener.accept(this, stats);
         if (summary) execution.output().println("render " + name + " " + imageWriter.getNx() + "x"
-                + imageWriter.getNy() + " [" + describe() + "]: " + stats);
+                + imageWriter.getNy() + " [" + describe() + "] of scene '" + scene + "': " + stats);
         return stats;
     }
 
     /**
-     * The name summaries, progress lines and the JFR event give the image: its writer's name, or
-     * for an unnamed writer (named only when written) the calling test method
-     * ({@code SpheresTest.twoSpheres()}), or {@code (unnamed)} outside a test.
+     * The name the summary and write lines, progress lines, test reports and JFR events give the
+     * image: its writer's name, or for an unnamed writer (named only when written, the 2024–25
+     * flow) the calling test method ({@code SpheresTest.twoSpheres()}), or {@code (unnamed)}
+     * outside a test.
+     *
+     * @return the image's name as this camera's reports show it
      */
-    private String imageLabel() {
+    public String getImageLabel() {
         return imageWriter.hasName() ? imageWriter.getImageName()
                 : CallingTest.find().orElse(imageWriter.getImageName());
+    }
+
+    /** @return the name of the scene this camera's tracer traces ({@link Scene#name}), as reports show it */
+    public String getSceneName() {
+        return rayTracer.scene.name;
     }
 
     /**
@@ -277,12 +286,19 @@ public final class Camera {
         return write(ImageWriter.pathOf(imageName));
     }
 
-    /** Writes the PNG and, unless silenced, a line with the image's name, the file and the time it took. */
+    /**
+     * Writes the PNG (a {@code raytracer.ImageWrite} JFR event while a recording runs), tells a
+     * render listener that is also a {@link WriteListener}, and unless silenced prints a line with
+     * the image's name, the file and the time it took.
+     */
     private Camera write(Path file) {
+        String name = getImageLabel();
+        Path target = file.toAbsolutePath();
         long start = System.nanoTime();
-        imageWriter.writeToImage(file);
-        if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", imageLabel(),
-                file.toAbsolutePath(), (System.nanoTime() - start) / 1e9));
+        imageWriter.writeToImage(target, name);
+        double seconds = (System.nanoTime() - start) / 1e9;
+        if (renderListener instanceof WriteListener listener) listener.written(this, target, seconds);
+        if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", name, target, seconds));
         return this;
     }
 
@@ -680,7 +696,8 @@ public final class Camera {
          * Someone to tell of each render, after the render loop and before the summary line: for
          * example {@code renderer.junit.RenderReports.to(testReporter)}, which publishes the
          * render's figures in a JUnit test's report. It runs on the thread that called
-         * {@link Camera#render()}.
+         * {@link Camera#render()}. A listener that is also a {@link WriteListener} is told of
+         * each {@code writeToImage} of the camera as well, after the PNG is in place.
          *
          * @param listener called with the camera and what its render did
          * @return this builder

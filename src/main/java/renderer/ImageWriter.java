@@ -15,6 +15,8 @@ import java.util.Objects;
 
 import javax.imageio.ImageIO;
 
+import jdk.jfr.FlightRecorder;
+
 import primitives.Color;
 import primitives.CourseClassGuard;
 
@@ -253,6 +255,16 @@ public class ImageWriter {
      *                              exits during the write
      */
     public void writeToImage(Path file) {
+        String stem = file.getFileName().toString();
+        writeToImage(file, imageName != null ? imageName : stem.endsWith(".png") ? stem.substring(0, stem.length() - 4) : stem);
+    }
+
+    /**
+     * {@link #writeToImage(Path)}, the one implementation: {@code label} names the image in the
+     * write's JFR event ({@link ImageWriteEvent}, while a recording runs).
+     */
+    void writeToImage(Path file, String label) {
+        ImageWriteEvent event = FlightRecorder.isInitialized() ? new ImageWriteEvent() : null; // see RenderEvent
         // A view of the pixel buffer, not a copy: TYPE_INT_RGB's own layout (0xRRGGBB ints, row
         // by row), so writing needs no second image's worth of memory.
         DirectColorModel rgb = new DirectColorModel(24, 0xFF0000, 0x00FF00, 0x0000FF);
@@ -283,6 +295,7 @@ public class ImageWriter {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
             }
+            if (event != null) event.commit(label, target, nX, nY);
         } catch (IOException e) {
             if (tmp != null) {
                 try {
