@@ -295,7 +295,7 @@ public final class Camera {
         String name = getImageLabel();
         Path target = file.toAbsolutePath();
         long start = System.nanoTime();
-        imageWriter.writeToImage(target, name);
+        imageWriter.writeToImage(target); // the public method: a subclass of ImageWriter may override it
         double seconds = (System.nanoTime() - start) / 1e9;
         if (renderListener instanceof WriteListener listener) listener.written(this, target, seconds);
         if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", name, target, seconds));

@@ -28,7 +28,7 @@ final class ImageWriteEvent extends Event {
     static final String NAME = "raytracer.ImageWrite";
 
     @Label("Image")
-    @Description("The image's name as the camera's lines show it (the calling test's for an image named only when written)")
+    @Description("The image writer's name, or for a writer made without one the file's name without .png")
     String image;
 
     @Label("File")
@@ -53,11 +53,17 @@ final class ImageWriteEvent extends Event {
         begin();
     }
 
-    /** Ends the event once the PNG is in place, fills it in and commits it, if a recording asks for it. */
-    void commit(String image, Path file, int width, int height) {
+    /**
+     * Ends the event once the PNG is in place, fills it in and commits it, if a recording asks for it.
+     *
+     * @param writerName the writer's name; null for a writer made without one (the file's stem is used)
+     */
+    void commit(String writerName, Path file, int width, int height) {
         end();
         if (!shouldCommit()) return;
-        this.image = image;
+        String fileName = file.getFileName().toString();
+        this.image = writerName != null ? writerName
+                : fileName.endsWith(".png") ? fileName.substring(0, fileName.length() - ".png".length()) : fileName;
         this.file = file.toString();
         this.width = width;
         this.height = height;

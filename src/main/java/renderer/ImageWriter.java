@@ -249,21 +249,14 @@ public class ImageWriter {
      * Writes the PNG to {@code file} atomically: into a temporary file beside it, then moved into
      * place, so a reader never sees a half-written image and a failure leaves no file behind; nor
      * does the JVM's exit during the write (a signal): the temporary file is then deleted.
+     * While a JDK Flight Recorder recording runs, the write is a {@code raytracer.ImageWrite}
+     * event.
      *
      * @param file where the PNG goes; missing folders are created
      * @throws UncheckedIOException naming the file when it cannot be written, or when the JVM
      *                              exits during the write
      */
     public void writeToImage(Path file) {
-        String stem = file.getFileName().toString();
-        writeToImage(file, imageName != null ? imageName : stem.endsWith(".png") ? stem.substring(0, stem.length() - 4) : stem);
-    }
-
-    /**
-     * {@link #writeToImage(Path)}, the one implementation: {@code label} names the image in the
-     * write's JFR event ({@link ImageWriteEvent}, while a recording runs).
-     */
-    void writeToImage(Path file, String label) {
         ImageWriteEvent event = FlightRecorder.isInitialized() ? new ImageWriteEvent() : null; // see RenderEvent
         // A view of the pixel buffer, not a copy: TYPE_INT_RGB's own layout (0xRRGGBB ints, row
         // by row), so writing needs no second image's worth of memory.
@@ -295,7 +288,7 @@ public class ImageWriter {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
             }
-            if (event != null) event.commit(label, target, nX, nY);
+            if (event != null) event.commit(imageName, target, nX, nY);
         } catch (IOException e) {
             if (tmp != null) {
                 try {

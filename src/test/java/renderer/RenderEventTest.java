@@ -57,7 +57,7 @@ class RenderEventTest {
     }
 
     @Test
-    @DisplayName("a recording holds one raytracer.ImageWrite event per PNG written, with the image, file, size and bytes")
+    @DisplayName("a recording holds one raytracer.ImageWrite event per PNG written: the writer's name (else the file's), file, size, bytes")
     void write(@TempDir Path dir) throws Exception {
         Path direct = dir.resolve("direct.png");
         Path named = Path.of("images", "jfr", "flow-5785.png");
@@ -67,7 +67,7 @@ class RenderEventTest {
             new ImageWriter(7, 5).writeToImage(direct);                        // written directly, no name: the file's
             Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), Vector.AXIS_Y).setVpSize(1, 1)
                     .setVpDistance(1).setResolution(6, 4).setSummary(false).build().renderImage()
-                    .writeToImage("jfr/flow-5785");                              // 2024–25 flow: the test's name
+                    .writeToImage("jfr/flow-5785");                              // 2024–25 flow: named by the file
             recording.stop();
             recording.dump(dir.resolve("write.jfr"));
         } finally {
@@ -83,7 +83,7 @@ class RenderEventTest {
         assertThat(first.getInt("width")).isEqualTo(7);
         assertThat(first.getInt("height")).isEqualTo(5);
         assertThat(first.getLong("bytes")).isEqualTo(Files.size(direct));
-        assertThat(second.getString("image")).isEqualTo("RenderEventTest.write()");
+        assertThat(second.getString("image")).isEqualTo("flow-5785");
         assertThat(second.getString("file")).isEqualTo(named.toAbsolutePath().toString());
         assertThat(second.getInt("width")).isEqualTo(6);
         assertThat(second.getLong("bytes")).isPositive();
