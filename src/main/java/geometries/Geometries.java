@@ -54,6 +54,40 @@ public class Geometries extends Intersectable {
         append(geometries);
     }
 
+    /**
+     * The course spelling of "put these geometries in a bounding volume hierarchy" (2025–26
+     * sources; also {@link #makeBVH()}, {@link #enableBVH()}). It does nothing, on purpose: the
+     * library's tracer indexes the scene's bounded geometries in its BVH at the start of every
+     * render, over the scene as it is then, and reuses the tree while the lists are unchanged
+     * ({@code RayTracerBasic.setBvh(false)} is the one switch that turns it off, to compare). So
+     * there is nothing to build here, and a tree made now could only go stale when shapes are
+     * added after it. The call is not a change of the list: a render's scene-change check does
+     * not count it.
+     *
+     * @return this list, for chaining
+     */
+    public Geometries buildBVH() {
+        return this;
+    }
+
+    /**
+     * Another course spelling of {@link #buildBVH()}: does nothing (see there).
+     *
+     * @return this list, for chaining
+     */
+    public Geometries makeBVH() {
+        return buildBVH();
+    }
+
+    /**
+     * Another course spelling of {@link #buildBVH()}: does nothing (see there).
+     *
+     * @return this list, for chaining
+     */
+    public Geometries enableBVH() {
+        return buildBVH();
+    }
+
     private void append(Intersectable... geometries) {
         for (int i = 0; i < geometries.length; ++i) {
             Objects.requireNonNull(geometries[i], "geometry #" + i + " to add is null");

@@ -2,7 +2,7 @@ package geometries;
 
 import java.lang.reflect.Method;
 import java.util.Arrays;
-import java.util.Set;
+import java.util.List;
 
 import primitives.Point;
 import primitives.Ray;
@@ -12,10 +12,12 @@ import primitives.Ray;
  * so that constructing a million spheres costs one lookup each. The one reflection walk of the
  * library ({@link #declaring}) behind its two questions:
  * <ul>
- * <li>{@link #overridesAHook}: whether a class of intersectables overrides one of the three
- * course years' intersection hooks ({@link Intersectable#findGeoIntersectionsHelper},
- * {@link Intersectable#calculateIntersectionsHelper}, {@link Intersectable#calcIntersectionsHelper});
- * one that overrides none cannot answer a query;</li>
+ * <li>{@link #overridesAHook}, {@link #oneArgumentHook}: whether a class of intersectables
+ * overrides one of the three course years' intersection hooks
+ * ({@link Intersectable#findGeoIntersectionsHelper}, {@link Intersectable#calculateIntersectionsHelper},
+ * {@link Intersectable#calcIntersectionsHelper}), with {@code maxDistance} or in the one-argument
+ * form of the courses before it, and which one-argument hook answers when no two-argument one
+ * does; a class that overrides none cannot answer a query;</li>
  * <li>{@link #redefinesNormal}: whether a shape's course normal {@code getNormal(Point)} is
  * redefined below the class that computes the normal in doubles ({@code normalAt(Hit)}), so that
  * the renderer must ask the course method. Unlike {@link Geometry#isLibraryShape()} this looks at
@@ -24,18 +26,55 @@ import primitives.Ray;
  * </ul>
  */
 final class HookCheck {
-    private static final Set<String> HOOKS =
-            Set.of("findGeoIntersectionsHelper", "calculateIntersectionsHelper", "calcIntersectionsHelper");
+    /** The three years' hook names, in the order of the default hooks' circle (see {@link Intersectable}). */
+    private static final List<String> HOOKS =
+            List.of("findGeoIntersectionsHelper", "calculateIntersectionsHelper", "calcIntersectionsHelper");
+
+    /**
+     * The one-argument form of a year's hook, {@code name(Ray)}: the course's hook before it had
+     * {@code maxDistance}, which a user's shape may override alone. The constants follow
+     * {@link #HOOKS}.
+     */
+    enum OneArgumentHook {
+        FIND_GEO, CALCULATE, CALC;
+
+        String methodName() {
+            return HOOKS.get(ordinal()) + "(Ray)";
+        }
+    }
+
+    /**
+     * What a class overrides of the six hooks: the lowest class declaring a two-argument one
+     * ({@code Intersectable} when none does), and the lowest one-argument hook with its class
+     * (null and {@code Intersectable} when none). Among one-argument hooks the lowest class wins;
+     * in one class, the first in {@link #HOOKS}' order.
+     */
+    private record Overrides(Class<?> twoArgument, OneArgumentHook oneArgument, Class<?> oneArgumentClass) {
+    }
 
     /** Per class, computed on first use; a ClassValue holds no state beyond that fixed answer. */
-    private static final ClassValue<Boolean> OVERRIDES = new ClassValue<>() {
+    private static final ClassValue<Overrides> OVERRIDES = new ClassValue<>() {
         @Override
-        protected Boolean computeValue(Class<?> type) {
-            for (String hook : HOOKS)
-                if (declaring(type, Intersectable.class, hook, Ray.class, double.class) != Intersectable.class) return true;
-            return false;
+        protected Overrides computeValue(Class<?> type) {
+            Class<?> two = Intersectable.class, oneClass = Intersectable.class;
+            OneArgumentHook one = null;
+            for (OneArgumentHook hook : OneArgumentHook.values()) {
+                String name = HOOKS.get(hook.ordinal());
+                two = lower(two, declaring(type, Intersectable.class, name, Ray.class, double.class));
+                Class<?> c = declaring(type, Intersectable.class, name, Ray.class);
+                if (c != Intersectable.class && lower(oneClass, c) != oneClass) {
+                    oneClass = c;
+                    one = hook;
+                }
+            }
+            return new Overrides(two, one, oneClass);
         }
     };
+
+    /** The lower of two classes on one line of inheritance, {@code a} when they are the same. */
+    private static Class<?> lower(Class<?> a, Class<?> b) {
+        return a != b && a.isAssignableFrom(b) ? b : a;
+    }
 
     /**
      * Per class: whether {@code getNormal(Point)} is declared in a class strictly below the one
@@ -53,9 +92,38 @@ final class HookCheck {
     private HookCheck() {
     }
 
-    /** @return true when {@code type} or a superclass below Intersectable declares one of the hooks */
+    /**
+     * @return true when {@code type} or a superclass below Intersectable declares one of the six
+     *         hooks (a year's, with or without {@code maxDistance})
+     */
     static boolean overridesAHook(Class<?> type) {
-        return OVERRIDES.get(type);
+        Overrides o = OVERRIDES.get(type);
+        return o.twoArgument() != Intersectable.class || o.oneArgument() != null;
+    }
+
+    /**
+     * @return the one-argument hook that answers for {@code type}: the lowest it overrides, when
+     *         it overrides no two-argument hook; null otherwise (a two-argument hook answers, or
+     *         none does)
+     */
+    static OneArgumentHook oneArgumentHook(Class<?> type) {
+        Overrides o = OVERRIDES.get(type);
+        return o.twoArgument() == Intersectable.class ? o.oneArgument() : null;
+    }
+
+    /**
+     * A one-argument hook that no query would ask: declared in a class strictly below one that
+     * declares a two-argument hook (a user's subclass of a library shape, say), which answers
+     * every query itself.
+     *
+     * @return the hook's name and the two classes, for an error message; null when there is none
+     */
+    static String unaskedOneArgumentHook(Class<?> type) {
+        Overrides o = OVERRIDES.get(type);
+        if (o.oneArgument() == null || o.twoArgument() == Intersectable.class
+                || lower(o.twoArgument(), o.oneArgumentClass()) == o.twoArgument()) return null;
+        return o.oneArgument().methodName() + " in " + o.oneArgumentClass().getName() + " is below "
+                + o.twoArgument().getName() + "'s hook with maxDistance, which answers every query";
     }
 
     /**

@@ -30,8 +30,9 @@ import primitives.Vector;
  * that. Both faces accept a hit at distance {@code t} when {@code alignZero(t) > 0}, so the two
  * always agree. A subclass written by a user only needs one of the three course years' hooks
  * ({@link #findGeoIntersectionsHelper}, {@link #calculateIntersectionsHelper},
- * {@link #calcIntersectionsHelper}); every year's query method and the lean path then fall back
- * to it (correct, but allocating).
+ * {@link #calcIntersectionsHelper}), with {@code maxDistance} or in the one-argument form of the
+ * courses before it; every year's query method and the lean path then fall back to it (correct,
+ * but allocating).
  */
 public abstract class Intersectable extends BvhLeaf {
     /**
@@ -142,7 +143,11 @@ public abstract class Intersectable extends BvhLeaf {
         CourseClassGuard.check();
         if (!HookCheck.overridesAHook(getClass()))
             throw new IllegalStateException(getClass().getName() + " overrides none of findGeoIntersectionsHelper, "
-                    + "calculateIntersectionsHelper or calcIntersectionsHelper(Ray, double): override the one of your course year");
+                    + "calculateIntersectionsHelper or calcIntersectionsHelper(Ray, double) (or their forms without "
+                    + "maxDistance, (Ray)): override the one of your course year");
+        String unasked = HookCheck.unaskedOneArgumentHook(getClass());
+        if (unasked != null)
+            throw new IllegalStateException(unasked + ", so it would never be asked: override the form with maxDistance");
     }
 
     /**
@@ -239,6 +244,12 @@ public abstract class Intersectable extends BvhLeaf {
      * findGeo… → calculate… → calc… → findGeo…, so a class overriding any one of them answers
      * every year's query (and the renderer's lean path, whose defaults call findGeo…); the
      * constructor rejects a class overriding none, which would only go round.
+     *
+     * The one-argument hooks (Ray only, the courses' form before maxDistance) sit outside the
+     * circle: each default asks its year's two-argument hook with no bound. A class that overrides
+     * only a one-argument hook is entered at findGeo…(Ray, double)'s default, which asks that hook
+     * (HookCheck names it) and keeps the hits within maxDistance; so that default is the one place
+     * both families meet, and no default calls back into a default.
      */
 
     /**
@@ -253,6 +264,8 @@ public abstract class Intersectable extends BvhLeaf {
      * @return the intersections, or null when there are none
      */
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+        HookCheck.OneArgumentHook oneArgument = HookCheck.oneArgumentHook(getClass());
+        if (oneArgument != null) return oneArgumentHits(oneArgument, ray, maxDistance);
         List<Intersection> found = calculateIntersectionsHelper(ray, maxDistance);
         if (found == null || found.isEmpty()) return null;
         List<GeoPoint> result = new ArrayList<>(found.size());
@@ -287,6 +300,63 @@ public abstract class Intersectable extends BvhLeaf {
         for (GeoPoint gp : found)
             result.add(gp instanceof Intersection i ? i : new Intersection(gp.geometry, gp.point));
         return result;
+    }
+
+    /**
+     * The 2023–24 hook without {@code maxDistance} (the course's form before it): every
+     * intersection at distance {@code t} with {@code alignZero(t) > 0}, or null when there are
+     * none. Override it alone, and every year's query asks it and keeps the hits within their
+     * bound. The default asks {@link #findGeoIntersectionsHelper(Ray, double)} with no bound.
+     *
+     * @param ray the ray to intersect
+     * @return the intersections, or null when there are none
+     */
+    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray) {
+        return findGeoIntersectionsHelper(ray, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * The 2024–25 hook without {@code maxDistance}: same contract as
+     * {@link #findGeoIntersectionsHelper(Ray)}, with {@link Intersection} records. The default
+     * asks {@link #calculateIntersectionsHelper(Ray, double)} with no bound.
+     *
+     * @param ray the ray to intersect
+     * @return the intersections, or null when there are none
+     */
+    protected List<Intersection> calculateIntersectionsHelper(Ray ray) {
+        return calculateIntersectionsHelper(ray, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * The 2025–26 hook without {@code maxDistance}: same contract as
+     * {@link #findGeoIntersectionsHelper(Ray)}, with {@link Intersection} records. The default
+     * asks {@link #calcIntersectionsHelper(Ray, double)} with no bound.
+     *
+     * @param ray the ray to intersect
+     * @return the intersections, or null when there are none
+     */
+    protected List<Intersection> calcIntersectionsHelper(Ray ray) {
+        return calcIntersectionsHelper(ray, Double.POSITIVE_INFINITY);
+    }
+
+    /**
+     * The hits of the one-argument hook a class overrides alone, within {@code maxDistance} by
+     * the course rule ({@link #within}), as plain {@link GeoPoint}s (the 2023–24 record's value
+     * equality; the later years' defaults rewrap them); null when none is in range.
+     */
+    private List<GeoPoint> oneArgumentHits(HookCheck.OneArgumentHook hook, Ray ray, double maxDistance) {
+        List<? extends GeoPoint> all = switch (hook) {
+            case FIND_GEO -> findGeoIntersectionsHelper(ray);
+            case CALCULATE -> calculateIntersectionsHelper(ray);
+            case CALC -> calcIntersectionsHelper(ray);
+        };
+        if (all == null) return null;
+        Point head = ray.getHead();
+        List<GeoPoint> result = new ArrayList<>(all.size());
+        for (GeoPoint gp : all)
+            if (within(gp.point.distance(head), maxDistance))
+                result.add(gp.getClass() == GeoPoint.class ? gp : new GeoPoint(gp.geometry, gp.point));
+        return nullWhenEmpty(result);
     }
 
     /**

@@ -24,7 +24,8 @@ public final class CourseClassGuard {
     /**
      * The library's classes in the course packages, top level (nested ones come with their file);
      * a class of the same name in a project shadows the library's. {@code CourseClassGuardTest}
-     * holds the list equal to the compiled classes. {@code renderer.RenderEvent} is left out:
+     * holds the list equal to the compiled classes. {@code renderer.RenderEvent} and
+     * {@code renderer.ImageWriteEvent} are left out:
      * loading a JFR event class sets up JFR's machinery (see that class), and no course has one.
      */
     static final List<String> LIBRARY_CLASSES = List.of(
@@ -44,7 +45,8 @@ public final class CourseClassGuard {
             "renderer.PixelSampler", "renderer.Progress", "renderer.RayBudget", "renderer.RayTracerBase", "renderer.RayTracerBasic",
             "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
             "renderer.RenderStats", "renderer.SampleStream", "renderer.Sampling", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
-            "renderer.TraceContext", "renderer.Transmittance", "renderer.View", "renderer.WhittedShader");
+            "renderer.TraceContext", "renderer.Transmittance", "renderer.View", "renderer.WhittedShader",
+            "renderer.WriteListener");
 
     private CourseClassGuard() {
     }

@@ -360,6 +360,29 @@ public class Material {
     }
 
     /**
+     * The spelling of {@link #setShininess(int)} after the field {@code nShininess}, as some
+     * cohorts write it.
+     *
+     * @param nShininess the Phong exponent, ≥ 0
+     * @return this material, for chaining
+     * @throws IllegalArgumentException as {@link #setShininess(int)}, naming the value
+     */
+    public Material setnShininess(int nShininess) {
+        return setShininess(nShininess);
+    }
+
+    /**
+     * The spelling of {@link #setShininess(int)} with a capital N, as some cohorts write it.
+     *
+     * @param nShininess the Phong exponent, ≥ 0
+     * @return this material, for chaining
+     * @throws IllegalArgumentException as {@link #setShininess(int)}, naming the value
+     */
+    public Material setNShininess(int nShininess) {
+        return setShininess(nShininess);
+    }
+
+    /**
      * @param spread the glossy spread, finite and ≥ 0; see {@link #reflectionSpread}
      * @return this material, for chaining
      * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it

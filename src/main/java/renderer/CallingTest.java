@@ -6,14 +6,14 @@ import java.util.Optional;
 import java.util.Set;
 
 /**
- * The test method a render runs in, found on the calling thread's stack, to name an image that
+ * Internal, public for {@code renderer.junit} (you never need it): the test method a render runs in, found on the calling thread's stack, to name an image that
  * has no name of its own (the 2024–25 {@code setResolution} + {@code writeToImage(name)} flow,
  * where the name comes only with the write). A frame counts when its method carries one of the
  * test annotations below, compared by name, so the library does not depend on JUnit. The walk
  * stops at the first such frame (a few frames above the render call); anything reflection
- * refuses skips the frame.
+ * refuses skips the frame. {@code ImageAssertions} names a camera's failure files after it.
  */
-final class CallingTest {
+public final class CallingTest {
     /** The test annotations of JUnit 5 (plain, repeated, parameterized, template), JUnit 4 and TestNG. */
     private static final Set<String> TEST_ANNOTATIONS = Set.of("org.junit.jupiter.api.Test",
             "org.junit.jupiter.api.RepeatedTest", "org.junit.jupiter.api.TestTemplate",
@@ -29,7 +29,7 @@ final class CallingTest {
      *         or empty when no frame of the calling thread is a test method (a main method, a
      *         render worker, a dynamic test)
      */
-    static Optional<String> find() {
+    public static Optional<String> find() {
         return WALKER.walk(frames -> frames.filter(CallingTest::isTest).findFirst())
                 .map(f -> simpleName(f.getDeclaringClass()) + "." + f.getMethodName() + "()");
     }

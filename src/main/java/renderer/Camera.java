@@ -172,7 +172,7 @@ public final class Camera {
 
     /**
      * Renders the image into the image writer and returns what it did; prints the one-line
-     * summary unless silenced ({@code render NAME WxH [sampling]: figures}, the figures being
+     * summary unless silenced ({@code render NAME WxH [sampling] of scene 'SCENE': figures}, the figures being
      * {@link RenderStats#toString()}). NAME is the image writer's name or, for a writer named only
      * when written ({@link Builder#setResolution}), the calling test method's
      * ({@code SpheresTest.twoSpheres()}). While a JDK Flight Recorder recording runs, the render
@@ -185,24 +185,33 @@ public final class Camera {
      *                                                    may mix two states and must not be written
      */
     public RenderStats render() {
-        String name = imageLabel();
+        String name = getImageLabel();
+        String scene = getSceneName();
         RenderEvent event = FlightRecorder.isInitialized() ? new RenderEvent() : null; // see RenderEvent
         RenderStats stats = new RenderLoop(view, sampling, execution, rayTracer, imageWriter).render(name);
-        if (event != null) event.commit(name, imageWriter, sampling.antiAliasing(), stats);
+        if (event != null) event.commit(name, scene, imageWriter, sampling.antiAliasing(), stats);
         renderListener.accept(this, stats);
         if (summary) execution.output().println("render " + name + " " + imageWriter.getNx() + "x"
-                + imageWriter.getNy() + " [" + describe() + "]: " + stats);
+                + imageWriter.getNy() + " [" + describe() + "] of scene '" + scene + "': " + stats);
         return stats;
     }
 
     /**
-     * The name summaries, progress lines and the JFR event give the image: its writer's name, or
-     * for an unnamed writer (named only when written) the calling test method
-     * ({@code SpheresTest.twoSpheres()}), or {@code (unnamed)} outside a test.
+     * The name the summary and write lines, progress lines, test reports and JFR events give the
+     * image: its writer's name, or for an unnamed writer (named only when written, the 2024–25
+     * flow) the calling test method ({@code SpheresTest.twoSpheres()}), or {@code (unnamed)}
+     * outside a test.
+     *
+     * @return the image's name as this camera's reports show it
      */
-    private String imageLabel() {
+    public String getImageLabel() {
         return imageWriter.hasName() ? imageWriter.getImageName()
                 : CallingTest.find().orElse(imageWriter.getImageName());
+    }
+
+    /** @return the name of the scene this camera's tracer traces ({@link Scene#name}), as reports show it */
+    public String getSceneName() {
+        return rayTracer.scene.name;
     }
 
     /**
@@ -257,11 +266,12 @@ public final class Camera {
      * unless silenced prints {@code write NAME: /absolute/path.png in 0.042 s} (NAME as in the
      * render's summary).
      *
+     * @return this camera, for chaining (the course's {@code void} callers ignore it)
      * @throws IllegalStateException when the camera's writer has no name (it was made from
      *                               {@link Builder#setResolution}): use {@link #writeToImage(String)}
      */
-    public void writeToImage() {
-        write(imageWriter.getPath());
+    public Camera writeToImage() {
+        return write(imageWriter.getPath());
     }
 
     /**
@@ -269,18 +279,27 @@ public final class Camera {
      * line of {@link #writeToImage()}.
      *
      * @param imageName the file name without ".png"; may contain sub-folders
+     * @return this camera, for chaining (most 2024–25 sources return it; {@code void} callers ignore it)
      * @throws IllegalArgumentException for a blank name
      */
-    public void writeToImage(String imageName) {
-        write(ImageWriter.pathOf(imageName));
+    public Camera writeToImage(String imageName) {
+        return write(ImageWriter.pathOf(imageName));
     }
 
-    /** Writes the PNG and, unless silenced, a line with the image's name, the file and the time it took. */
-    private void write(Path file) {
+    /**
+     * Writes the PNG (a {@code raytracer.ImageWrite} JFR event while a recording runs), tells a
+     * render listener that is also a {@link WriteListener}, and unless silenced prints a line with
+     * the image's name, the file and the time it took.
+     */
+    private Camera write(Path file) {
+        String name = getImageLabel();
+        Path target = file.toAbsolutePath();
         long start = System.nanoTime();
-        imageWriter.writeToImage(file);
-        if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", imageLabel(),
-                file.toAbsolutePath(), (System.nanoTime() - start) / 1e9));
+        imageWriter.writeToImage(target); // the public method: a subclass of ImageWriter may override it
+        double seconds = (System.nanoTime() - start) / 1e9;
+        if (renderListener instanceof WriteListener listener) listener.written(this, target, seconds);
+        if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", name, target, seconds));
+        return this;
     }
 
     /**
@@ -297,6 +316,8 @@ public final class Camera {
         private Point target;
         private double vpWidth, vpHeight, vpDistance;
         private boolean vpSizeSet, vpDistanceSet;
+        /** Degrees the frame is turned about the view direction at build ({@link #rotate}), in [0, 360). */
+        private int roll;
         /** The resolution for a writer the camera makes itself; used when imageWriter is null. */
         private int nX = 1, nY = 1;
         private ImageWriter imageWriter;
@@ -417,6 +438,23 @@ public final class Camera {
             this.target = Objects.requireNonNull(target, "camera target");
             this.up = null;
             this.to = null;
+            return this;
+        }
+
+        /**
+         * Turns the camera about its view direction by {@code degrees} (the 2025–26 course's
+         * camera roll). The sign follows the right-hand rule about the view direction: a positive
+         * angle takes the image's up toward its right, so {@code rotate(90)} makes the old right
+         * the new up; seen from behind the camera it turns clockwise, and the scene turns
+         * counter-clockwise in the image. The turn applies to whichever direction is set, before
+         * or after this call, when {@link #build()} makes the frame; calls add up
+         * ({@code rotate(30).rotate(60)} is {@code rotate(90)}).
+         *
+         * @param degrees the angle in degrees, any int (taken modulo 360)
+         * @return this builder
+         */
+        public Builder rotate(int degrees) {
+            this.roll = Math.floorMod(roll + Math.floorMod(degrees, 360), 360);
             return this;
         }
 
@@ -658,7 +696,8 @@ public final class Camera {
          * Someone to tell of each render, after the render loop and before the summary line: for
          * example {@code renderer.junit.RenderReports.to(testReporter)}, which publishes the
          * render's figures in a JUnit test's report. It runs on the thread that called
-         * {@link Camera#render()}.
+         * {@link Camera#render()}. A listener that is also a {@link WriteListener} is told of
+         * each {@code writeToImage} of the camera as well, after the PNG is in place.
          *
          * @param listener called with the camera and what its render did
          * @return this builder
@@ -691,7 +730,7 @@ public final class Camera {
             View.ViewPlane.requireSize(vpWidth, vpHeight);
             if (!vpDistanceSet) throw new IllegalArgumentException(missing + ": view plane distance (setVpDistance)");
             View.ViewPlane plane = new View.ViewPlane(vpWidth, vpHeight, vpDistance, nX, nY);
-            View.Frame frame = to != null ? View.Frame.of(to, up) : View.Frame.lookingAt(location, target, up);
+            View.Frame frame = (to != null ? View.Frame.of(to, up) : View.Frame.lookingAt(location, target, up)).rolled(roll);
             return new View(location, frame, plane, new View.Lens(aperture, focalDistance));
         }
 

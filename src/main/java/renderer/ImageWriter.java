@@ -15,6 +15,8 @@ import java.util.Objects;
 
 import javax.imageio.ImageIO;
 
+import jdk.jfr.FlightRecorder;
+
 import primitives.Color;
 import primitives.CourseClassGuard;
 
@@ -247,12 +249,15 @@ public class ImageWriter {
      * Writes the PNG to {@code file} atomically: into a temporary file beside it, then moved into
      * place, so a reader never sees a half-written image and a failure leaves no file behind; nor
      * does the JVM's exit during the write (a signal): the temporary file is then deleted.
+     * While a JDK Flight Recorder recording runs, the write is a {@code raytracer.ImageWrite}
+     * event.
      *
      * @param file where the PNG goes; missing folders are created
      * @throws UncheckedIOException naming the file when it cannot be written, or when the JVM
      *                              exits during the write
      */
     public void writeToImage(Path file) {
+        ImageWriteEvent event = FlightRecorder.isInitialized() ? new ImageWriteEvent() : null; // see RenderEvent
         // A view of the pixel buffer, not a copy: TYPE_INT_RGB's own layout (0xRRGGBB ints, row
         // by row), so writing needs no second image's worth of memory.
         DirectColorModel rgb = new DirectColorModel(24, 0xFF0000, 0x00FF00, 0x0000FF);
@@ -283,6 +288,7 @@ public class ImageWriter {
             } catch (AtomicMoveNotSupportedException e) {
                 Files.move(tmp, target, StandardCopyOption.REPLACE_EXISTING);
             }
+            if (event != null) event.commit(imageName, target, nX, nY);
         } catch (IOException e) {
             if (tmp != null) {
                 try {

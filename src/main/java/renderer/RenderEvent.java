@@ -16,13 +16,14 @@ import jdk.jfr.Timespan;
  * was started, by {@code -XX:StartFlightRecording}, {@code jcmd}, a profiler or the JFR API):
  * the first JFR event class a JVM initialises sets up JFR's machinery, hundreds of classes and
  * longer than a small render, and that must not fall on every first render. With the recorder
- * initialised but no recording asking for the event, {@link #commit(String, ImageWriter,
- * AntiAliasing, RenderStats)} does nothing.
+ * initialised but no recording asking for the event, {@link #commit(String, String, ImageWriter,
+ * AntiAliasing, RenderStats)} does nothing. The PNG write is an event of its own,
+ * {@link ImageWriteEvent}.
  */
 @Name(RenderEvent.NAME)
 @Label("Render")
 @Category("Ray Tracer")
-@Description("One Camera.render(): the image, its sampling, threads and rays; the duration covers the scene's "
+@Description("One Camera.render(): the image, its scene, sampling, threads and rays; the duration covers the scene's "
         + "preparation (BVH build) and the render loop, not the PNG write")
 final class RenderEvent extends Event {
     /** The event's name in a recording (for {@code jfr print --events}). */
@@ -31,6 +32,10 @@ final class RenderEvent extends Event {
     @Label("Image")
     @Description("The image's name, or the calling test's for an image named only when written")
     String image;
+
+    @Label("Scene")
+    @Description("The name of the scene rendered")
+    String scene;
 
     @Label("Width")
     @Description("Pixels across")
@@ -72,10 +77,11 @@ final class RenderEvent extends Event {
     }
 
     /** Ends the event, fills in what the render did and commits it, if a recording asks for it. */
-    void commit(String image, ImageWriter writer, AntiAliasing sampling, RenderStats stats) {
+    void commit(String image, String scene, ImageWriter writer, AntiAliasing sampling, RenderStats stats) {
         end();
         if (!shouldCommit()) return;
         this.image = image;
+        this.scene = scene;
         this.width = writer.getNx();
         this.height = writer.getNy();
         this.sampling = sampling.name();

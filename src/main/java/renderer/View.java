@@ -93,6 +93,30 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
             Vector right = to.crossProduct(hint).normalize();
             return of(to, right.crossProduct(to).normalize());
         }
+
+        /**
+         * This frame turned about its view direction by {@code degrees}, by the right-hand rule
+         * about {@code to}: a positive angle takes up toward right, so 90 makes the old right the
+         * new up (and the old down the new right). Seen by the viewer, looking along {@code to},
+         * the camera turns clockwise and the scene in the image counter-clockwise. Multiples of
+         * 90° are exact (no cosine of π/2 rounding to 6e-17), so 0 and 360 return this frame.
+         *
+         * @param degrees the angle, any int (taken modulo 360)
+         * @return the turned frame, with the same view direction
+         */
+        Frame rolled(int degrees) {
+            Vector newUp = switch (Math.floorMod(degrees, 360)) {
+                case 0 -> null;
+                case 90 -> right;
+                case 180 -> up.scale(-1);
+                case 270 -> right.scale(-1);
+                default -> {
+                    double radians = Math.toRadians(Math.floorMod(degrees, 360));
+                    yield up.scale(Math.cos(radians)).add(right.scale(Math.sin(radians))).normalize();
+                }
+            };
+            return newUp == null ? this : of(to, newUp);
+        }
     }
 
     /**

@@ -11,7 +11,9 @@
  * <li>The course's face, which scene tests call: {@code Camera} and its {@code Builder},
  * {@code ImageWriter}, {@code RayTracerBase} with {@code RayTracerBasic} (the Whitted tracer) and
  * {@code SimpleRayTracer}, {@code AntiAliasing}, {@code RayTracerType}, and what a render reports,
- * {@code RenderStats} (with the JDK Flight Recorder event {@code RenderEvent}).</li>
+ * {@code RenderStats} (with the JDK Flight Recorder events {@code RenderEvent} and, for each PNG
+ * written, {@code ImageWriteEvent}), and {@code WriteListener}, which a render listener implements
+ * to hear of the camera's writes too.</li>
  * <li>The values a built camera is a facade over, each checked once, where it is made:
  * {@code View} (location, frame, view plane and resolution, lens: it makes camera rays from film
  * and lens coordinates), {@code Sampling} (the anti-aliasing mode and its parameters, lens samples,

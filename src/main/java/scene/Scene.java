@@ -81,4 +81,35 @@ public class Scene {
         this.lights = Objects.requireNonNull(lights, "lights");
         return this;
     }
+
+    /**
+     * The course spelling of "use a BVH for this scene" (2025–26 sources; also
+     * {@link #makeBVH()}, {@link #enableBVH()}): {@link Geometries#buildBVH()} of
+     * {@link #geometries}, which does nothing, since every render builds (or reuses) the tracer's
+     * BVH over the scene as it is then.
+     *
+     * @return this scene, for chaining
+     */
+    public Scene buildBVH() {
+        geometries.buildBVH();
+        return this;
+    }
+
+    /**
+     * Another course spelling of {@link #buildBVH()}: does nothing (see there).
+     *
+     * @return this scene, for chaining
+     */
+    public Scene makeBVH() {
+        return buildBVH();
+    }
+
+    /**
+     * Another course spelling of {@link #buildBVH()}: does nothing (see there).
+     *
+     * @return this scene, for chaining
+     */
+    public Scene enableBVH() {
+        return buildBVH();
+    }
 }

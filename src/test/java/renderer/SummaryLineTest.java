@@ -77,6 +77,18 @@ class SummaryLineTest {
             main.join();
             assertThat(lines.get()).singleElement().asString().startsWith("render (unnamed) 4x4 ");
         }
+
+        @Test
+        @DisplayName("the scene's name follows the settings; a camera given no tracer renders the builder's empty scene")
+        void sceneName() {
+            assertThat(printed(b -> b.setRayTracer(new RayTracerBasic(new Scene("Two spheres"))).build().render()))
+                    .singleElement().asString().startsWith("render SummaryLineTest.Naming.sceneName() 1x1 [NONE, ")
+                    .contains(", seed 0] of scene 'Two spheres': ");
+            ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+            Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), Vector.AXIS_Y).setVpSize(1, 1)
+                    .setVpDistance(1).setOutput(new PrintStream(bytes, true, StandardCharsets.UTF_8)).build().render();
+            assertThat(bytes.toString(StandardCharsets.UTF_8)).contains("] of scene 'empty scene': ");
+        }
     }
 
     @Nested

@@ -17,6 +17,7 @@ import java.util.function.UnaryOperator;
 import org.junit.jupiter.api.TestReporter;
 import org.opentest4j.AssertionFailedError;
 
+import renderer.CallingTest;
 import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.junit.Comparison.Metrics;
@@ -43,9 +44,12 @@ import renderer.junit.Comparison.Status;
  * <p><b>A failure</b> is an {@link AssertionFailedError} whose message gives the PSNR, the largest
  * difference and where it is, the share and count of failing pixels, and the paths of a diff
  * image (the difference × 20) and a heat map (black: none, blue: failThreshold, red: hardFail,
- * yellow: 0.25, white: 1). They are written next to the render: beside the PNG for a file, under
- * {@code target/image-assertions/} for a camera (with the render itself, since a camera's pixels
- * are in memory). A reference of another size or channel count, a missing reference and an
+ * yellow: 0.25, white: 1). They are written next to the render: beside the PNG for a file (named
+ * after it), and for a camera (with the render itself, since a camera's pixels are in memory)
+ * under {@code target/image-assertions/<TestClass.testMethod>/}, named after the reference there,
+ * so that two tests comparing with one reference keep their own files (outside a test, directly
+ * under {@code target/image-assertions/}). The invocations of one parameterized test share its
+ * folder: the last failure's files are there. A reference of another size or channel count, a missing reference and an
  * unreadable PNG each fail with one message naming the file, and write nothing.
  *
  * <p><b>Recording.</b> With {@code -Draytracer.updateReferences=true}, an assertion whose
@@ -140,8 +144,8 @@ public final class ImageAssertions {
     }
 
     /**
-     * @param folder where a camera's failed render and its diff images go (default
-     *               {@code target/image-assertions}); a PNG's go beside it
+     * @param folder where a camera's failed render and its diff images go, in a folder named after
+     *               the calling test (default {@code target/image-assertions}); a PNG's go beside it
      * @return these settings with that folder
      * @throws NullPointerException when it is null
      */
@@ -182,9 +186,17 @@ public final class ImageAssertions {
         Objects.requireNonNull(camera, "camera");
         Path reference = reference(referenceName);
         ImageWriter image = camera.getImageWriter();
-        Path stem = outputFolder.resolve(stem(referenceFolder.relativize(reference)));
-        check(new Render("the render of " + image.getImageName(), Picture.of(image), sibling(stem, ".png"), stem, true,
+        Path stem = outputFolder.resolve(testFolder()).resolve(stem(referenceFolder.relativize(reference)));
+        check(new Render("the render of " + camera.getImageLabel(), Picture.of(image), sibling(stem, ".png"), stem, true,
                 image::writeToImage), reference);
+    }
+
+    /**
+     * The folder, under the output folder, of the calling test's files: {@code TestClass.method}
+     * (nested classes as {@code Outer.Inner.method}); empty outside a test.
+     */
+    private static String testFolder() {
+        return CallingTest.find().map(test -> test.substring(0, test.length() - "()".length())).orElse("");
     }
 
     /**

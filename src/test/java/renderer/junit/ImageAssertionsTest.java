@@ -47,7 +47,7 @@ import scene.Scene;
  * The image assertions: verdicts by the verification script's rules (its parity with OpenImageIO
  * is proven by scripts/test_image_assertions_parity.py), what a failure says and writes, bad
  * input, recording references, and what a test's report shows. Every file goes to a temporary
- * folder; nothing is written into images/.
+ * folder, but for the one PNG the 2024–25 flow writes into images/, which its test deletes.
  */
 @DisplayName("Image assertions")
 class ImageAssertionsTest {
@@ -275,16 +275,50 @@ class ImageAssertionsTest {
         }
 
         @Test
-        @DisplayName("of a camera writes its render, the diff and the heat map under the output folder")
+        @DisplayName("of a camera writes its render, the diff and the heat map in the test's folder under the output folder")
         void camera() throws IOException {
             Camera camera = cameraShowing(greenUp(gradient(), 3, 3, 9));
+            Path mine = output.resolve("ImageAssertionsTest.Failure.camera");
             assertThatThrownBy(() -> assertions.assertMatches(camera, "gradient")).isInstanceOf(AssertionFailedError.class)
                     .hasMessageContaining("the render of junit/gradient does not match reference")
-                    .hasMessageContaining("render:   " + output.resolve("gradient.png"));
-            assertThat(files(output)).containsExactly(output.resolve("gradient.diff.png"), output.resolve("gradient.heat.png"),
-                    output.resolve("gradient.png"));
-            assertThat(ImageIO.read(output.resolve("gradient.png").toFile()).getRGB(3, 3) & 0xFFFFFF)
+                    .hasMessageContaining("diff:     " + mine.resolve("gradient.diff.png"))
+                    .hasMessageContaining("render:   " + mine.resolve("gradient.png"));
+            assertThat(files(output)).containsExactly(mine.resolve("gradient.diff.png"), mine.resolve("gradient.heat.png"),
+                    mine.resolve("gradient.png"));
+            assertThat(ImageIO.read(mine.resolve("gradient.png").toFile()).getRGB(3, 3) & 0xFFFFFF)
                     .isEqualTo(greenUp(gradient(), 3, 3, 9)[3 * W + 3]);
+        }
+
+        @Test
+        @DisplayName("of an image named only when written (2024–25) names the test in its message")
+        void unnamedImage() {
+            ImageWriter image = new ImageWriter(W, H);
+            image.writeTile(0, 0, W, H, greenUp(gradient(), 3, 3, 9));
+            Camera camera = view().setImageWriter(image).build();
+            assertThatThrownBy(() -> assertions.assertMatches(camera, "gradient"))
+                    .hasMessageStartingWith("the render of ImageAssertionsTest.Failure.unnamedImage() does not match reference");
+        }
+
+        @Test
+        @DisplayName("two tests comparing with one reference keep their own files, and each message names its own")
+        void twoTestsOneReference() throws IOException {
+            SharedReferenceSample.dir = dir;
+            List<Throwable> failures = EngineTestKit.engine("junit-jupiter").selectors(selectClass(SharedReferenceSample.class))
+                    .configurationParameter(ReportingSample.RUN, "true").execute().testEvents().failed().stream()
+                    .map(e -> e.getRequiredPayload(org.junit.platform.engine.TestExecutionResult.class).getThrowable().orElseThrow())
+                    .toList();
+            assertThat(failures).hasSize(2);
+            for (String test : List.of("first", "second")) {
+                Path folder = output.resolve("ImageAssertionsTest.SharedReferenceSample." + test);
+                assertThat(files(folder)).containsExactly(folder.resolve("gradient.diff.png"), folder.resolve("gradient.heat.png"),
+                        folder.resolve("gradient.png"));
+                assertThat(failures).filteredOn(f -> f.getMessage().contains("diff:     " + folder.resolve("gradient.diff.png")))
+                        .as("the failure of %s names its own diff", test).hasSize(1);
+            }
+            int steps = SharedReferenceSample.SECOND_STEPS;
+            assertThat(ImageIO.read(output.resolve("ImageAssertionsTest.SharedReferenceSample.second").resolve("gradient.png")
+                    .toFile()).getRGB(3, 3) & 0xFFFFFF).as("the second test's render, not overwritten by the first's")
+                    .isEqualTo(greenUp(gradient(), 3, 3, steps)[3 * W + 3]);
         }
     }
 
@@ -466,18 +500,38 @@ class ImageAssertionsTest {
         private final TestReporter reporter = published::add;
 
         @Test
-        @DisplayName("RenderReports publishes each render's image, size, mode, time, rays and Mrays/s")
+        @DisplayName("RenderReports publishes each render's image, scene, size, mode, threads, time, rays and Mrays/s")
         void renderFigures() {
             Scene scene = new Scene("background").setBackground(new Color(30, 60, 90));
             Camera camera = view().setImageWriter(new ImageWriter("junit/figures", 6, 4)).setRayTracer(new RayTracerBasic(scene))
-                    .setRenderListener(RenderReports.to(reporter)).build();
+                    .setMultithreading(2).setRenderListener(RenderReports.to(reporter)).build();
             RenderStats stats = camera.render();
             camera.render();
             assertThat(published).hasSize(2);
-            assertThat(published.get(0)).containsOnlyKeys("image", "size", "mode", "time", "rays", "Mrays/s")
-                    .containsEntry("image", "junit/figures").containsEntry("size", "6x4")
-                    .containsEntry("mode", camera.describe()).containsEntry("rays", Long.toString(stats.totalRays()));
+            assertThat(published.get(0)).containsOnlyKeys("image", "scene", "size", "mode", "threads", "time", "rays", "Mrays/s")
+                    .containsEntry("image", "junit/figures").containsEntry("scene", "background").containsEntry("size", "6x4")
+                    .containsEntry("mode", camera.describe()).containsEntry("threads", "2")
+                    .containsEntry("rays", Long.toString(stats.totalRays()));
             assertThat(published.get(0).get("time")).matches("\\d+\\.\\d{3} s");
+        }
+
+        @Test
+        @DisplayName("2024–25 flow: the render's and the write's entries name the test, the write's with its file and time")
+        void courseYear5785() throws IOException {
+            Camera camera = view().setResolution(3, 2).setRayTracer(new RayTracerBasic(new Scene("flow")))
+                    .setRenderListener(RenderReports.to(reporter)).build();
+            Path file = Path.of("images", "junit", "reports-5785.png");
+            try {
+                camera.renderImage().writeToImage("junit/reports-5785");
+            } finally {
+                Files.deleteIfExists(file);
+            }
+            String test = "ImageAssertionsTest.Reports.courseYear5785()";
+            assertThat(published).hasSize(2);
+            assertThat(published.get(0)).containsEntry("image", test).containsEntry("scene", "flow").containsEntry("threads", "0");
+            assertThat(published.get(1)).containsOnlyKeys("image", "file", "write time").containsEntry("image", test)
+                    .containsEntry("file", file.toAbsolutePath().toString());
+            assertThat(published.get(1).get("write time")).matches("\\d+\\.\\d{3} s");
         }
 
         @Test
@@ -492,7 +546,8 @@ class ImageAssertionsTest {
                     .containsEntry("PSNR", "inf dB").containsEntry("failing pixels", "0.000% (0 of 768)");
             assertThat(published.get(1)).containsEntry("verdict", "FAIL").containsEntry("PSNR", "53.8 dB")
                     .containsEntry("max difference", "0.0980 at (7,5) channel 1")
-                    .containsEntry("diff", output.resolve("gradient.diff.png").toString()).containsKey("heat map");
+                    .containsEntry("diff", output.resolve("ImageAssertionsTest.Reports.verdicts").resolve("gradient.diff.png").toString())
+                    .containsKey("heat map");
         }
 
         @Test
@@ -511,6 +566,34 @@ class ImageAssertionsTest {
             assertThat(entries).hasSize(2);
             assertThat(entries.get(0).getKeyValuePairs()).containsEntry("image", "sample").containsEntry("size", "5x5");
             assertThat(entries.get(1).getKeyValuePairs()).containsEntry("verdict", "PASS");
+        }
+    }
+
+    /**
+     * Two scene tests as users write them, each failing against one shared reference with its
+     * own render, run by {@link Failure#twoTestsOneReference} alone (never by Surefire).
+     */
+    @ExtendWith(ReportingSample.OnlyInTestKit.class)
+    static class SharedReferenceSample {
+        static final int FIRST_STEPS = 9, SECOND_STEPS = 30;
+        /** The calling test's temporary folder, set before the test kit runs the sample. */
+        static volatile Path dir;
+
+        private static void fails(int steps) {
+            ImageAssertions assertions = ImageAssertions.defaults().withReferenceFolder(dir.resolve("references"))
+                    .withOutputFolder(dir.resolve("output")).withLookups(key -> null, key -> null);
+            png(dir.resolve("references").resolve("gradient.png"), gradient());
+            assertions.assertMatches(cameraShowing(greenUp(gradient(), 3, 3, steps)), "gradient");
+        }
+
+        @Test
+        void first() {
+            fails(FIRST_STEPS);
+        }
+
+        @Test
+        void second() {
+            fails(SECOND_STEPS);
         }
     }
 
