@@ -50,7 +50,7 @@ final class MigrateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Migration migration = Migration.ofThisProcess(out);
+        Migration migration = Migration.ofThisProcess(out, err);
         try {
             if (undo) migration.undo(dir);
             else migration.migrate(dir, allowDirty, dryRun);

@@ -46,19 +46,27 @@ public final class Migration {
     private final Toolchain tools;
     private final Catalog catalog;
     private final PrintStream out;
+    /** Where each step says what it is doing (the compiles take seconds to a minute on a real project). */
+    private final PrintStream progress;
 
-    Migration(Toolchain tools, ClassLoader library, PrintStream out) {
+    Migration(Toolchain tools, ClassLoader library, PrintStream out, PrintStream progress) {
         this.tools = tools;
         this.catalog = new Catalog(library);
         this.out = out;
+        this.progress = progress;
     }
 
     /**
-     * @param out where the summary goes
+     * @param out      where the summary goes
+     * @param progress where each step is announced as it starts
      * @return a migration with the library this command runs with, JUnit from the local Maven repository
      */
-    public static Migration ofThisProcess(PrintStream out) {
-        return new Migration(Toolchain.ofThisProcess(), Migration.class.getClassLoader(), out);
+    public static Migration ofThisProcess(PrintStream out, PrintStream progress) {
+        return new Migration(Toolchain.ofThisProcess(), Migration.class.getClassLoader(), out, progress);
+    }
+
+    private void step(String what) {
+        progress.println("raytracer migrate: " + what + "...");
     }
 
     /**
@@ -212,6 +220,8 @@ public final class Migration {
         List<Path> projectJars = layout.jars();
 
         // 1. The project as it is must compile (else its errors would be blamed on the library).
+        step("compiling " + d.getFileName() + " as it is (" + (course.size() + extras.size()) + " classes, " + tests.size()
+                + " test files)");
         requireCompilesAsIs(javac, d, course, extras, tests, junit, projectJars, scratch);
 
         List<CourseChoices.Choice> choices = CourseChoices.find(course, tests, d);
@@ -221,6 +231,7 @@ public final class Migration {
         course.forEach(f -> own.putIfAbsent(f.simpleName(), f.text()));
         List<Kept> keptExtras = extras.stream().map(f -> kept(f)).toList();
         Map<Path, Kept> staged = stage(keptExtras, d, scratch.resolve("stage-main"));
+        step("compiling your " + extras.size() + " own classes against the library");
         List<Path> libraryPath = new ArrayList<>(List.of(tools.library()));
         libraryPath.addAll(nonJUnit(projectJars));
         Javac.Outcome main = javac.compile(staged.keySet(), libraryPath, jdk, scratch.resolve("main"));
@@ -233,6 +244,7 @@ public final class Migration {
         // 3. The tests against the library and the kept extras; those that fail are left out.
         List<Kept> keptTests = tests.stream().map(f -> kept(f)).toList();
         Map<Path, Kept> stagedTests = stage(keptTests, d, scratch.resolve("stage-test"));
+        step("compiling your " + tests.size() + " test files against the library");
         List<Path> testPath = new ArrayList<>(libraryPath);
         testPath.add(scratch.resolve("main"));
         testPath.addAll(junit);
@@ -244,6 +256,7 @@ public final class Migration {
         List<Kept> extrasKept = main.compiled().stream().map(staged::get).toList();
         List<Kept> testsKept = test.compiled().stream().map(stagedTests::get).toList();
         int release = jdk;
+        step("finding the Java release your code needs");
         for (int candidate : new int[] { 17, 21 }) {
             if (candidate >= jdk) break;
             Javac.Outcome m = javac.compile(main.compiled(), libraryPath, candidate, scratch.resolve("r-main"));

@@ -41,6 +41,7 @@ class MigrationTest {
     @TempDir
     Path dir;
     private final ByteArrayOutputStream printed = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream steps = new ByteArrayOutputStream();
 
     /** The library of this build (target/classes), JUnit from the test's own class path, an empty Maven repository. */
     private Migration migration() {
@@ -50,7 +51,8 @@ class MigrationTest {
                 .map(Path::of).toList();
         Toolchain tools = new Toolchain(Toolchain.location(Camera.class), junit, dir.resolveSibling(dir.getFileName() + "-m2"),
                 mine.coordinates(), mine.junitVersion(), mine.jdk());
-        return new Migration(tools, Camera.class.getClassLoader(), new PrintStream(printed, true, StandardCharsets.UTF_8));
+        PrintStream out = new PrintStream(printed, true, StandardCharsets.UTF_8);
+        return new Migration(tools, Camera.class.getClassLoader(), out, new PrintStream(steps, true, StandardCharsets.UTF_8));
     }
 
     private String printed() {
@@ -154,6 +156,14 @@ class MigrationTest {
                 assertThat(results.succeeded().count()).isEqualTo(3);
                 assertThat(results.failed().count()).isZero();
             }
+        }
+
+        @Test
+        @DisplayName("says each step as it starts, apart from the summary")
+        void announcesSteps() {
+            assertThat(steps.toString(StandardCharsets.UTF_8)).contains("as it is (9 classes, 4 test files)...",
+                    "compiling your 4 test files against the library...");
+            assertThat(printed()).doesNotContain("compiling");
         }
 
         @Test
