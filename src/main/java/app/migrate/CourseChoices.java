@@ -52,6 +52,14 @@ final class CourseChoices {
                     "a hit exactly at maxDistance counts, in every year's query",
                     text -> QUERY_WITH_MAX.matcher(text).find()),
             new Rule("renderer.Camera",
+                    // An assignment to the view direction within rotate's first lines: a turn of
+                    // the direction (yaw), where the library rolls about it.
+                    Pattern.compile("\\brotate\\s*\\(\\s*(?:final\\s+)?(?:double|int)\\s+\\w+\\s*\\)\\s*\\{(?s:.{0,1200}?)"
+                            + "(?i:\\b_?(?:new)?v_?to\\w*)\\s*=(?!=)"),
+                    "your Builder.rotate(degrees) turns the view direction (about the up vector)",
+                    "rotate(degrees) rolls the camera about its view direction (right-hand rule; the direction stays)",
+                    text -> text.matches("(?s).*\\.rotate\\s*\\(.*")),
+            new Rule("renderer.Camera",
                     Pattern.compile("\\b(?:location|p0|position|cameraLocation|place)\\s*=\\s*(?:Point\\.ZERO|new\\s+Point\\s*\\(\\s*0(?:\\.0)?\\s*,\\s*0(?:\\.0)?\\s*,\\s*0(?:\\.0)?\\s*\\))\\s*;"),
                     "your camera defaults its location (to the origin)",
                     "build() without setLocation throws MissingResourceException",

@@ -311,6 +311,33 @@ class MigrationTest {
     }
 
     @Nested
+    @DisplayName("where the student's code chose otherwise than the library: the camera's rotate")
+    class RotateChoice {
+        private String rotated(String body) throws Exception {
+            CourseProjects.intellij(dir);
+            write(dir, "src/renderer/Camera.java", "package renderer;\n\nimport primitives.Vector;\n\npublic class Camera {\n"
+                    + "    public static class Builder {\n        private Vector vTo, vUp, vRight;\n\n"
+                    + "        public Builder rotate(double angle) {\n" + body + "            return this;\n        }\n    }\n}\n");
+            migration().migrate(dir, false, true);
+            return printed();
+        }
+
+        @Test
+        @DisplayName("a rotate that turns the view direction is named")
+        void yaw() throws Exception {
+            assertThat(rotated("            vTo = vRight;\n")).contains(
+                    "your Builder.rotate(degrees) turns the view direction (about the up vector) (src/renderer/Camera.java:9)");
+        }
+
+        @Test
+        @DisplayName("a rotate that rolls about the view direction is not")
+        void roll() throws Exception {
+            assertThat(rotated("            vUp = vRight;\n            if (vTo == null) vRight = vUp;\n"))
+                    .doesNotContain("turns the view direction");
+        }
+    }
+
+    @Nested
     @DisplayName("where the student's code chose otherwise than the library: the cylinder")
     class CylinderChoice {
         @ParameterizedTest(name = "Cylinder({0}) is named")
