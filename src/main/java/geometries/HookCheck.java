@@ -31,16 +31,46 @@ final class HookCheck {
             List.of("findGeoIntersectionsHelper", "calculateIntersectionsHelper", "calcIntersectionsHelper");
 
     /**
-     * The one-argument form of a year's hook, {@code name(Ray)}: the course's hook before it had
-     * {@code maxDistance}, which a user's shape may override alone. The constants follow
-     * {@link #HOOKS}.
+     * A course year's hook, by its name: with {@code maxDistance}, or in its one-argument form
+     * {@code name(Ray)}, the course's hook before it had the bound, which a user's shape may
+     * override alone. The constants follow {@link #HOOKS}.
      */
-    enum OneArgumentHook {
+    enum Hook {
         FIND_GEO, CALCULATE, CALC;
 
+        /** The one-argument form's name, for messages. */
         String methodName() {
             return HOOKS.get(ordinal()) + "(Ray)";
         }
+    }
+
+    /**
+     * Per class: the two-argument hook declared lowest (nearest the class; in one class, the
+     * first in {@link #HOOKS}' order): the one a user's subclass of a library shape wrote, which
+     * the render asks as that year's queries do.
+     */
+    private static final ClassValue<Hook> LOWEST_HOOK = new ClassValue<>() {
+        @Override
+        protected Hook computeValue(Class<?> type) {
+            Hook lowest = Hook.FIND_GEO;
+            Class<?> at = Intersectable.class;
+            for (Hook hook : Hook.values()) {
+                Class<?> c = declaring(type, Intersectable.class, HOOKS.get(hook.ordinal()), Ray.class, double.class);
+                if (c != at && lower(at, c) == c) {
+                    at = c;
+                    lowest = hook;
+                }
+            }
+            return lowest;
+        }
+    };
+
+    /**
+     * @return the two-argument hook a query of the class's own making should ask: the lowest
+     *         declared ({@link Hook#FIND_GEO} when none is, whose default goes round to the rest)
+     */
+    static Hook lowestHook(Class<?> type) {
+        return LOWEST_HOOK.get(type);
     }
 
     /**
@@ -49,16 +79,48 @@ final class HookCheck {
      * (null and {@code Intersectable} when none). Among one-argument hooks the lowest class wins;
      * in one class, the first in {@link #HOOKS}' order.
      */
-    private record Overrides(Class<?> twoArgument, OneArgumentHook oneArgument, Class<?> oneArgumentClass) {
+    private record Overrides(Class<?> twoArgument, Hook oneArgument, Class<?> oneArgumentClass) {
     }
+
+    /**
+     * The library's classes that answer the lean queries with doubles arithmetic of their own:
+     * {@link #answersInDoubles} asks which of them a class descends from.
+     */
+    private static final List<Class<?>> DOUBLES = List.of(Sphere.class, SingleHitGeometry.class, Tube.class,
+            TriangleMesh.class, Geometries.class, Bvh.class);
+
+    /** The six hooks, as name and parameter types: a year's with and without {@code maxDistance}. */
+    private static boolean declaresAHookBelow(Class<?> type, Class<?> library) {
+        for (String hook : HOOKS)
+            for (Class<?>[] parameters : List.of(new Class<?>[] { Ray.class, double.class }, new Class<?>[] { Ray.class })) {
+                Class<?> c = declaring(type, Intersectable.class, hook, parameters);
+                if (c != library && library.isAssignableFrom(c)) return true;
+            }
+        return false;
+    }
+
+    /**
+     * Per class: whether its doubles forms of the lean queries stand for its course queries. True
+     * for a library class of {@link #DOUBLES} and a subclass that overrides none of the six hooks
+     * below it; false for a subclass that overrides one (its hook must answer, in the render too)
+     * and for any other class (a user's shape on {@code Geometry}).
+     */
+    private static final ClassValue<Boolean> ANSWERS_IN_DOUBLES = new ClassValue<>() {
+        @Override
+        protected Boolean computeValue(Class<?> type) {
+            for (Class<?> c = type; c != null && c != Intersectable.class; c = c.getSuperclass())
+                if (DOUBLES.contains(c)) return !declaresAHookBelow(type, c);
+            return false;
+        }
+    };
 
     /** Per class, computed on first use; a ClassValue holds no state beyond that fixed answer. */
     private static final ClassValue<Overrides> OVERRIDES = new ClassValue<>() {
         @Override
         protected Overrides computeValue(Class<?> type) {
             Class<?> two = Intersectable.class, oneClass = Intersectable.class;
-            OneArgumentHook one = null;
-            for (OneArgumentHook hook : OneArgumentHook.values()) {
+            Hook one = null;
+            for (Hook hook : Hook.values()) {
                 String name = HOOKS.get(hook.ordinal());
                 two = lower(two, declaring(type, Intersectable.class, name, Ray.class, double.class));
                 Class<?> c = declaring(type, Intersectable.class, name, Ray.class);
@@ -106,7 +168,7 @@ final class HookCheck {
      *         it overrides no two-argument hook; null otherwise (a two-argument hook answers, or
      *         none does)
      */
-    static OneArgumentHook oneArgumentHook(Class<?> type) {
+    static Hook oneArgumentHook(Class<?> type) {
         Overrides o = OVERRIDES.get(type);
         return o.twoArgument() == Intersectable.class ? o.oneArgument() : null;
     }
@@ -124,6 +186,18 @@ final class HookCheck {
                 || lower(o.twoArgument(), o.oneArgumentClass()) == o.twoArgument()) return null;
         return o.oneArgument().methodName() + " in " + o.oneArgumentClass().getName() + " is below "
                 + o.twoArgument().getName() + "'s hook with maxDistance, which answers every query";
+    }
+
+    /**
+     * The one rule behind every fast path of the lean queries: whether {@code type}'s doubles
+     * forms answer for its course hooks. A user's subclass of a library shape that overrides a
+     * hook loses them, so the render asks its hook, as the course queries do.
+     *
+     * @return true when {@code type} descends from a library class that answers in doubles and
+     *         overrides none of the six hooks below it
+     */
+    static boolean answersInDoubles(Class<?> type) {
+        return ANSWERS_IN_DOUBLES.get(type);
     }
 
     /**

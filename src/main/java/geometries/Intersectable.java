@@ -6,7 +6,6 @@ import java.util.Objects;
 
 import lighting.LightSource;
 import primitives.CourseClassGuard;
-import primitives.LibraryClasses;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
@@ -36,13 +35,15 @@ import primitives.Vector;
  */
 public abstract class Intersectable extends BvhLeaf {
     /**
-     * The library's classes that implement the doubles forms of the lean queries themselves: an
-     * instance of one, or of a user's subclass of one, answers the {@code Ray} forms through them.
-     * Any other class (a user's shape written on {@link Geometry} or {@code Intersectable}) answers
-     * them through its course hook, even when it overrides a doubles form too.
+     * Whether this object's doubles forms of the lean queries answer for its course hooks
+     * ({@link HookCheck#answersInDoubles}): a library shape, or a user's subclass of one that
+     * overrides no hook, answers the {@code Ray} forms and the render through them; any other
+     * (a user's shape written on {@link Geometry}, or a subclass that overrides a hook) through
+     * its course hook. Fixed per class, read once at construction.
      */
-    private static final LibraryClasses ANSWERS_HITS = LibraryClasses.of(Sphere.class, SingleHitGeometry.class,
-            Tube.class, TriangleMesh.class, Geometries.class, Bvh.class);
+    private final boolean answersInDoubles = HookCheck.answersInDoubles(getClass());
+    /** The hook the lean queries ask when the doubles forms do not answer: the lowest a class declares. */
+    private final HookCheck.Hook lowestHook = HookCheck.lowestHook(getClass());
 
     /**
      * A hit point together with the geometry it lies on (the 2023–24 course's hit record). Value
@@ -264,7 +265,7 @@ public abstract class Intersectable extends BvhLeaf {
      * @return the intersections, or null when there are none
      */
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
-        HookCheck.OneArgumentHook oneArgument = HookCheck.oneArgumentHook(getClass());
+        HookCheck.Hook oneArgument = HookCheck.oneArgumentHook(getClass());
         if (oneArgument != null) return oneArgumentHits(oneArgument, ray, maxDistance);
         List<Intersection> found = calculateIntersectionsHelper(ray, maxDistance);
         if (found == null || found.isEmpty()) return null;
@@ -344,7 +345,7 @@ public abstract class Intersectable extends BvhLeaf {
      * the course rule ({@link #within}), as plain {@link GeoPoint}s (the 2023–24 record's value
      * equality; the later years' defaults rewrap them); null when none is in range.
      */
-    private List<GeoPoint> oneArgumentHits(HookCheck.OneArgumentHook hook, Ray ray, double maxDistance) {
+    private List<GeoPoint> oneArgumentHits(HookCheck.Hook hook, Ray ray, double maxDistance) {
         List<? extends GeoPoint> all = switch (hook) {
             case FIND_GEO -> findGeoIntersectionsHelper(ray);
             case CALCULATE -> calculateIntersectionsHelper(ray);
@@ -360,6 +361,24 @@ public abstract class Intersectable extends BvhLeaf {
     }
 
     /**
+     * The hits of the hook this class declares lowest: a 2025–26 student's subclass of a library
+     * shape that overrides {@code calcIntersectionsHelper} is rendered through it, as its
+     * {@code calcIntersections} answers (the library's own hook, {@code findGeo…}, would not be).
+     */
+    private List<? extends GeoPoint> hookHits(Ray ray, double maxDistance) {
+        return switch (lowestHook) {
+            case FIND_GEO -> findGeoIntersectionsHelper(ray, maxDistance);
+            case CALCULATE -> calculateIntersectionsHelper(ray, maxDistance);
+            case CALC -> calcIntersectionsHelper(ray, maxDistance);
+        };
+    }
+
+    /** @return whether the doubles forms answer for this object's course hooks (see the field) */
+    final boolean answersInDoubles() {
+        return answersInDoubles;
+    }
+
+    /**
      * The lean closest-hit query. {@code hit.t} is the current upper bound: a hit nearer than it
      * (and with {@code alignZero(t) > 0}) replaces the record. The library's shapes answer it with
      * {@link #closestHit(Hit)} (the ray loaded into the record); a user's own shape, by default,
@@ -370,8 +389,8 @@ public abstract class Intersectable extends BvhLeaf {
      * @return true when {@code hit} was updated
      */
     public boolean closestHit(Ray ray, Hit hit) {
-        if (ANSWERS_HITS.containsAncestorOf(this)) return closestHit(hit.setRay(ray));
-        List<GeoPoint> list = findGeoIntersectionsHelper(ray, hit.t);
+        if (answersInDoubles) return closestHit(hit.setRay(ray));
+        List<? extends GeoPoint> list = hookHits(ray, hit.t);
         if (list == null) return false;
         boolean found = false;
         Point head = ray.getHead();
@@ -418,8 +437,8 @@ public abstract class Intersectable extends BvhLeaf {
      * @return false when the visitor stopped the walk
      */
     public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
-        if (ANSWERS_HITS.containsAncestorOf(this)) return visitHits(Hit.of(ray), maxDistance, visitor);
-        List<GeoPoint> list = findGeoIntersectionsHelper(ray, maxDistance);
+        if (answersInDoubles) return visitHits(Hit.of(ray), maxDistance, visitor);
+        List<? extends GeoPoint> list = hookHits(ray, maxDistance);
         if (list == null) return true;
         Point head = ray.getHead();
         for (GeoPoint gp : list)

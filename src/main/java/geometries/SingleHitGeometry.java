@@ -18,6 +18,7 @@ abstract class SingleHitGeometry extends Geometry {
 
     @Override
     public boolean closestHit(Hit hit) {
+        if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         double t = distanceTo(hit);
         if (!inRange(t, hit.t)) return false;
         hit.set(t, this, 0);
@@ -26,6 +27,7 @@ abstract class SingleHitGeometry extends Geometry {
 
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         double t = distanceTo(query);
         return !within(t, maxDistance) || visitor.visit(this, t);
     }

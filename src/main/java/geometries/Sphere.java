@@ -108,6 +108,7 @@ public class Sphere extends Geometry {
 
     @Override
     public boolean closestHit(Hit hit) {
+        if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         double t = distance(hit, center.getX(), center.getY(), center.getZ(), radiusSquared);
         if (!inRange(t, hit.t)) return false;
         hit.set(t, this, 0);
@@ -143,6 +144,7 @@ public class Sphere extends Geometry {
 
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         return visitHits(this, query, maxDistance, visitor, center.getX(), center.getY(), center.getZ(), radiusSquared);
     }
 

@@ -222,11 +222,13 @@ public class Tube extends Geometry {
 
     @Override
     public boolean closestHit(Hit hit) {
+        if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         return intersect(hit, 0, null);
     }
 
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         return intersect(query, maxDistance, Objects.requireNonNull(visitor, "visitor"));
     }
 

@@ -31,7 +31,10 @@
  * <p>Invariants the tests hold: the two faces of every shape agree, the same distances bit for bit
  * ({@code HitTest}, {@code RayFormTest}, the contract tests); a tree and the flat list give the same
  * closest hits and the same visits ({@code BvhTest}), and the same tree for any number of build
- * threads; a user's subclass that overrides a course method is asked through it
- * ({@code BvhTest}, {@code HitTest}, {@code LibraryClassesTest}).
+ * threads; a user's subclass that overrides a course method is asked through it, in the course
+ * queries and in the render alike, BVH on and off ({@code HookOverrideRenderTest}, {@code BvhTest},
+ * {@code HitTest}): one cached rule per class, {@code HookCheck.answersInDoubles}, decides whether
+ * a shape's doubles forms may answer for its hooks, and a hook overridden below the library's
+ * class defeats it.
  */
 package geometries;

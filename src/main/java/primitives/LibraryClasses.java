@@ -13,9 +13,9 @@ import java.util.Set;
  *
  * <p>Each package lists its own classes once, as a constant of this type ({@code Geometry} its
  * shapes, {@code Light} its lights), and asks {@link #contains}: the object's class is one of
- * them exactly. {@link #containsAncestorOf} answers the wider question of which implementation
- * an object inherits (a user's subclass of a sphere still answers the sphere's lean queries).
- * You never need it.
+ * them exactly. (Whether a subclass of a library shape may keep the shape's lean queries is the
+ * narrower rule of {@code geometries.HookCheck.answersInDoubles}: only while it overrides no
+ * course hook.) You never need it.
  */
 public final class LibraryClasses {
     private final Set<Class<?>> classes;
@@ -52,15 +52,5 @@ public final class LibraryClasses {
      */
     public boolean contains(Object object) {
         return classes.contains(object.getClass());
-    }
-
-    /**
-     * @param object any object
-     * @return true when the class of {@code object} is one of these classes or a subclass of one
-     */
-    public boolean containsAncestorOf(Object object) {
-        for (Class<?> c = object.getClass(); c != null; c = c.getSuperclass())
-            if (classes.contains(c)) return true;
-        return false;
     }
 }
