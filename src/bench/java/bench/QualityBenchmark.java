@@ -121,7 +121,7 @@ public final class QualityBenchmark {
         return list;
     }
 
-    static final double[] LENS_ADAPTIVE_THRESHOLDS = { 2, 4, 8, 16 };
+    static final double[] LENS_ADAPTIVE_THRESHOLDS = { 2, 4, 6, 8, 12, 16 };
 
     static final int[] ADAPTIVE_DEPTHS = { 2, 3, 4 };
     static final double[] ADAPTIVE_THRESHOLDS = { 2, 4, 6, 8, 12, 16 };

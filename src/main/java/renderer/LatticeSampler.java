@@ -13,8 +13,11 @@ import primitives.Rgb;
  *
  * <p>Pixel (x, y) spans lattice coordinates [x·R, (x+1)·R].
  * <ul>
- * <li>CORNERS: R = 2, the pixel's centre and its four corners, averaged.</li>
- * <li>ADAPTIVE: R = 2^depth. A square (first the pixel) is traced at its four corners only; when
+ * <li>CORNERS: R = 2, the pixel's centre and its four corners, averaged. With a lens, the
+ * corners' lens points are stratified: the corner at pixel corner (i, j) takes its point in
+ * quadrant (i mod 2, j mod 2) of the lens square, so the four corners of every pixel, shared as
+ * they are, cover the four quadrants once each (the centre's point is free).</li>
+ * <li>ADAPTIVE without a lens (with one, {@link NoiseAdaptiveSampler}): R = 2^depth. A square (first the pixel) is traced at its four corners only; when
  * the corners disagree and the depth allows, it is cut into its four quadrants, each treated the
  * same way (which traces the centre and the four edge midpoints, the latter shared with the
  * neighbouring squares); otherwise the square counts as the mean of its corners. A smooth region
@@ -72,7 +75,7 @@ final class LatticeSampler extends PixelSampler {
     /**
      * The most camera rays a pixel takes: CORNERS' five points (the centre and the corners), or
      * ADAPTIVE's whole lattice of (R + 1)² points, every square split down to the deepest level.
-     * With a lens, each point still traces one ray.
+     * With a lens (CORNERS only: ADAPTIVE then samples per pixel), each point traces one ray.
      *
      * @param maxDepth ADAPTIVE's depth, 0..30 (ignored for CORNERS)
      */
@@ -111,6 +114,10 @@ final class LatticeSampler extends PixelSampler {
             if (adaptive) { // jittered within its cell of the lattice: see the class comment
                 double jx = rnd.nextDouble() - 0.5, jy = rnd.nextDouble() - 0.5;
                 c = trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
+            } else if (hasLens() && (gx & 1) == 0 && (gy & 1) == 0) {
+                // A corner: its lens point in the quadrant of the lens square its parity names.
+                double u = (((gx >> 1) & 1) + rnd.nextDouble()) / 2, v = (((gy >> 1) & 1) + rnd.nextDouble()) / 2;
+                c = trace((double) gx / perPixel, (double) gy / perPixel, u, v, ctx);
             } else {
                 c = trace((double) gx / perPixel, (double) gy / perPixel, ctx);
             }
