@@ -13,11 +13,15 @@ import primitives.Rgb;
  *
  * <p>Pixel (x, y) spans lattice coordinates [x·R, (x+1)·R].
  * <ul>
- * <li>CORNERS: R = 2, the pixel's centre and its four corners, averaged. With a lens, the
- * corners' lens points are stratified: the corner at pixel corner (i, j) takes its point in
- * quadrant (i mod 2, j mod 2) of the lens square, so the four corners of every pixel, shared as
- * they are, cover the four quadrants once each (the centre's point is free).</li>
- * <li>ADAPTIVE without a lens (with one, {@link NoiseAdaptiveSampler}): R = 2^depth. A square (first the pixel) is traced at its four corners only; when
+ * <li>CORNERS: R = 2, the pixel's centre and its four corners, averaged. With a lens, each
+ * point takes an independent lens point from its own stream. Stratifying them was tried and is
+ * not kept: a shared corner can only take a stratum fixed by its place in the lattice (the corner
+ * at (i, j) in lens quadrant (i mod 2, j mod 2) covers every pixel's four quadrants), which ties
+ * the lens stratum to the corner's place in the pixel and biases the pixel more than it lowers
+ * its noise: on the showcase with a lens, 32.85 dB against 33.27 (BENCHMARKS.md, depth of
+ * field).</li>
+ * <li>ADAPTIVE without a lens (with one, {@link NoiseAdaptiveSampler}): R = 2^depth. A square
+ * (first the pixel) is traced at its four corners only; when
  * the corners disagree and the depth allows, it is cut into its four quadrants, each treated the
  * same way (which traces the centre and the four edge midpoints, the latter shared with the
  * neighbouring squares); otherwise the square counts as the mean of its corners. A smooth region
@@ -114,10 +118,6 @@ final class LatticeSampler extends PixelSampler {
             if (adaptive) { // jittered within its cell of the lattice: see the class comment
                 double jx = rnd.nextDouble() - 0.5, jy = rnd.nextDouble() - 0.5;
                 c = trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
-            } else if (hasLens() && (gx & 1) == 0 && (gy & 1) == 0) {
-                // A corner: its lens point in the quadrant of the lens square its parity names.
-                double u = (((gx >> 1) & 1) + rnd.nextDouble()) / 2, v = (((gy >> 1) & 1) + rnd.nextDouble()) / 2;
-                c = trace((double) gx / perPixel, (double) gy / perPixel, u, v, ctx);
             } else {
                 c = trace((double) gx / perPixel, (double) gy / perPixel, ctx);
             }

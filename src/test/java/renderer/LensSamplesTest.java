@@ -102,31 +102,6 @@ class LensSamplesTest {
     }
 
     @Nested
-    @DisplayName("CORNERS: the shared corners")
-    class Corners {
-        @Test
-        @DisplayName("the four corners of every pixel take their lens points in the four quadrants of the lens square")
-        void cornersCoverTheQuadrants() {
-            int nX = 3, nY = 2;
-            List<Sample> samples = render(nX, nY, b -> b.setAntiAliasing(AntiAliasing.CORNERS));
-            for (int y = 0; y < nY; ++y)
-                for (int x = 0; x < nX; ++x) {
-                    List<Sample> corners = new ArrayList<>();
-                    for (Sample s : samples)
-                        if (isCornerOf(s, x, y)) corners.add(s);
-                    assertThat(corners).as("corners of pixel (%d,%d)", x, y).hasSize(4);
-                    assertThat(lensCells(corners, 2, 2)).as("quadrants of pixel (%d,%d)", x, y).containsOnly(1);
-                }
-        }
-
-        private static boolean isCornerOf(Sample s, int x, int y) {
-            double cx = Math.rint(s.px), cy = Math.rint(s.py);
-            return Math.abs(s.px - cx) < 1e-6 && Math.abs(s.py - cy) < 1e-6 && (cx == x || cx == x + 1)
-                    && (cy == y || cy == y + 1);
-        }
-    }
-
-    @Nested
     @DisplayName("ADAPTIVE: a pixel's own samples")
     class Adaptive {
         @Test
