@@ -5,11 +5,16 @@ import primitives.Rgb;
 /**
  * A sampling strategy: the colour of one pixel from as many camera samples as it chooses. For
  * each sample it chooses a film point (in pixels from the image's top-left corner) and, with a
- * lens, a lens point drawn from the sample's stream; the view makes the ray and the tracer
- * colours it. One instance per worker thread (it may keep scratch state); the render loop calls
+ * lens, a lens point (drawn from the sample's stream, or stratified over the pixel's samples by
+ * {@link SobolPoints}); the view makes the ray and the tracer colours it. One instance per worker thread (it may keep scratch state); the render loop calls
  * {@link #beginTile} before the pixels of each tile.
  */
 abstract class PixelSampler {
+    /**
+     * The stream index that keys a pixel's own numbers (its {@link SobolPoints} seeds), apart from
+     * its samples' streams (indices 0, 1, …) and from the lattice points' (index −R, R ≥ 2).
+     */
+    static final int PIXEL_KEY = -1;
     /** The render's seed: every sample's stream is keyed by it, the pixel and the sample index. */
     final long seed;
     private final View.CameraRays rays;
@@ -61,12 +66,6 @@ abstract class PixelSampler {
     final boolean hasLens() {
         return lens;
     }
-
-    /**
-     * The stream index that keys a pixel's own numbers (its {@link SobolPoints} seeds), apart from
-     * its samples' streams (indices 0, 1, …) and from the lattice points' (index −R, R ≥ 2).
-     */
-    static final int PIXEL_KEY = -1;
 
     /**
      * The pixel's scramble seeds: two independent 32-bit numbers from the stream of (seed, x, y,
