@@ -1,9 +1,11 @@
 package renderer;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.offset;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.function.UnaryOperator;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
@@ -18,11 +20,12 @@ import primitives.Vector;
 import scene.Scene;
 
 /**
- * The lens points the samplers take with depth of field: stratified over the lens, not
- * independent. A recording tracer sees every camera ray; the test camera ({@link TestScenes#camera})
- * stands at (0, 0, 10) looking down −z, so a ray's head is its lens point, (x, y) = aperture ·
- * √u · (cos 2πv, sin 2πv), and with focal distance 10 it crosses the plane z = 0 at the film point
- * it was aimed through, 0.1 units a pixel.
+ * The lens points NONE and ADAPTIVE take with depth of field: stratified over the lens, not
+ * independent (CORNERS keeps independent ones: see {@link LatticeSampler}). A recording tracer
+ * sees every camera ray; the test camera ({@link TestScenes#camera}) stands at (0, 0, 10) looking
+ * down −z, so a ray's head is its lens point, (x, y) = aperture · √u · (cos 2πv, sin 2πv), and
+ * with focal distance 10 it crosses the plane z = 0 at the film point it was aimed through, 0.1
+ * units a pixel.
  */
 class LensSamplesTest {
     private static final double APERTURE = 0.5, FOCAL = 10;
@@ -56,7 +59,7 @@ class LensSamplesTest {
         }
     }
 
-    private static List<Sample> render(int nX, int nY, java.util.function.UnaryOperator<Camera.Builder> mode) {
+    private static List<Sample> render(int nX, int nY, UnaryOperator<Camera.Builder> mode) {
         Recorder recorder = new Recorder(nX, nY);
         mode.apply(TestScenes.camera(new Scene("empty"), new ImageWriter("lens", nX, nY))).setRayTracer(recorder)
                 .setDepthOfField(FOCAL, APERTURE).build().render();
@@ -87,8 +90,8 @@ class LensSamplesTest {
         @DisplayName("all go through the pixel centre")
         void throughTheCentre() {
             for (Sample s : render(1, 1, b -> b.setDepthOfFieldSamples(16))) {
-                assertThat(s.px).isCloseTo(0.5, org.assertj.core.data.Offset.offset(1e-9));
-                assertThat(s.py).isCloseTo(0.5, org.assertj.core.data.Offset.offset(1e-9));
+                assertThat(s.px).isCloseTo(0.5, offset(1e-9));
+                assertThat(s.py).isCloseTo(0.5, offset(1e-9));
             }
         }
 
