@@ -68,13 +68,25 @@ public final class QualityBenchmark {
     private record SceneSpec(String key, Supplier<Scene> scene, Function<Scene, Camera.Builder> camera) {
     }
 
+    /**
+     * The depth-of-field panel's lens: focal distance 900 (the showcase's centre, 906 from the
+     * camera, stays sharp), aperture radius 12 (the floor in front and the back wall blur over
+     * several pixels at 200×200); the scene file's {@code <depth-of-field focal-distance="900"
+     * aperture="12"/>}.
+     */
+    static final double DOF_FOCAL_DISTANCE = 900, DOF_APERTURE = 12;
+
     private static final List<SceneSpec> SCENES = List.of(
             new SceneSpec("showcase", Showcase::create, Configurations::showcaseCamera),
+            // Its reference is RANDOM 16×16 with the same lens: 256 camera rays per pixel, each its own lens point.
+            new SceneSpec("showcase-dof", Showcase::create,
+                    s -> Configurations.showcaseCamera(s).setDepthOfField(DOF_FOCAL_DISTANCE, DOF_APERTURE)),
             new SceneSpec("glossy", GlossyScene::create, s -> GlossyScene.camera().setRayTracer(new RayTracerBasic(s))),
             new SceneSpec("teapot", TeapotScene::create, s -> TeapotScene.camera().setRayTracer(new RayTracerBasic(s))));
 
     /** The settings measured on every scene, in plot-line order. */
     static List<QualityCase> cases(String scene) {
+        if (scene.endsWith("-dof")) return lensCases(scene);
         List<QualityCase> list = new ArrayList<>();
         list.add(new QualityCase(scene, "NONE", "NONE", b -> b.setAntiAliasing(AntiAliasing.NONE)));
         list.add(new QualityCase(scene, "CORNERS", "CORNERS", b -> b.setAntiAliasing(AntiAliasing.CORNERS)));
@@ -89,13 +101,35 @@ public final class QualityBenchmark {
         return list;
     }
 
+    /**
+     * The settings measured with a lens: NONE's lens samples (the default 16 among them), CORNERS,
+     * RANDOM's grids (each sample its own lens point) and ADAPTIVE at depth 3 (its default) over
+     * the thresholds, then its defaults.
+     */
+    static List<QualityCase> lensCases(String scene) {
+        List<QualityCase> list = new ArrayList<>();
+        for (int n : new int[] { 4, 8, 16, 32, 64 })
+            list.add(new QualityCase(scene, "NONE + lens", "NONE, " + n + " lens samples",
+                    b -> b.setAntiAliasing(AntiAliasing.NONE).setDepthOfFieldSamples(n)));
+        list.add(new QualityCase(scene, "CORNERS", "CORNERS", b -> b.setAntiAliasing(AntiAliasing.CORNERS)));
+        for (int n : new int[] { 2, 3, 4, 6, 8 })
+            list.add(new QualityCase(scene, "RANDOM", "RANDOM " + n + "×" + n, b -> b.setAntiAliasing(AntiAliasing.RANDOM, n, n)));
+        for (double t : LENS_ADAPTIVE_THRESHOLDS)
+            list.add(new QualityCase(scene, "ADAPTIVE depth 3", "ADAPTIVE depth 3, threshold " + fmt(t),
+                    b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(3, t)));
+        list.add(new QualityCase(scene, "ADAPTIVE default", "ADAPTIVE (defaults)", b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE)));
+        return list;
+    }
+
+    static final double[] LENS_ADAPTIVE_THRESHOLDS = { 2, 4, 6, 8, 12, 16 };
+
     static final int[] ADAPTIVE_DEPTHS = { 2, 3, 4 };
     static final double[] ADAPTIVE_THRESHOLDS = { 2, 4, 6, 8, 12, 16 };
 
     public static void main(String[] args) throws IOException {
         int side = 300, threads = 2;
         boolean fresh = false, images = false;
-        Set<String> only = Set.of("showcase", "glossy", "teapot");
+        Set<String> only = Set.of("showcase", "glossy", "teapot", "showcase-dof");
         Path plot = Path.of("docs", "quality-plot.png");
         Path out = null;
         Pattern match = null;
@@ -112,7 +146,7 @@ public final class QualityBenchmark {
                 case "--quick" -> side = 60;
                 default -> {
                     System.err.println("bench.QualityBenchmark: unknown option " + args[i]
-                            + " (options: --side N --threads N --only a,b --match REGEX --plot FILE --out FILE --fresh --images --quick)");
+                            + " (options: --side N --threads N --only a,b (showcase, glossy, teapot, showcase-dof) --match REGEX --plot FILE --out FILE --fresh --images --quick)");
                     System.exit(2);
                 }
             }

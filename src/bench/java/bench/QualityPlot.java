@@ -22,6 +22,13 @@ final class QualityPlot {
     private static final double Y_MIN = 20, Y_MAX = 65; // dB
     private static final Color[] PALETTE = { new Color(0x444444), new Color(0x8c564b), new Color(0x1f77b4),
             new Color(0x2ca02c), new Color(0xff7f0e), new Color(0xd62728), new Color(0x9467bd), new Color(0x17becf) };
+    /**
+     * Each mode's colour, the same in every panel (NONE with a lens is NONE's line); a mode not
+     * named here takes the palette's next colour.
+     */
+    private static final Map<String, Color> COLOURS = Map.of("NONE", PALETTE[0], "NONE + lens", PALETTE[0],
+            "CORNERS", PALETTE[1], "RANDOM", PALETTE[2], "ADAPTIVE depth 2", PALETTE[3], "ADAPTIVE depth 3", PALETTE[4],
+            "ADAPTIVE depth 4", PALETTE[5], "ADAPTIVE default", PALETTE[6]);
 
     private QualityPlot() {
     }
@@ -49,7 +56,9 @@ final class QualityPlot {
         int left = x0 + MARGIN_L, right = x0 + PANEL_W - MARGIN_R, top = MARGIN_T, bottom = PANEL_H - MARGIN_B;
         g.setColor(Color.BLACK);
         g.setFont(new Font(Font.SANS_SERIF, Font.BOLD, 13));
-        g.drawString(scene, left, 20);
+        g.drawString(scene.endsWith("-dof") ? scene.substring(0, scene.length() - 4) + " with depth of field (focal "
+                + QualityBenchmark.fmt(QualityBenchmark.DOF_FOCAL_DISTANCE) + ", aperture "
+                + QualityBenchmark.fmt(QualityBenchmark.DOF_APERTURE) + ")" : scene, left, 20);
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
         // Grid and axes.
         for (double x = 1; x <= X_MAX; x *= 2) {
@@ -78,7 +87,8 @@ final class QualityPlot {
         // The legend in the lower right corner, where few points fall (many rays, low PSNR).
         int k = 0, legendY = bottom - 6 - 14 * (lines.size() - 1);
         for (Map.Entry<String, List<QualityResult>> line : lines.entrySet()) {
-            Color colour = PALETTE[k++ % PALETTE.length];
+            Color colour = COLOURS.getOrDefault(line.getKey(), PALETTE[(COLOURS.size() + k) % PALETTE.length]);
+            ++k;
             g.setColor(colour);
             g.setStroke(new BasicStroke(1.8f));
             List<QualityResult> pts = new ArrayList<>(line.getValue());

@@ -42,10 +42,10 @@ public final class CourseClassGuard {
             "scene.Scene",
             "renderer.AntiAliasing", "renderer.CallingTest", "renderer.Camera", "renderer.CenterSampler",
             "renderer.Execution", "renderer.GridSampler", "renderer.ImageWriter", "renderer.InFlightFile", "renderer.LatticeSampler",
-            "renderer.PixelSampler", "renderer.Progress", "renderer.RayBudget", "renderer.RayTracerBase", "renderer.RayTracerBasic",
+            "renderer.NoiseAdaptiveSampler", "renderer.PixelSampler", "renderer.Progress", "renderer.RayBudget", "renderer.RayTracerBase", "renderer.RayTracerBasic",
             "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
             "renderer.RenderStats", "renderer.SampleStream", "renderer.Sampling", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
-            "renderer.TraceContext", "renderer.Transmittance", "renderer.View", "renderer.WhittedShader",
+            "renderer.SobolPoints", "renderer.TraceContext", "renderer.Transmittance", "renderer.View", "renderer.WhittedShader",
             "renderer.WriteListener");
 
     private CourseClassGuard() {

@@ -13,8 +13,15 @@ import primitives.Rgb;
  *
  * <p>Pixel (x, y) spans lattice coordinates [x·R, (x+1)·R].
  * <ul>
- * <li>CORNERS: R = 2, the pixel's centre and its four corners, averaged.</li>
- * <li>ADAPTIVE: R = 2^depth. A square (first the pixel) is traced at its four corners only; when
+ * <li>CORNERS: R = 2, the pixel's centre and its four corners, averaged. With a lens, each
+ * point takes an independent lens point from its own stream. Stratifying them was tried and is
+ * not kept: a shared corner can only take a stratum fixed by its place in the lattice (the corner
+ * at (i, j) in lens quadrant (i mod 2, j mod 2) covers every pixel's four quadrants), which ties
+ * the lens stratum to the corner's place in the pixel and biases the pixel more than it lowers
+ * its noise: on the showcase with a lens, 32.85 dB against 33.27 (BENCHMARKS.md, depth of
+ * field).</li>
+ * <li>ADAPTIVE without a lens (with one, {@link NoiseAdaptiveSampler}): R = 2^depth. A square
+ * (first the pixel) is traced at its four corners only; when
  * the corners disagree and the depth allows, it is cut into its four quadrants, each treated the
  * same way (which traces the centre and the four edge midpoints, the latter shared with the
  * neighbouring squares); otherwise the square counts as the mean of its corners. A smooth region
@@ -72,7 +79,7 @@ final class LatticeSampler extends PixelSampler {
     /**
      * The most camera rays a pixel takes: CORNERS' five points (the centre and the corners), or
      * ADAPTIVE's whole lattice of (R + 1)² points, every square split down to the deepest level.
-     * With a lens, each point still traces one ray.
+     * With a lens (CORNERS only: ADAPTIVE then samples per pixel), each point traces one ray.
      *
      * @param maxDepth ADAPTIVE's depth, 0..30 (ignored for CORNERS)
      */

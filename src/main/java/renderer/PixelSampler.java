@@ -5,11 +5,16 @@ import primitives.Rgb;
 /**
  * A sampling strategy: the colour of one pixel from as many camera samples as it chooses. For
  * each sample it chooses a film point (in pixels from the image's top-left corner) and, with a
- * lens, a lens point drawn from the sample's stream; the view makes the ray and the tracer
- * colours it. One instance per worker thread (it may keep scratch state); the render loop calls
+ * lens, a lens point (drawn from the sample's stream, or stratified over the pixel's samples by
+ * {@link SobolPoints}); the view makes the ray and the tracer colours it. One instance per worker thread (it may keep scratch state); the render loop calls
  * {@link #beginTile} before the pixels of each tile.
  */
 abstract class PixelSampler {
+    /**
+     * The stream index that keys a pixel's own numbers (its {@link SobolPoints} seeds), apart from
+     * its samples' streams (indices 0, 1, …) and from the lattice points' (index −R, R ≥ 2).
+     */
+    static final int PIXEL_KEY = -1;
     /** The render's seed: every sample's stream is keyed by it, the pixel and the sample index. */
     final long seed;
     private final View.CameraRays rays;
@@ -38,13 +43,35 @@ abstract class PixelSampler {
      * caller has positioned for this sample; the tracer's own numbers follow them.
      */
     final Rgb trace(double px, double py, TraceContext ctx) {
-        ctx.cameraRays++;
         double u = 0, v = 0;
         if (lens) {
             u = ctx.random.nextDouble();
             v = ctx.random.nextDouble();
         }
+        return trace(px, py, u, v, ctx);
+    }
+
+    /**
+     * Traces one camera sample through film point (px, py) and lens point (u, v) of the unit
+     * square (ignored by a pinhole), chosen by the caller (stratified: {@link SobolPoints}). The
+     * tracer draws its own numbers from {@code ctx.random} as positioned by the caller.
+     */
+    final Rgb trace(double px, double py, double u, double v, TraceContext ctx) {
+        ctx.cameraRays++;
         rays.generate(px, py, u, v, ctx);
         return tracer.traceRay(ctx);
+    }
+
+    /** @return whether each camera sample takes a lens point (the view has an aperture) */
+    final boolean hasLens() {
+        return lens;
+    }
+
+    /**
+     * The pixel's scramble seeds: two independent 32-bit numbers from the stream of (seed, x, y,
+     * {@link #PIXEL_KEY}), as one long (film points: its high half, lens points: its low half).
+     */
+    final long pixelSeeds(int x, int y, TraceContext ctx) {
+        return ctx.random.reset(seed, x, y, PIXEL_KEY).nextLong();
     }
 }

@@ -24,14 +24,16 @@ public final class RayBudget {
      * camera's own figure, {@code Sampling.maxSamplesPerPixel}): RANDOM's grid (columns × rows),
      * ADAPTIVE's whole lattice of (2^depth + 1)² points (the worst case: every square split down
      * to the deepest level; the lattice of pixel x spans points x·2^depth … (x+1)·2^depth on each
-     * axis), CORNERS' five points, or without anti-aliasing the lens samples with depth of field
-     * and 1 without.
+     * axis), or with depth of field its 4^depth samples (a pixel whose noise never settles),
+     * CORNERS' five points, or without anti-aliasing the lens samples with depth of field and 1
+     * without.
      *
      * @param mode          the anti-aliasing mode
      * @param columns       RANDOM: grid columns
      * @param rows          RANDOM: grid rows
      * @param adaptiveDepth ADAPTIVE: the deepest subdivision (negative counts as 0, above 30 as 30)
-     * @param depthOfField  whether the camera has a lens (aperture above 0)
+     * @param depthOfField  whether the camera has a lens (aperture above 0): NONE's lens samples,
+     *                      ADAPTIVE's per-pixel sampling
      * @param lensSamples   NONE with depth of field: lens samples per pixel
      * @return camera rays per pixel, as a long (a grid of two ints may overflow an int)
      */
@@ -39,7 +41,10 @@ public final class RayBudget {
                                           boolean depthOfField, int lensSamples) {
         return switch (mode) {
             case RANDOM -> GridSampler.samplesPerPixel(columns, rows);
-            case ADAPTIVE -> LatticeSampler.maxSamplesPerPixel(true, Math.min(Math.max(adaptiveDepth, 0), 30));
+            case ADAPTIVE -> {
+                int depth = Math.min(Math.max(adaptiveDepth, 0), 30);
+                yield depthOfField ? NoiseAdaptiveSampler.maxSamplesPerPixel(depth) : LatticeSampler.maxSamplesPerPixel(true, depth);
+            }
             case CORNERS -> LatticeSampler.maxSamplesPerPixel(false, 0);
             case NONE -> CenterSampler.samplesPerPixel(depthOfField, lensSamples);
         };

@@ -53,11 +53,13 @@ record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, int len
     }
 
     /**
-     * ADAPTIVE's settings (see {@link LatticeSampler}).
+     * ADAPTIVE's settings (see {@link LatticeSampler}, and with a lens {@link NoiseAdaptiveSampler}).
      *
-     * @param depth     the deepest subdivision, 1..6: sub-pixels down to 1/2^depth of the pixel side
+     * @param depth     the deepest subdivision, 1..6: sub-pixels down to 1/2^depth of the pixel
+     *                  side; with a lens, at most 4^depth samples a pixel
      * @param threshold the pixel-level corner spread that subdivides, on the 0..255 scale, finite
-     *                  and ≥ 0 (0 always subdivides)
+     *                  and ≥ 0 (0 always subdivides); with a lens, the estimated standard error of
+     *                  its mean at which a pixel stops
      */
     record Adaptive(int depth, double threshold) {
         /** @throws IllegalArgumentException when either is out of range, naming it */
@@ -81,7 +83,8 @@ record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, int len
      * The most camera rays one pixel may take, by the rule of the sampler that spends them: the
      * worst case, which a test holds equal to the rays a worst-case pixel traces.
      *
-     * @param depthOfField whether the view has a lens (its samples count only without anti-aliasing)
+     * @param depthOfField whether the view has a lens (NONE then takes the lens samples, and
+     *                     ADAPTIVE samples each pixel on its own, {@link NoiseAdaptiveSampler})
      * @return camera rays per pixel, as a long (a grid of two ints may overflow an int)
      */
     long maxSamplesPerPixel(boolean depthOfField) {
@@ -89,7 +92,8 @@ record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, int len
             case NONE -> CenterSampler.samplesPerPixel(depthOfField, lensSamples);
             case RANDOM -> GridSampler.samplesPerPixel(grid.columns, grid.rows);
             case CORNERS -> LatticeSampler.maxSamplesPerPixel(false, 0);
-            case ADAPTIVE -> LatticeSampler.maxSamplesPerPixel(true, adaptive.depth);
+            case ADAPTIVE -> depthOfField ? NoiseAdaptiveSampler.maxSamplesPerPixel(adaptive.depth)
+                    : LatticeSampler.maxSamplesPerPixel(true, adaptive.depth);
         };
     }
 
@@ -124,7 +128,9 @@ record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, int len
         return switch (antiAliasing) {
             case NONE -> new CenterSampler(this, rays, tracer);
             case RANDOM -> new GridSampler(this, rays, tracer);
-            case CORNERS, ADAPTIVE -> new LatticeSampler(this, rays, tracer, tileSize);
+            case CORNERS -> new LatticeSampler(this, rays, tracer, tileSize);
+            case ADAPTIVE -> rays.hasLens() ? new NoiseAdaptiveSampler(this, rays, tracer)
+                    : new LatticeSampler(this, rays, tracer, tileSize);
         };
     }
 

@@ -23,8 +23,10 @@
  * <li>The loop: {@code RenderLoop(View, Sampling, Execution, tracer, image)} cuts the image into
  * tiles that workers claim; each worker asks the tracer for its {@code TraceContext} (its scratch
  * state, never shared) and the sampling for a {@code PixelSampler} ({@code CenterSampler},
- * {@code GridSampler}, {@code LatticeSampler}), which positions the {@code SampleStream} of each
- * sample, draws film and lens coordinates and gets the sample's colour back as the return value.
+ * {@code GridSampler}, {@code LatticeSampler}, and for ADAPTIVE with a lens
+ * {@code NoiseAdaptiveSampler}), which positions the {@code SampleStream} of each sample, draws
+ * film and lens coordinates (stratified ones from {@code SobolPoints}, under seeds keyed by the
+ * pixel) and gets the sample's colour back as the return value.
  * {@code RegionRenderer} renders rectangles of an image for a distributed render;
  * {@code Progress} prints the progress lines; {@code SceneStamp} notices a scene changed during a
  * render.</li>

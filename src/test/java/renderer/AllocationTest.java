@@ -67,9 +67,14 @@ class AllocationTest {
 
     /** Bytes the calling thread allocates per traced ray, at the margin between a 24×16 and a 72×48 render. */
     private static double bytesPerRay(Supplier<Scene> scene, AntiAliasing mode) {
-        render(scene.get(), mode, 12, 8); // loads and initialises every class on the path first
-        long[] small = render(scene.get(), mode, 24, 16);
-        long[] large = render(scene.get(), mode, 72, 48);
+        return bytesPerRay(scene, mode, false);
+    }
+
+    /** The same, with a lens when {@code lens} (each mode's depth-of-field sampler). */
+    private static double bytesPerRay(Supplier<Scene> scene, AntiAliasing mode, boolean lens) {
+        render(scene.get(), mode, lens, 12, 8); // loads and initialises every class on the path first
+        long[] small = render(scene.get(), mode, lens, 24, 16);
+        long[] large = render(scene.get(), mode, lens, 72, 48);
         // The larger image sees a larger part of the scene (the view plane grows with it): 9 times
         // the pixels, at least 3 times the rays whatever the sampling decides.
         assertThat(large[1]).as("rays of the larger render").isGreaterThan(small[1] * 3);
@@ -77,9 +82,11 @@ class AllocationTest {
     }
 
     /** @return {bytes allocated by the render, rays traced} */
-    private static long[] render(Scene scene, AntiAliasing mode, int nx, int ny) {
-        Camera camera = TestScenes.camera(scene, new ImageWriter("allocation", nx, ny)).setAntiAliasing(mode)
-                .setMultithreading(0).build();
+    private static long[] render(Scene scene, AntiAliasing mode, boolean lens, int nx, int ny) {
+        Camera.Builder builder = TestScenes.camera(scene, new ImageWriter("allocation", nx, ny)).setAntiAliasing(mode)
+                .setMultithreading(0);
+        if (lens) builder.setDepthOfField(10, 0.2).setDepthOfFieldSamples(4);
+        Camera camera = builder.build();
         long before = THREADS.getCurrentThreadAllocatedBytes();
         RenderStats stats = camera.render();
         long after = THREADS.getCurrentThreadAllocatedBytes();
@@ -92,6 +99,15 @@ class AllocationTest {
         assumeTrue(THREADS != null, "this JVM counts no per-thread allocation");
         for (AntiAliasing mode : List.of(AntiAliasing.NONE, AntiAliasing.ADAPTIVE))
             assertThat(bytesPerRay(AllocationTest::everyShape, mode)).as("%s", mode).isLessThanOrEqualTo(BOUND);
+    }
+
+    @Test
+    @DisplayName("at most 16 bytes per ray with depth of field: stratified lens points for NONE, CORNERS and ADAPTIVE")
+    void lensSamplersAllocateNothingPerRay() {
+        assumeTrue(THREADS != null, "this JVM counts no per-thread allocation");
+        for (AntiAliasing mode : List.of(AntiAliasing.NONE, AntiAliasing.CORNERS, AntiAliasing.ADAPTIVE))
+            assertThat(bytesPerRay(AllocationTest::everyShape, mode, true)).as("%s with a lens", mode)
+                    .isLessThanOrEqualTo(BOUND);
     }
 
     /** A shape written as a course student would: only the list hook, answered with new objects. */

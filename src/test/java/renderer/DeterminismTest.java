@@ -39,7 +39,11 @@ class DeterminismTest {
                 mode("ADAPTIVE depth 2", b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(2, 8)),
                 mode("NONE + depth of field", b -> b.setDepthOfField(10, 0.2).setDepthOfFieldSamples(4)),
                 mode("RANDOM 2x2 + depth of field", b -> b.setAntiAliasing(AntiAliasing.RANDOM, 2, 2)
-                        .setDepthOfField(11, 0.3)));
+                        .setDepthOfField(11, 0.3)),
+                mode("CORNERS + depth of field", b -> b.setAntiAliasing(AntiAliasing.CORNERS).setDepthOfField(10, 0.2)),
+                // Threshold 2: pixels stop after 8, 16, ... samples, so the stopping rule is exercised.
+                mode("ADAPTIVE + depth of field", b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(2, 2)
+                        .setDepthOfField(10, 0.2)));
     }
 
     private static int[] render(UnaryOperator<Camera.Builder> mode, int threads, long seed) {

@@ -29,7 +29,11 @@ class RegionRendererTest {
                 Arguments.of("ADAPTIVE depth 2", (UnaryOperator<Camera.Builder>) b -> b
                         .setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(2, 8)),
                 Arguments.of("depth of field", (UnaryOperator<Camera.Builder>) b -> b.setDepthOfField(10, 0.2)
-                        .setDepthOfFieldSamples(3)));
+                        .setDepthOfFieldSamples(3)),
+                Arguments.of("CORNERS + depth of field", (UnaryOperator<Camera.Builder>) b -> b
+                        .setAntiAliasing(AntiAliasing.CORNERS).setDepthOfField(10, 0.2)),
+                Arguments.of("ADAPTIVE + depth of field", (UnaryOperator<Camera.Builder>) b -> b
+                        .setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(2, 2).setDepthOfField(10, 0.2)));
     }
 
     private static Camera camera(UnaryOperator<Camera.Builder> mode, ImageWriter image, int threads) {

@@ -90,6 +90,14 @@ class SamplingTest {
             assertThat(onePixel().setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(3, 8).build().sampling()
                     .maxSamplesPerPixel(false)).isEqualTo(81);
         }
+
+        @Test
+        @DisplayName("ADAPTIVE depth 3 with a lens takes at most 64 camera rays a pixel, 4^3")
+        void adaptiveLensFigure() {
+            assertThat(onePixel().setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(3, 8).build().sampling()
+                    .maxSamplesPerPixel(true)).isEqualTo(64);
+            assertThat(RayBudget.cameraRaysPerPixel(AntiAliasing.ADAPTIVE, 1, 1, 3, true, 16)).isEqualTo(64);
+        }
     }
 
     @Nested

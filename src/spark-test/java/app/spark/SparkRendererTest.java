@@ -97,6 +97,9 @@ class SparkRendererTest {
                         .withAntiAliasing(AntiAliasing.ADAPTIVE).withAntiAliasingParameters(4, 4, 4, 4)),
                 Arguments.of("depth of field", SHOWCASE, (UnaryOperator<RenderSettings>) s -> s
                         .withAntiAliasing(AntiAliasing.NONE).withDepthOfField(900, 8, 3)),
+                Arguments.of("ADAPTIVE + depth of field", SHOWCASE, (UnaryOperator<RenderSettings>) s -> s
+                        .withAntiAliasing(AntiAliasing.ADAPTIVE).withAntiAliasingParameters(4, 4, 2, 4)
+                        .withDepthOfField(900, 8)),
                 Arguments.of("glossy wall, RANDOM 2x2, seed 7", GLOSSY, (UnaryOperator<RenderSettings>) s -> s
                         .withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingParameters(2, 2, 3, 8).withSeed(7)),
                 Arguments.of("OBJ mesh (teapot), grid", TEAPOT, (UnaryOperator<RenderSettings>) s -> s
