@@ -245,9 +245,14 @@ public class TriangleMesh extends Geometry {
                 p[c] - ax, p[c + 1] - ay, p[c + 2] - az);
     }
 
+    /**
+     * Its triangles; one, the whole mesh, for a subclass that overrides a course hook: the tree
+     * then asks it as one leaf, and its queries ask the hook once per ray (a triangle at a time,
+     * each of its hits would be visited again for every triangle a shadow ray reaches).
+     */
     @Override
     int primitiveCount() {
-        return triangleCount();
+        return answersInDoubles() ? triangleCount() : 1;
     }
 
     /**
@@ -291,6 +296,7 @@ public class TriangleMesh extends Geometry {
 
     @Override
     boolean closestHit(int prim, Hit hit) {
+        if (!answersInDoubles()) return closestHit(hit); // the whole mesh, one leaf (see primitiveCount)
         double t = intersect(prim, hit);
         if (!inRange(t, hit.t)) return false;
         hit.set(t, this, prim);
@@ -299,6 +305,7 @@ public class TriangleMesh extends Geometry {
 
     @Override
     boolean visitHits(int prim, Hit query, double maxDistance, HitVisitor visitor) {
+        if (!answersInDoubles()) return visitHits(query, maxDistance, visitor);
         double t = intersect(prim, query);
         return !within(t, maxDistance) || visitor.visit(this, t);
     }
@@ -311,6 +318,7 @@ public class TriangleMesh extends Geometry {
     /** Tests the triangles in index order, as a list of the same {@link Triangle}s would be. */
     @Override
     public boolean closestHit(Hit hit) {
+        if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         if (!mayHit(hit, hit.t)) return false;
         boolean found = false;
         for (int k = 0, n = triangleCount(); k < n; ++k) found |= closestHit(k, hit);
@@ -319,6 +327,7 @@ public class TriangleMesh extends Geometry {
 
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         if (!mayHit(query, Double.POSITIVE_INFINITY)) return true;
         for (int k = 0, n = triangleCount(); k < n; ++k)
             if (!visitHits(k, query, maxDistance, visitor)) return false;

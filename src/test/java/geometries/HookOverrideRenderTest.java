@@ -30,6 +30,9 @@ class HookOverrideRenderTest {
     private static final Point EYE = new Point(0, 0, 100);
     private static final Color BACKGROUND = new Color(5, 5, 5);
     private static final int N = 12;
+    /** A square of two triangles at z = 0, 20 wide: a mesh's positions and indices. */
+    private static final double[] SQUARE = { -10, -10, 0, 10, -10, 0, 10, 10, 0, -10, 10, 0 };
+    private static final int[] TWO = { 0, 1, 2, 0, 2, 3 };
 
     /** A subclass whose 2023–24 hook answers nothing: the course query says no hit, so must the render. */
     private static Stream<Arguments> shapes() {
@@ -90,6 +93,17 @@ class HookOverrideRenderTest {
                     @Override
                     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
                         return super.findGeoIntersectionsHelper(ray, maxDistance);
+                    }
+                }),
+                Arguments.of("mesh", new TriangleMesh(SQUARE, TWO), new TriangleMesh(SQUARE, TWO) {
+                    @Override
+                    protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+                        return null;
+                    }
+                }, new TriangleMesh(SQUARE, TWO) {
+                    @Override
+                    protected List<Intersection> calcIntersectionsHelper(Ray ray, double maxDistance) {
+                        return super.calcIntersectionsHelper(ray, maxDistance);
                     }
                 }),
                 Arguments.of("cylinder", new Cylinder(5, xAxis, 20), new Cylinder(5, xAxis, 20) {
