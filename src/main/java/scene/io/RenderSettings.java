@@ -481,7 +481,20 @@ public final class RenderSettings implements java.io.Serializable {
      *                                  with the library's message naming the factors
      */
     public RenderSettings requireRayBudget() {
-        applyTo(Camera.getBuilder(), new Scene("ray budget"), new ImageWriter(1, 1)).requireRayBudget();
+        return requireRayBudget(new Scene("ray budget"));
+    }
+
+    /**
+     * Checks this specification against the library's ray budget for {@code scene}'s lights (a
+     * light with a radius takes the shadow samples at each shaded point, every other light one
+     * ray), as {@code Camera.Builder.build()} will for a camera over that scene.
+     *
+     * @param scene the scene the settings will render: only its lights are read
+     * @return this specification
+     * @throws IllegalArgumentException as {@link #requireRayBudget()}, with the lights among the factors
+     */
+    public RenderSettings requireRayBudget(Scene scene) {
+        applyTo(Camera.getBuilder(), scene, new ImageWriter(1, 1)).requireRayBudget();
         return this;
     }
 

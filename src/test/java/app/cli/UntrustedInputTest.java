@@ -67,6 +67,9 @@ class UntrustedInputTest {
         return run(scene.toString(), "-o", dir.resolve("out.png").toString());
     }
 
+    /** A light with a radius, written after the element under test so that its columns stay put. */
+    private static final String SOFT_LIGHT = "<lights><point-light color=\"100 100 100\" position=\"0 5 0\" radius=\"1\"/></lights>";
+
     static Stream<Arguments> badValues() {
         return Stream.of(
                 Arguments.of("an attenuation of nothing: kc 0 and no kl, kq", "<lights><point-light color=\"100 100 100\""
@@ -87,14 +90,17 @@ class UntrustedInputTest {
                         "no ray through the view plane"),
                 Arguments.of("a 65536x65536 grid", "<render><anti-aliasing mode=\"random\" grid=\"65536 65536\"/></render>",
                         "2:38", "has 4294967296 samples per pixel, more than the limit of 65536"),
-                Arguments.of("adaptive depth 6 × beams of 256 × 16 shadow samples",
-                        "<render beam-size=\"256\"><anti-aliasing mode=\"adaptive\" depth=\"6\"/></render>", "2:56",
+                Arguments.of("adaptive depth 6 × beams of 256 × 16 shadow samples of a soft light",
+                        "<render beam-size=\"256\"><anti-aliasing mode=\"adaptive\" depth=\"6\"/></render>" + SOFT_LIGHT, "2:56",
                         "more than the limit of 16777216"),
                 Arguments.of("65536 lens samples", "<render><depth-of-field focal-distance=\"10\" aperture=\"1\""
                         + " samples=\"65537\"/></render>", "2:58", "depth-of-field samples must be from 1 to 65536"),
-                Arguments.of("lens samples × beams × shadow samples", "<render beam-size=\"100\"><depth-of-field"
-                        + " focal-distance=\"10\" aperture=\"1\" samples=\"60000\"/></render>", "2:74",
+                Arguments.of("lens samples × beams × shadow samples of a soft light", "<render beam-size=\"100\"><depth-of-field"
+                        + " focal-distance=\"10\" aperture=\"1\" samples=\"60000\"/></render>" + SOFT_LIGHT, "2:74",
                         "more than the limit of 16777216"),
+                Arguments.of("beams of 2048 × 4096 shadow samples of one soft light", "<render beam-size=\"2048\""
+                        + " shadow-samples=\"4096\"/>" + SOFT_LIGHT, "2:9", "(1 + 4096 shadow samples × 1 soft light"
+                        + " + 0 other lights) is 16785409 rays per pixel, more than the limit of 16777216"),
                 Arguments.of("beams of 2^31 - 1 rays", "<render beam-size=\"2147483647\"/>", "2:9",
                         "more than the limit of 16777216"),
                 Arguments.of("100000 threads", "<render threads=\"100000\"/>", "2:9",
@@ -274,11 +280,12 @@ class UntrustedInputTest {
         @Test
         @DisplayName("--aa random with the file's large grid over the ray budget: a usage error")
         void antiAliasing() throws IOException {
-            Path file = write("scene.xml", scene("<render beam-size=\"17\"><anti-aliasing mode=\"none\" grid=\"256 256\"/></render>"));
+            Path file = write("scene.xml", scene("<render beam-size=\"128\"><anti-aliasing mode=\"none\" grid=\"256 256\"/></render>"));
             Run r = run(file.toString(), "--aa", "random", "-o", dir.resolve("out.png").toString());
             assertThat(r.exitCode()).isEqualTo(RenderCommand.BAD_INPUT);
             assertThat(r.errLines().get(0)).isEqualTo("raytracer: --aa RANDOM: RANDOM sampling with 65536 samples per pixel"
-                    + " × beam size 17 × 16 shadow samples is 17825792 rays per pixel, more than the limit of "
+                    + " × (1 + 2 beams of 128 rays: reflection and transmission) × (1 + 16 shadow samples × 0 soft lights"
+                    + " + 0 other lights) is 16842752 rays per pixel, more than the limit of "
                     + RenderSettings.MAX_RAYS_PER_PIXEL);
             assertNothingWritten();
         }
