@@ -162,7 +162,7 @@ class RenderLimitsTest {
             assertThat(thrown).hasSize(1);
             assertThat(thrown.get(0)).isInstanceOf(ConcurrentModificationException.class)
                     .hasMessage("the scene 'every-effect' changed during the render of changed: its geometries were added"
-                            + " to (1 times) (a scene must not change while it renders; render it again when it is complete)");
+                            + " to (1 time) (a scene must not change while it renders; render it again when it is complete)");
         }
 
         /**
