@@ -190,13 +190,14 @@ public final class RenderCommand implements Callable<Integer> {
 
     private static void usageError(CommandLine commandLine, String message) {
         PrintWriter w = commandLine.getErr();
-        w.println(NAME + ": " + message);
+        w.println(NAME + ": " + Messages.visible(message));
         w.println("Try 'java -jar raytracer.jar --help' for more information.");
     }
 
     private static String describe(Throwable e) {
         String message = e.getMessage();
-        return message == null || message.isBlank() ? e.getClass().getSimpleName() : message;
+        // A message may quote a file's or a user's text: nothing in it reaches the terminal raw.
+        return message == null || message.isBlank() ? e.getClass().getSimpleName() : Messages.visible(message);
     }
 
     @Override
@@ -211,7 +212,7 @@ public final class RenderCommand implements Callable<Integer> {
             err.println(e.getMessage());
             return BAD_INPUT;
         } catch (IOException e) {
-            err.println(Messages.cannotReadScene(scene, e));
+            err.println(Messages.visible(Messages.cannotReadScene(scene, e)));
             return BAD_INPUT;
         } catch (OutOfMemoryError e) {
             // Meshes within the size limits can still outgrow a small heap: one line, at once.
@@ -247,7 +248,7 @@ public final class RenderCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             // A value the camera refuses that neither the reader nor the options rejected: bad
             // input all the same, in one line.
-            err.println(job.source() + ": " + e.getMessage());
+            err.println(Messages.visible(job.source() + ": " + e.getMessage()));
             return BAD_INPUT;
         }
 
@@ -260,7 +261,7 @@ public final class RenderCommand implements Callable<Integer> {
         try {
             image.writeToImage(target);
         } catch (UncheckedIOException e) {
-            err.println(NAME + ": " + e.getMessage());
+            err.println(NAME + ": " + Messages.visible(e.getMessage()));
             return FAILURE;
         }
         if (!quiet)

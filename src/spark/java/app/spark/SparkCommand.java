@@ -46,13 +46,13 @@ final class SparkCommand {
                 err.println(e.getMessage());
                 return SparkEntry.BAD_INPUT;
             } catch (IOException e) {
-                err.println(Messages.cannotReadScene(scene, e));
+                err.println(Messages.visible(Messages.cannotReadScene(scene, e)));
                 return SparkEntry.BAD_INPUT;
             }
             try {
                 frame = frame.withSettings(request.settings().apply(frame.settings()));
             } catch (IllegalArgumentException e) {
-                err.println(scene + ": " + e.getMessage());
+                err.println(Messages.visible(scene + ": " + e.getMessage()));
                 return SparkEntry.BAD_INPUT;
             }
             if (request.output() != null) frame = frame.withOutput(request.output());
@@ -84,10 +84,10 @@ final class SparkCommand {
             new SparkRenderer(spark).setProbe(probe).setProgress(request.progressStep()).setOutput(progress)
                     .setSummary(request.summary()).render(frames);
         } catch (SparkRenderException e) {
-            err.println("raytracer: failed on Spark: " + e.getMessage());
+            err.println("raytracer: failed on Spark: " + Messages.visible(e.getMessage()));
             return 1;
         } catch (UncheckedIOException e) {
-            err.println("raytracer: " + e.getMessage());
+            err.println("raytracer: " + Messages.visible(e.getMessage()));
             return 1;
         }
         if (request.summary())

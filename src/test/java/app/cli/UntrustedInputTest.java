@@ -230,6 +230,19 @@ class UntrustedInputTest {
             assertThat(Path.of(target + ".png")).doesNotExist();
         }
 
+        @ParameterizedTest(name = "U+{0}")
+        @ValueSource(strings = { "009B", "3164", "2028", "00A0" })
+        @DisplayName("a name with a control, invisible or look-alike character: refused, the character escaped on stderr")
+        void hidden(String hex) throws IOException {
+            String c = Character.toString(Integer.parseInt(hex, 16));
+            Path file = write("scene.xml", "<scene name=\"hostile\">\n<image name=\"a" + c + "[31mb\"/>\n"
+                    + "<camera location=\"0 0 0\" direction=\"0 0 -1\" up=\"0 1 0\" vp-size=\"1\" vp-distance=\"1\"/></scene>");
+            Run r = run(file.toString());
+            assertRefused(r, file, ":2:8", "the image name contains U+" + hex);
+            assertThat(r.errLines()).hasSize(1);
+            assertThat(r.err()).contains("\\u" + hex).doesNotContain(c);
+        }
+
         @ParameterizedTest(name = "name=\"{0}\"")
         @ValueSource(strings = { "../../x", "..", "a\\b", "c:x" })
         @DisplayName("a name that leaves images/")

@@ -342,7 +342,36 @@ class RenderSettingsTest {
             String name = "invoice" + Character.toString(Integer.parseInt(hex, 16)) + "gnp.exe";
             assertThatThrownBy(() -> RenderSettings.defaults(name)).isInstanceOf(IllegalArgumentException.class)
                     .hasMessage("the image name contains U+" + hex + ", an invisible or direction-changing character"
-                            + " (the file name would display as something else)");
+                            + " (the file name would display as something else, or not at all)");
+        }
+
+        @ParameterizedTest(name = "U+{0}: {1}")
+        @CsvSource(delimiter = '|', value = {
+                "3164|an invisible character (Unicode's Default_Ignorable_Code_Point)", // Hangul filler, a letter by category
+                "115F|an invisible character (Unicode's Default_Ignorable_Code_Point)",
+                "FFA0|an invisible character (Unicode's Default_Ignorable_Code_Point)",
+                "034F|an invisible character (Unicode's Default_Ignorable_Code_Point)", // combining grapheme joiner
+                "FE0F|an invisible character (Unicode's Default_Ignorable_Code_Point)", // variation selector
+                "2800|a blank-looking character (the empty braille pattern)",
+                "2028|a line or paragraph separator",
+                "00A0|a space other than U+0020 (it looks like one and is another character)",
+                "3000|a space other than U+0020 (it looks like one and is another character)",
+                "009B|a control character", // C1: a terminal's control sequence introducer
+                "0007|a control character",
+                "E000|a private-use, unassigned or surrogate code point" })
+        @DisplayName("refused: every character that would not show as what it is, naming the code point and its kind")
+        void hidden(String hex, String kind) {
+            String name = "render" + Character.toString(Integer.parseInt(hex, 16)) + "1";
+            assertThatThrownBy(() -> RenderSettings.defaults(name)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("the image name contains U+" + hex + ", " + kind
+                            + " (the file name would display as something else, or not at all)");
+        }
+
+        @ParameterizedTest(name = "\"{0}\"")
+        @ValueSource(strings = { "תמונה 1", "שָׁלוֹם", "e\u0301te", "日本", "a+b (2)", "x_y-z.v2" })
+        @DisplayName("accepted: letters of any script with their marks (Hebrew points, combining accents), digits, punctuation, the plain space")
+        void visibleNames(String name) {
+            assertThat(RenderSettings.defaults(name).imageName()).isEqualTo(name);
         }
 
         @Test
