@@ -63,21 +63,27 @@ public final class RenderCommand implements Callable<Integer> {
     /** Percent between redraws of the terminal progress bar. */
     private static final double BAR_STEP = 1;
 
-    /** The stated limits, for --help: each is refused with a message that names it. */
+    /**
+     * The stated limits, for --help: each is refused with a message that names it. Each line fits
+     * picocli's 80 columns (a longer one wraps to column 0, out of the table).
+     */
     private static final String[] LIMITS = {
             "  threads            at most " + Camera.MAX_THREADS_PER_CORE + " per core (" + Camera.maxThreads() + " here)",
             "  samples per pixel  at most " + Camera.MAX_SAMPLES_PER_PIXEL + " (RANDOM grid, depth-of-field samples)",
             "  rays per pixel     at most " + RenderSettings.MAX_RAYS_PER_PIXEL + ": samples per pixel",
-            "                     (grid, adaptive, lens) x beam-size x shadow-samples",
+            "                     (grid, adaptive, lens) x (1 + 2 x beam-size)",
+            "                     x (1 + shadow-samples x lights with a radius",
+            "                     + other lights); deeper bounces counted as traced",
             "  image              at most " + RenderSettings.MAX_PIXELS + " pixels, written to images/<name>.png:",
-            "                     a name of at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH
-                    + " characters, no / \\ : .. or invisible format characters (U+202E...)",
+            "                     a name of at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH + " characters, no / \\ : ..",
+            "                     and no control, invisible or space-like character",
+            "                     other than the space (U+202E, U+3164, U+00A0...)",
             "  scene file         at most " + Limits.MAX_SCENE_BYTES + " bytes, elements nested at most "
                     + Limits.MAX_NESTING_DEPTH + " deep,",
             "                     numbers at most " + magnitude(Limits.MAX_MAGNITUDE) + " in magnitude,",
             "                     sizes and factors 0 or at least " + magnitude(Limits.MIN_MAGNITUDE),
-            "  OBJ file           a regular .obj file inside the scene file's folder (or --mesh-root),",
-            "                     of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
+            "  OBJ file           a regular .obj file inside the scene file's folder",
+            "                     (or --mesh-root), of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
             "                     lines of at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters",
             "  memory             what does not fit in Java's heap (-Xmx) fails at once" };
 

@@ -61,8 +61,20 @@ class ExecutorWatchTest {
     }
 
     @Test
+    @DisplayName("no executor yet when the job starts, then the first ones: they joined, they are not back")
+    void joined() {
+        executors = 0;
+        at(0);
+        executors = 1;
+        assertThat(at(2)).isFalse();
+        assertThat(said).containsExactly("waiting for executors: none is available (the job ends if none comes within 30 s)",
+                "executors joined; the job goes on");
+    }
+
+    @Test
     @DisplayName("executors back within the timeout: the wait starts afresh")
     void back() {
+        at(0); // seen
         executors = 0;
         at(0);
         executors = 1;

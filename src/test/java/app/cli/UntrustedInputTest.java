@@ -8,6 +8,7 @@ import java.io.RandomAccessFile;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.regex.Pattern;
+import java.util.List;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.DisplayName;
@@ -301,6 +302,15 @@ class UntrustedInputTest {
                     + " + 0 other lights) is 16842752 rays per pixel, more than the limit of "
                     + RenderSettings.MAX_RAYS_PER_PIXEL);
             assertNothingWritten();
+        }
+
+        @Test
+        @DisplayName("--help fits 80 columns: no line wraps, and every Limits line stays in its table")
+        void helpFits() {
+            List<String> lines = run("--help").out().lines().toList();
+            assertThat(lines).allSatisfy(line -> assertThat(line.length()).as(line).isLessThanOrEqualTo(80));
+            List<String> limits = lines.subList(lines.indexOf("Limits (docs/scene-format.md, \"Limits\"):") + 1, lines.size());
+            assertThat(limits).isNotEmpty().allSatisfy(line -> assertThat(line).startsWith("  "));
         }
 
         @Test
