@@ -260,6 +260,11 @@ public final class RenderCommand implements Callable<Integer> {
 
         try {
             camera.render();
+        } catch (OutOfMemoryError e) {
+            // The BVH's build names itself; anything else, the render as a whole: one line either way.
+            err.println(outOfMemory(e, "render " + settings.imageName() + " (" + settings.width() + "x"
+                    + settings.height() + ")"));
+            return FAILURE;
         } finally {
             if (bar != null) bar.finish();
         }
@@ -268,6 +273,9 @@ public final class RenderCommand implements Callable<Integer> {
             image.writeToImage(target);
         } catch (UncheckedIOException e) {
             err.println(NAME + ": " + Messages.visible(e.getMessage()));
+            return FAILURE;
+        } catch (OutOfMemoryError e) { // the PNG encoder's own copy of the pixels
+            err.println(outOfMemory(e, "write " + target + " (" + settings.width() + "x" + settings.height() + ")"));
             return FAILURE;
         }
         if (!quiet)
@@ -400,6 +408,19 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     /** "; Java may use at most N MB here", or nothing when the JVM states no limit. */
+    /**
+     * The one line for an {@code OutOfMemoryError} while rendering or writing: the library's own
+     * message when it named what needed the memory (the BVH, an image), else what was being done,
+     * the limit and the option that raises it.
+     */
+    static String outOfMemory(OutOfMemoryError e, String doing) {
+        String message = e.getMessage();
+        if (message != null && (message.startsWith("the BVH ") || message.startsWith("image ")))
+            return NAME + ": " + Messages.visible(message);
+        return NAME + ": not enough memory to " + Messages.visible(doing) + maxMemory()
+                + " (give Java more memory with -Xmx, or render it smaller)";
+    }
+
     private static String maxMemory() {
         long max = Runtime.getRuntime().maxMemory();
         return max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB here";
