@@ -65,15 +65,21 @@ final class ExecutorWatch {
         }
         if (noneSince < 0) {
             noneSince = now;
-            say.accept(String.format(Locale.ROOT, "waiting for executors: none is available (the job ends if none comes"
-                    + " within %.0f s)", timeoutNanos / 1e9));
+            say.accept("waiting for executors: none is available (the job ends if none comes within " + seconds() + ")");
             return false;
         }
         if (now - noneSince < timeoutNanos) return false;
-        reason = String.format(Locale.ROOT, "no executor for %.0f s: the cluster lost every worker, or has none for"
-                + " this job (the limit is spark.raytracer.executorTimeout)", timeoutNanos / 1e9);
+        reason = "no executor for " + seconds() + ": the cluster lost every worker, or has none for this job (the limit"
+                + " is spark.raytracer.executorTimeout)";
         cluster.cancel(reason);
         return true;
+    }
+
+    /** The timeout in words: whole seconds as {@code 120 s}, shorter or finer ones to the millisecond ({@code 0.001 s}). */
+    private String seconds() {
+        double s = timeoutNanos / 1e9;
+        return (s == Math.rint(s) ? String.format(Locale.ROOT, "%.0f", s)
+                : String.format(Locale.ROOT, "%.3f", s).replaceAll("0+$", "")) + " s";
     }
 
     /** @return why the watch cancelled the job, or null when it did not */

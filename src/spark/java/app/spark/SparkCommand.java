@@ -73,6 +73,12 @@ final class SparkCommand {
                     + "give a master URL such as --spark local[2], or " + SparkRunner.HOW_TO_RUN);
             return SparkEntry.BAD_INPUT;
         }
+        try {
+            SparkRenderer.executorTimeout(conf); // before Spark starts: a bad value costs no context
+        } catch (IllegalArgumentException e) {
+            err.println("raytracer: " + Messages.visible(e.getMessage()));
+            return SparkEntry.BAD_INPUT;
+        }
         JavaSparkContext started;
         try {
             started = new JavaSparkContext(conf);

@@ -12,6 +12,7 @@ import java.util.UUID;
 
 import org.apache.spark.TaskContext;
 import org.apache.spark.api.java.JavaRDD;
+import org.apache.spark.SparkConf;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.broadcast.Broadcast;
 
@@ -71,7 +72,34 @@ public final class SparkRenderer {
     public SparkRenderer(JavaSparkContext spark) {
         requireSupportedJava();
         this.spark = Objects.requireNonNull(spark, "spark context");
-        this.executorTimeout = spark.sc().getConf().getTimeAsSeconds(EXECUTOR_TIMEOUT, "120s");
+        this.executorTimeout = executorTimeout(spark.sc().getConf());
+    }
+
+    /**
+     * The context's {@value #EXECUTOR_TIMEOUT}, checked as {@link #setExecutorTimeout} checks its
+     * argument: a time Spark reads ({@code 120s}, {@code 5m}, {@code 500ms}) that is positive.
+     * The command line asks it before Spark starts, so a bad value costs no context.
+     *
+     * @param conf the configuration (spark-submit's {@code --conf}, or {@code -Dspark.…})
+     * @return the timeout in seconds, &gt; 0; 120 when it is not set
+     * @throws IllegalArgumentException naming the setting and the value, for one that is not a
+     *                                  time or not positive
+     */
+    static double executorTimeout(SparkConf conf) {
+        String given = conf.get(EXECUTOR_TIMEOUT, "120s");
+        long millis;
+        try {
+            // A bare number is seconds, as Spark's getTimeAsSeconds reads it (getTimeAsMs would take milliseconds).
+            millis = given.trim().matches("-?\\d+") ? Math.multiplyExact(Long.parseLong(given.trim()), 1000L)
+                    : conf.getTimeAsMs(EXECUTOR_TIMEOUT, "120s");
+        } catch (NumberFormatException | ArithmeticException e) {
+            throw new IllegalArgumentException(EXECUTOR_TIMEOUT + " '" + given + "' is not a time (expected a positive"
+                    + " time such as 120s, 5m or 500ms)", e);
+        }
+        if (millis <= 0)
+            throw new IllegalArgumentException(EXECUTOR_TIMEOUT + " '" + given + "' is not positive (expected a positive"
+                    + " time such as 120s, 5m or 500ms)");
+        return millis / 1000.0;
     }
 
     /**
@@ -320,7 +348,7 @@ public final class SparkRenderer {
                 line -> {
                     if (progressStep > 0) out.println(label + ": " + line);
                 });
-        Thread watching = watching(watch, label);
+        Thread watching = watching(watch, monitor, label);
         try {
             JavaRDD<List<TilePixels>> rendered = spark.parallelize(groups, groups.size()).map(g -> {
                 List<TilePixels> done = new ArrayList<>(g.size());
@@ -370,10 +398,15 @@ public final class SparkRenderer {
         };
     }
 
-    /** A daemon thread that checks {@code watch} every half second until it is interrupted or cancels the job. */
-    private static Thread watching(ExecutorWatch watch, String label) {
+    /**
+     * A daemon thread that waits until Spark has the job (a watch started before would count the
+     * time before the submission, and a timeout shorter than that would let the job run on), then
+     * checks {@code watch} every half second until it is interrupted or cancels the job.
+     */
+    private static Thread watching(ExecutorWatch watch, JobMonitor monitor, String label) {
         Thread t = new Thread(() -> {
             try {
+                monitor.awaitJobStart();
                 while (!watch.check()) Thread.sleep(500);
             } catch (InterruptedException e) {
                 // the job ended
