@@ -54,6 +54,7 @@ public final class Messages {
      * U+1160, U+3164 and U+FFA0, the variation selectors U+FE00–U+FE0F, …: drawn as nothing);
      * and the blank braille pattern U+2800, a letter-like character drawn as a space.
      *
+     * @param cp a Unicode code point
      * @return the kind of character, for a message ("a control character", …), or null
      */
     public static String hidden(int cp) {
