@@ -28,6 +28,26 @@ final class SparkCommand {
     private SparkCommand() {
     }
 
+    /** @return whether {@code master} runs its executors in the driver's JVM (local, local[N], local[N,M], local[*]) */
+    static boolean runsInThisJvm(String master) {
+        return master.equals("local") || master.startsWith("local[");
+    }
+
+    /**
+     * The jar this program's classes come from, for {@code spark.jars}; null when they come from
+     * a class folder (a build's target/classes) or from where no file is.
+     */
+    static Path applicationJar() {
+        try {
+            java.security.CodeSource source = SparkCommand.class.getProtectionDomain().getCodeSource();
+            if (source == null || source.getLocation() == null) return null;
+            Path path = Path.of(source.getLocation().toURI());
+            return java.nio.file.Files.isRegularFile(path) && path.toString().endsWith(".jar") ? path : null;
+        } catch (java.net.URISyntaxException | IllegalArgumentException | java.nio.file.FileSystemNotFoundException e) {
+            return null; // not a file on this machine: nothing to ship
+        }
+    }
+
     static int run(SparkRequest request, PrintStream progress, PrintStream out, PrintStream err) {
         return run(request, TileProbe.NONE, progress, out, err);
     }
@@ -72,6 +92,21 @@ final class SparkCommand {
             err.println("raytracer: --spark " + SparkRequest.SUBMIT + " takes the master of spark-submit, and there is none: "
                     + "give a master URL such as --spark local[2], or " + SparkRunner.HOW_TO_RUN);
             return SparkEntry.BAD_INPUT;
+        }
+        String master = conf.get("spark.master");
+        if (!runsInThisJvm(master) && !conf.contains("spark.jars")) {
+            // Outside spark-submit nothing ships this program's classes to a cluster's executors,
+            // whose every task then failed with ClassNotFoundException after a minute: ship the
+            // jar this class came from, or, run from class folders (the Maven profile), refuse.
+            Path jar = applicationJar();
+            if (jar == null) {
+                err.println("raytracer: --spark " + master + ": a cluster's executors need this program's jar, and it runs"
+                        + " from class folders here, which Spark cannot ship: build it (mvn -Pspark package) and run"
+                        + " spark-submit --master " + master + " --class app.cli.Main target/raytracer.jar --spark submit ...,"
+                        + " or render on this machine with --spark local[N]");
+                return SparkEntry.BAD_INPUT;
+            }
+            conf.set("spark.jars", jar.toUri().toString());
         }
         try {
             SparkRenderer.executorTimeout(conf); // before Spark starts: a bad value costs no context
