@@ -130,6 +130,13 @@ final class SparkCommand {
         } catch (UncheckedIOException e) {
             err.println("raytracer: " + Messages.visible(e.getMessage()));
             return 1;
+        } catch (OutOfMemoryError e) { // on the driver, outside the job: assembling, or the PNG's encoding
+            long max = Runtime.getRuntime().maxMemory();
+            err.println("raytracer: failed on Spark: the driver ran out of memory beside the job's images ("
+                    + SparkRenderer.imageSizes(frames) + ")" + (max == Long.MAX_VALUE ? "" : "; Java may use at most "
+                    + (max >> 20) + " MB there") + " (give the driver more memory with spark-submit --driver-memory, or -Xmx"
+                    + " for a local master; or render it smaller)");
+            return 1;
         }
         if (request.summary())
             for (SparkFrame f : frames)

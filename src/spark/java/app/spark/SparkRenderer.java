@@ -243,7 +243,7 @@ public final class SparkRenderer {
         JobMonitor monitor = new JobMonitor("raytracer-" + UUID.randomUUID(),
                 groups.stream().mapToInt(List::size).toArray(), progress);
 
-        run(new FrameSet(sent), groups, monitor, label, assembly);
+        run(new FrameSet(sent), groups, monitor, label, assembly, imageSizes(frames));
         double renderSeconds = (System.nanoTime() - start) / 1e9;
         long pixels = write(frames, assembly.images);
 
@@ -339,7 +339,8 @@ public final class SparkRenderer {
      *
      * @throws SparkRenderException when the job fails (a task failed every attempt)
      */
-    private void run(FrameSet frames, List<List<Tile>> groups, JobMonitor monitor, String label, Assembly assembly) {
+    private void run(FrameSet frames, List<List<Tile>> groups, JobMonitor monitor, String label, Assembly assembly,
+                     String images) {
         Broadcast<FrameSet> scenes = spark.broadcast(frames);
         spark.sc().addSparkListener(monitor);
         spark.setJobGroup(monitor.jobGroup(), label, false);
@@ -374,6 +375,7 @@ public final class SparkRenderer {
             throw new SparkRenderException(label + ": interrupted", e);
         } catch (Exception e) { // SparkException is checked in Java's eyes but undeclared
             String reason = watch.reason();
+            if (reason == null) reason = driverOutOfMemory(e, images, Runtime.getRuntime().maxMemory());
             throw new SparkRenderException(label + ": " + (reason != null ? reason : firstLine(e)), e);
         } finally {
             watching.interrupt();
@@ -445,6 +447,43 @@ public final class SparkRenderer {
     }
 
     /** The first line of an exception's message (Spark's carry a stack trace), or its class. */
+    /** @return the job's images and the memory they hold on the driver, as "11000x11000, 462 MB" */
+    static String imageSizes(List<SparkFrame> frames) {
+        long bytes = 0;
+        StringBuilder sizes = new StringBuilder();
+        for (SparkFrame f : frames) {
+            RenderSettings s = f.settings();
+            bytes += ImageWriter.bytesNeeded(s.width(), s.height());
+            if (sizes.length() > 0) sizes.append(" + ");
+            sizes.append(s.width()).append('x').append(s.height());
+        }
+        long mb = 1 << 20;
+        return sizes + ", " + (bytes + mb - 1) / mb + " MB";
+    }
+
+    /**
+     * The one line for a job that failed because the driver ran out of memory (Spark reports it
+     * as the job's failure, with the error's trace in its message: a task that could not be
+     * serialized beside the job's images, say), or null for another failure.
+     *
+     * @param e      the job's failure
+     * @param images {@link #imageSizes}
+     * @param max    the driver's heap limit ({@link Runtime#maxMemory()})
+     * @return the reason, naming the images, the limit and --driver-memory; null when the failure was not a lack of memory
+     */
+    static String driverOutOfMemory(Throwable e, String images, long max) {
+        boolean oom = false;
+        for (Throwable t = e; t != null && !oom; t = t.getCause())
+            oom = t instanceof OutOfMemoryError || (t.getMessage() != null && t.getMessage().contains("java.lang.OutOfMemoryError"));
+        if (!oom) return null;
+        String message = e.getMessage() == null ? "" : e.getMessage();
+        return "the driver ran out of memory " + (message.contains("Task serialization failed") ? "serializing the job's tasks"
+                : "during the job") + " beside the job's images (" + images + ")"
+                + (max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB there")
+                + " (give the driver more memory with spark-submit --driver-memory, or -Xmx for a local master; or render"
+                + " it smaller)";
+    }
+
     static String firstLine(Throwable e) {
         String m = e.getMessage();
         if (m == null || m.isBlank()) return e.getClass().getSimpleName();
