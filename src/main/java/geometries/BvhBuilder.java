@@ -135,71 +135,145 @@ final class BvhBuilder {
             }
 
             int total = first[count];
-            BvhBuilder b = new BvhBuilder(total, pool, forkAbove, pairs);
-            b.unbounded = free.toArray(new Intersectable[0]);
-            // By slot rather than by leaf, so that the triangles of one big mesh are shared out too.
-            // Each chunk also leaves the bounds of its slots (BOUNDS doubles) in chunkBounds; their
-            // union is the root's, found without a pass of its own. All start empty: without a
-            // pool one chunk runs the whole range, and the others' places must not count.
-            double[] chunkBounds = new double[(Math.max(total, 1) + grain - 1) / grain * BOUNDS];
-            for (int at = 0; at < chunkBounds.length; at += BOUNDS) resetBounds(chunkBounds, at);
-            Ranges.run(pool, total, grain, (from, to) -> {
-                int l = leafOfSlot(first, from);
-                for (int s = from; s < to; ++s) {
-                    while (s >= first[l + 1]) ++l;
-                    if (first[l + 1] - first[l] == 1) {
-                        b.addPrimitive(s, all[l], 0, leafBox, l * 6);
-                    } else {
-                        BoundingBox p = all[l].primitiveBounds(s - first[l]);
-                        double[] box = { p.minX, p.minY, p.minZ, p.maxX, p.maxY, p.maxZ };
-                        b.addPrimitive(s, all[l], s - first[l], box, 0);
-                    }
-                }
-                b.unite(chunkBounds, from / grain * BOUNDS, from, to);
-            });
-            double[] rootBounds = new double[BOUNDS];
-            b.unite(rootBounds, chunkBounds);
-            b.build(rootBounds);
-            // The leaves' primitives in leaf order, and each slot's place in it. A gather through
-            // the final permutation, in leaf order: in one tight loop the memory system overlaps
-            // its random reads (done per leaf, as the leaves were made, they cost 10 % of a build).
-            int[] order = b.order;
-            Intersectable[] ordered = new Intersectable[total];
-            int[] orderedPrim = new int[total];
-            int[] leafAt = new int[packs[0] ? total : 0];
-            Ranges.run(pool, total, grain, (from, to) -> {
-                for (int k = from; k < to; ++k) {
-                    int s = order[k];
-                    ordered[k] = b.slotOwner[s];
-                    orderedPrim[k] = b.slotPrim[s];
-                    if (leafAt.length > 0) leafAt[s] = k;
-                }
-            });
-            b.owner = ordered;
-            b.prim = orderedPrim;
-            byte[] kind = new byte[total];
-            double[] packed = new double[packs[0] ? total * BvhLeaf.PACKED : 0];
-            if (packs[0]) {
-                // In slot order, that is the scene's order, in which its objects were most likely
-                // made: the objects are read one after the other, the packed records written at
-                // their leaf places. (Packing as the leaves are made read them at random: 0.5 s
-                // more for a one-thread build of 2×10⁶.)
-                Ranges.run(pool, total, grain, (from, to) -> {
-                    for (int s = from; s < to; ++s) {
-                        Intersectable leaf = b.slotOwner[s];
-                        byte k = leaf.packedKind();
-                        if (k == BvhLeaf.OWN) continue;
-                        kind[leafAt[s]] = k;
-                        leaf.pack(b.slotPrim[s], packed, leafAt[s] * BvhLeaf.PACKED);
-                    }
-                });
+            requireMemory(total, count, Runtime.getRuntime().maxMemory(), live(bytesNeeded(total, count)));
+            try {
+                return index(all, count, total, first, leafBox, packs, free, pool, grain, forkAbove, pairs);
+            } catch (OutOfMemoryError e) {
+                // The estimate is a floor (the rest of the program may grow meanwhile): a build that
+                // runs out all the same says so in the same words, with what was live at the failure.
+                Runtime runtime = Runtime.getRuntime();
+                OutOfMemoryError named = new OutOfMemoryError(memoryMessage(total, bytesNeeded(total, count),
+                        runtime.maxMemory(), runtime.totalMemory() - runtime.freeMemory()));
+                named.initCause(e);
+                throw named;
             }
-            b.kind = kind;
-            b.packed = packed;
-            return b;
         } finally {
             if (pool != null) pool.shutdown();
         }
+    }
+
+    /** The build proper, once the leaves are boxed and counted (see {@link #index(Intersectable[], int, int, boolean)}). */
+    private static BvhBuilder index(Intersectable[] all, int count, int total, int[] first, double[] leafBox,
+                                    boolean[] packs, List<Intersectable> free, ForkJoinPool pool, int grain,
+                                    int forkAbove, boolean pairs) {
+        BvhBuilder b = new BvhBuilder(total, pool, forkAbove, pairs);
+        b.unbounded = free.toArray(new Intersectable[0]);
+        // By slot rather than by leaf, so that the triangles of one big mesh are shared out too.
+        // Each chunk also leaves the bounds of its slots (BOUNDS doubles) in chunkBounds; their
+        // union is the root's, found without a pass of its own. All start empty: without a
+        // pool one chunk runs the whole range, and the others' places must not count.
+        double[] chunkBounds = new double[(Math.max(total, 1) + grain - 1) / grain * BOUNDS];
+        for (int at = 0; at < chunkBounds.length; at += BOUNDS) resetBounds(chunkBounds, at);
+        Ranges.run(pool, total, grain, (from, to) -> {
+            int l = leafOfSlot(first, from);
+            for (int s = from; s < to; ++s) {
+                while (s >= first[l + 1]) ++l;
+                if (first[l + 1] - first[l] == 1) {
+                    b.addPrimitive(s, all[l], 0, leafBox, l * 6);
+                } else {
+                    BoundingBox p = all[l].primitiveBounds(s - first[l]);
+                    double[] box = { p.minX, p.minY, p.minZ, p.maxX, p.maxY, p.maxZ };
+                    b.addPrimitive(s, all[l], s - first[l], box, 0);
+                }
+            }
+            b.unite(chunkBounds, from / grain * BOUNDS, from, to);
+        });
+        double[] rootBounds = new double[BOUNDS];
+        b.unite(rootBounds, chunkBounds);
+        b.build(rootBounds);
+        // The leaves' primitives in leaf order, and each slot's place in it. A gather through
+        // the final permutation, in leaf order: in one tight loop the memory system overlaps
+        // its random reads (done per leaf, as the leaves were made, they cost 10 % of a build).
+        int[] order = b.order;
+        Intersectable[] ordered = new Intersectable[total];
+        int[] orderedPrim = new int[total];
+        int[] leafAt = new int[packs[0] ? total : 0];
+        Ranges.run(pool, total, grain, (from, to) -> {
+            for (int k = from; k < to; ++k) {
+                int s = order[k];
+                ordered[k] = b.slotOwner[s];
+                orderedPrim[k] = b.slotPrim[s];
+                if (leafAt.length > 0) leafAt[s] = k;
+            }
+        });
+        b.owner = ordered;
+        b.prim = orderedPrim;
+        byte[] kind = new byte[total];
+        double[] packed = new double[packs[0] ? total * BvhLeaf.PACKED : 0];
+        if (packs[0]) {
+            // In slot order, that is the scene's order, in which its objects were most likely
+            // made: the objects are read one after the other, the packed records written at
+            // their leaf places. (Packing as the leaves are made read them at random: 0.5 s
+            // more for a one-thread build of 2×10⁶.)
+            Ranges.run(pool, total, grain, (from, to) -> {
+                for (int s = from; s < to; ++s) {
+                    Intersectable leaf = b.slotOwner[s];
+                    byte k = leaf.packedKind();
+                    if (k == BvhLeaf.OWN) continue;
+                    kind[leafAt[s]] = k;
+                    leaf.pack(b.slotPrim[s], packed, leafAt[s] * BvhLeaf.PACKED);
+                }
+            });
+        }
+        b.kind = kind;
+        b.packed = packed;
+        return b;
+    }
+
+    /**
+     * Bytes the build holds at its peak per bounded primitive: the slot arrays (owner, index, order:
+     * 12; bounds and centroid: 72), the partition's scratch (76) and the node slots (two per
+     * primitive of 6 floats and 3 ints: 72). The tree itself is smaller than those and is made once
+     * the scratch is let go.
+     */
+    static final long BYTES_PER_PRIMITIVE = 232;
+    /** Bytes per leaf (a shape, or a whole mesh) of the first pass: its box (48), flags and offsets. */
+    static final long BYTES_PER_LEAF = 57;
+
+    /** @return the bytes a build over {@code primitives} primitives of {@code leaves} shapes holds at its peak */
+    static long bytesNeeded(long primitives, long leaves) {
+        return primitives * BYTES_PER_PRIMITIVE + leaves * BYTES_PER_LEAF;
+    }
+
+    /**
+     * Refuses, before any of its arrays is made, a build that cannot fit: one that needs more than
+     * the heap's limit minus what the rest of the program holds (a build of 4.5 million
+     * triangles with too small a heap otherwise ran for a minute before it failed without a word
+     * of what it was doing).
+     *
+     * @param primitives the bounded primitives to index
+     * @param leaves     the shapes they belong to
+     * @param max        the heap's limit ({@link Runtime#maxMemory()}; {@link Long#MAX_VALUE}: none)
+     * @param live       bytes the rest of the program holds
+     * @throws OutOfMemoryError naming the primitives, the memory needed, the limit, what was free and the remedies
+     */
+    static void requireMemory(long primitives, long leaves, long max, long live) {
+        long needed = bytesNeeded(primitives, leaves);
+        if (max != Long.MAX_VALUE && needed > max - live)
+            throw new OutOfMemoryError(memoryMessage(primitives, needed, max, live));
+    }
+
+    /** The one line of a build that does not fit: what, how much, the limit, what was free, and the remedies. */
+    static String memoryMessage(long primitives, long needed, long max, long live) {
+        long mb = 1 << 20;
+        return "the BVH over " + primitives + " primitives needs about " + (needed + mb - 1) / mb + " MB; Java may use at"
+                + " most " + max / mb + " MB here, of which about " + Math.max(0, max - live) / mb + " MB were free"
+                + " (give Java more memory with -Xmx, on a Spark executor --executor-memory; or render without the"
+                + " BVH: setBvh(false), <render bvh=\"false\">)";
+    }
+
+    /**
+     * The bytes the rest of the program holds, as far as a build of {@code needed} bytes must
+     * know: what is in use now, and when that leaves too little, what is in use after one full
+     * collection (garbage of the scene's loading, an earlier tree, counts as in use until then; a
+     * collection costs a fraction of a second, against a build that would fail after a minute).
+     */
+    private static long live(long needed) {
+        Runtime runtime = Runtime.getRuntime();
+        long used = runtime.totalMemory() - runtime.freeMemory();
+        if (runtime.maxMemory() == Long.MAX_VALUE || needed <= runtime.maxMemory() - used) return used;
+        System.gc(); // the one place the library asks for a collection: before refusing a build for lack of memory
+        return runtime.totalMemory() - runtime.freeMemory();
     }
 
     /** @return the leaf whose slots [first[l], first[l + 1]) hold {@code slot} (first is non-decreasing) */

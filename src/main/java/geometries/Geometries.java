@@ -3,6 +3,7 @@ package geometries;
 import java.lang.ref.SoftReference;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.Deque;
 import java.util.IdentityHashMap;
@@ -19,9 +20,10 @@ import primitives.Ray;
 public class Geometries extends Intersectable {
     /**
      * The deepest nesting of lists a render takes: a list is level 1, a list inside it level 2.
-     * The course's queries and the flat walk recurse once per level, so a much deeper chain
-     * overflows a thread's stack; a render refuses it at the start, naming the depth (see
-     * {@link #requireNestingWithinLimit()}). Scenes need a few levels.
+     * The renderer's flat walk (and the bounding box) recurse once per level, so a much deeper
+     * chain overflows a thread's stack; a render refuses it at the start, naming the depth (see
+     * {@link #requireNestingWithinLimit()}). The course's queries walk any depth. Scenes need a
+     * few levels.
      */
     public static final int MAX_NESTING_DEPTH = 1000;
 
@@ -178,17 +180,56 @@ public class Geometries extends Intersectable {
         return items.isEmpty();
     }
 
+    /**
+     * The course's query over every item, nested lists included, in the order of the items (a
+     * nested list's points where the list stands). Nested plain {@code Geometries} are walked with
+     * an explicit stack, not by recursion, so a nest of any depth is answered (10,000 levels
+     * overflowed the thread's stack); a subclass of {@code Geometries} is asked through its own
+     * query, as any other item.
+     *
+     * @throws IllegalArgumentException when a list is nested in itself (the walk would not end)
+     */
     @Override
     protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
         List<GeoPoint> result = null;
-        for (Intersectable item : items) {
-            List<GeoPoint> found = item.findGeoIntersections(ray, maxDistance);
-            if (found != null) {
-                if (result == null) result = new ArrayList<>(found);
-                else result.addAll(found);
+        Geometries list = this;
+        int next = 0;
+        // The lists above the current one and where each resumes; made at the first nested list.
+        Deque<Geometries> parents = null;
+        int[] resume = null;
+        Set<Geometries> onPath = null; // the lists being walked: meeting one again is a cycle
+        while (true) {
+            if (next < list.items.size()) {
+                Intersectable item = list.items.get(next++);
+                if (item instanceof Geometries nested && nested.getClass() == Geometries.class) {
+                    if (parents == null) {
+                        parents = new ArrayDeque<>();
+                        resume = new int[16];
+                        onPath = Collections.newSetFromMap(new IdentityHashMap<>());
+                        onPath.add(this);
+                    }
+                    if (!onPath.add(nested))
+                        throw new IllegalArgumentException("the geometries contain themselves: a Geometries list is"
+                                + " nested in itself, " + (parents.size() + 1) + " levels down, so no query can walk them");
+                    if (parents.size() == resume.length) resume = Arrays.copyOf(resume, 2 * resume.length);
+                    resume[parents.size()] = next;
+                    parents.push(list);
+                    list = nested;
+                    next = 0;
+                } else {
+                    List<GeoPoint> found = item.findGeoIntersections(ray, maxDistance);
+                    if (found != null) {
+                        if (result == null) result = new ArrayList<>(found);
+                        else result.addAll(found);
+                    }
+                }
+            } else {
+                if (parents == null || parents.isEmpty()) return result;
+                onPath.remove(list);
+                list = parents.pop();
+                next = resume[parents.size()];
             }
         }
-        return result;
     }
 
     @Override

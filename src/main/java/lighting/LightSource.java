@@ -100,4 +100,17 @@ public interface LightSource {
      */
     default void validate() {
     }
+
+    /**
+     * A fingerprint of the settings that can change after the light is made (the library's
+     * lights: attenuation, radius, narrow beam): a render notes it when it starts and fails,
+     * instead of writing an image lit by two states, when it differs at the end. The engine's,
+     * not the course's: a light of your own whose settings change returns a number that changes
+     * with them; the default, 0, says it has none to watch.
+     *
+     * @return a number that differs whenever a setting the shading reads differs (up to a 2^-64 chance)
+     */
+    default long settingsStamp() {
+        return 0;
+    }
 }

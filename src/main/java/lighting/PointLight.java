@@ -148,6 +148,17 @@ public class PointLight extends Light implements LightSource {
         return position;
     }
 
+    /** @return a fingerprint of kC, kL, kQ and the radius, the settings that may change (see {@link LightSource#settingsStamp()}) */
+    @Override
+    public long settingsStamp() {
+        return mix(mix(mix(mix(0, kC), kL), kQ), radius);
+    }
+
+    /** One step of a 64-bit multiply-and-add fingerprint over the bits of {@code value}. */
+    static long mix(long stamp, double value) {
+        return (stamp ^ Double.doubleToLongBits(value)) * 0x9E3779B97F4A7C15L + 0x632BE59BD9B4E019L;
+    }
+
     /** @throws IllegalArgumentException when kC, kL and kQ are all zero, naming the three */
     @Override
     public void validate() {

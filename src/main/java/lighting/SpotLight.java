@@ -104,6 +104,12 @@ public class SpotLight extends PointLight {
         return this;
     }
 
+    /** @return the point light's fingerprint and the narrow beam's (see {@link LightSource#settingsStamp()}) */
+    @Override
+    public long settingsStamp() {
+        return mix(super.settingsStamp(), narrowBeam);
+    }
+
     /** The attenuation times the beam's weight max(0, cos θ)^narrowBeam; 0 outside the beam. */
     @Override
     double intensityFactor(double x, double y, double z) {

@@ -749,8 +749,8 @@ public final class Camera {
          * @return this builder, for chaining
          * @throws IllegalArgumentException when a pixel would take more than
          *                                  {@link RayBudget#MAX_RAYS_PER_PIXEL} rays (camera
-         *                                  samples × the tracer's beam size × shadow samples,
-         *                                  naming them)
+         *                                  samples × (1 + 2 beams) × (1 + shadow samples × the
+         *                                  scene's soft lights + its other lights), naming them)
          */
         public Builder requireRayBudget() {
             sampling().requireRayBudget(new View.Lens(aperture, focalDistance), tracer());
@@ -768,8 +768,8 @@ public final class Camera {
          *                                  value), when the settings contradict each other, or
          *                                  when a pixel would take more than
          *                                  {@link RayBudget#MAX_RAYS_PER_PIXEL} rays (camera
-         *                                  samples × the tracer's beam size × shadow samples,
-         *                                  naming them)
+         *                                  samples × (1 + 2 beams) × (1 + shadow samples × the
+         *                                  scene's soft lights + its other lights), naming them)
          */
         public Camera build() {
             View view = buildView();

@@ -97,7 +97,10 @@ public class ImageWriter {
 
     /**
      * What an image of nX × nY pixels needs, against what this JVM may use, for a one-line
-     * message: {@code image 40000x40000 needs 6104 MB; Java may use at most 2048 MB here}.
+     * message: {@code image 40000x40000 needs 6104 MB; Java may use at most 2048 MB here}; when
+     * the image is within that limit (refused all the same, as the rest of the program holds
+     * memory too), the sentence adds what was free: {@code image 23160x23160 needs 2047 MB; Java
+     * may use at most 2048 MB here, of which about 1900 MB were free for it (the image is one array)}.
      *
      * @param nX the number of columns
      * @param nY the number of rows
@@ -105,9 +108,17 @@ public class ImageWriter {
      */
     public static String memoryNeeded(int nX, int nY) {
         long mb = 1 << 20;
-        long max = Runtime.getRuntime().maxMemory();
-        return "image " + nX + "x" + nY + " needs " + (bytesNeeded(nX, nY) + mb - 1) / mb + " MB"
-                + (max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB here");
+        Runtime runtime = Runtime.getRuntime();
+        long max = runtime.maxMemory();
+        long needed = bytesNeeded(nX, nY);
+        String sentence = "image " + nX + "x" + nY + " needs " + (needed + mb - 1) / mb + " MB";
+        if (max == Long.MAX_VALUE) return sentence;
+        sentence += "; Java may use at most " + (max >> 20) + " MB here";
+        // Within the limit yet refused: what the rest of the program holds is the difference, so
+        // say how much was left (an estimate: the collector may still free some).
+        long used = runtime.totalMemory() - runtime.freeMemory();
+        return needed <= max ? sentence + ", of which about " + Math.max(0, max - used) / mb
+                + " MB were free for it (the image is one array)" : sentence;
     }
 
     /**

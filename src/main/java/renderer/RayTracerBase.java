@@ -28,6 +28,14 @@ public abstract class RayTracerBase {
      */
     public abstract Color traceRay(Ray ray);
 
+    /**
+     * The most rays a pixel of a render with this tracer may trace, counted as they are traced
+     * ({@code TraceContext.requireWithinBudget}): {@link RayBudget#MAX_RAYS_PER_PIXEL}. Package
+     * private and not final only so that a test can hold a worst-case pixel to a smaller figure
+     * than 2^24 rays, which would take seconds to trace.
+     */
+    long maxRaysPerPixel = RayBudget.MAX_RAYS_PER_PIXEL;
+
     /** The scene as this tracer was last prepared for it; null before, or after a setting that the preparation depends on changed. */
     private SceneStamp prepared;
 
@@ -82,7 +90,7 @@ public abstract class RayTracerBase {
      * @throws IllegalArgumentException naming the factors and their product when it is over
      */
     void requireRayBudget(AntiAliasing mode, long cameraRays) {
-        RayBudget.require(mode, cameraRays, 1, 1);
+        RayBudget.requireCameraRays(mode, cameraRays);
     }
 
     /**

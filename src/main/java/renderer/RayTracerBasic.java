@@ -148,7 +148,12 @@ public class RayTracerBasic extends RayTracerBase {
 
     @Override
     void requireRayBudget(AntiAliasing mode, long cameraRays) {
-        RayBudget.require(mode, cameraRays, beamSize, shadowSamples);
+        int soft = 0, other = 0;
+        for (LightSource light : scene.lights.toArray(new LightSource[0])) { // a copy: read once, whatever its kind
+            if (light.getRadius() > 0) ++soft;
+            else ++other;
+        }
+        RayBudget.require(mode, cameraRays, beamSize, shadowSamples, soft, other);
     }
 
     @Override
@@ -165,6 +170,8 @@ public class RayTracerBasic extends RayTracerBase {
     public Color traceRay(Ray ray) {
         prepareIfChanged();
         TraceContext ctx = directContexts.get();
+        ctx.rayLimit = maxRaysPerPixel;
+        ctx.beginPixel(-1, -1);
         Point h = ray.getHead();
         Vector d = ray.getDirection();
         ctx.random.reset(Double.doubleToLongBits(h.getX()) * 31 + Double.doubleToLongBits(h.getY()),

@@ -178,6 +178,7 @@ final class RenderLoop {
             int done = 0;
             for (int y = ty0; y < ty1; ++y)
                 for (int x = tx0; x < tx1; ++x) {
+                    ctx.beginPixel(x, y);
                     tilePixels[done++] = sampler.sample(x, y, ctx).packed();
                 }
             // Out once the tile is done, not pixel by pixel: the workers' stores on the cache
@@ -201,6 +202,7 @@ final class RenderLoop {
                 int[] tilePixels = new int[tile * tile];
                 TraceContext ctx = tracer.newContext();
                 ctx.interruptible = true;
+                ctx.rayLimit = tracer.maxRaysPerPixel;
                 try {
                     for (int t = nextTile.getAndIncrement(); t < tileCount; t = nextTile.getAndIncrement()) {
                         if (cancelled.get() || Thread.currentThread().isInterrupted()) throw interrupted();

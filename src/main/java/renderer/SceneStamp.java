@@ -1,26 +1,44 @@
 package renderer;
 
+import java.util.ArrayDeque;
+import java.util.Collections;
 import java.util.ConcurrentModificationException;
+import java.util.Deque;
+import java.util.IdentityHashMap;
 import java.util.List;
+import java.util.Set;
 
 import geometries.Geometries;
+import geometries.Geometry;
+import geometries.Intersectable;
+import lighting.AmbientLight;
 import lighting.LightSource;
+import primitives.Color;
+import primitives.Double3;
+import primitives.Material;
 import scene.Scene;
 
 /**
  * What a render saw of its scene when it started: the geometry list and how often it and the
- * lists within it were added to, the light list and its lights. A scene must not change while it
- * renders (the workers read it, and a tracer shared by two renders is prepared again by the
- * second); the render compares at its end, and a change fails it with one message instead of an
- * image of two states.
+ * lists within it were added to, the light list and its lights, and everything the shading reads
+ * besides (the background, the ambient light, each geometry's material and emission, each
+ * light's settings). A scene must not change while it renders (the workers read it, and a tracer
+ * shared by two renders is prepared again by the second); the render compares at its end, and a
+ * change fails it with one message instead of an image of two states. The comparison walks the
+ * scene once at each end of the render, never per ray or per tile.
  *
  * @param scene      the scene rendered
  * @param geometries its geometry list at the start
  * @param changes    {@link Geometries#changeCount()} at the start
  * @param lightList  its light list at the start
  * @param lights     the lights in it at the start
+ * @param background its background at the start (compared by identity: a {@link Color} is immutable)
+ * @param ambient    its ambient light at the start (immutable too)
+ * @param surfaces   the fingerprint of every geometry's material and emission at the start ({@link #surfaces})
+ * @param lightStamps each light's {@link LightSource#settingsStamp()} at the start, in the order of {@code lights}
  */
-record SceneStamp(Scene scene, Geometries geometries, long changes, List<LightSource> lightList, LightSource[] lights) {
+record SceneStamp(Scene scene, Geometries geometries, long changes, List<LightSource> lightList, LightSource[] lights,
+                  Color background, AmbientLight ambient, Surfaces surfaces, long[] lightStamps) {
     /**
      * @throws ConcurrentModificationException when the light list changes while it is read
      */
@@ -28,8 +46,9 @@ record SceneStamp(Scene scene, Geometries geometries, long changes, List<LightSo
         try {
             List<LightSource> lightList = scene.lights;
             Geometries geometries = scene.geometries;
-            return new SceneStamp(scene, geometries, geometries.changeCount(), lightList,
-                    lightList.toArray(new LightSource[0]));
+            LightSource[] lights = lightList.toArray(new LightSource[0]);
+            return new SceneStamp(scene, geometries, geometries.changeCount(), lightList, lights, scene.background,
+                    scene.ambientLight, Surfaces.of(geometries), settingsStamps(lights));
         } catch (RuntimeException e) { // a list read while another thread adds to it
             throw changed(scene, image, "it was being changed as the render started", e);
         }
@@ -47,24 +66,94 @@ record SceneStamp(Scene scene, Geometries geometries, long changes, List<LightSo
         try {
             what = change();
         } catch (RuntimeException e) {
-            what = "its lights were being changed as the render ended";
+            what = "it was being changed as the render ended";
         }
         if (what != null) throw changed(scene, image, what, failure);
     }
 
     /**
+     * What a direct {@code traceRay} call asks before each ray, so kept cheap (no walk over the
+     * shapes): whether the tracer's preparation is out of date.
+     *
      * @return whether the scene is no longer as it was: a list replaced or added to (nested
      *         lists included), a light added, removed or replaced
      */
     boolean changed() {
-        return change() != null;
+        return structuralChange() != null;
     }
 
     /** @return what changed, in words, or null */
     private String change() {
+        String structural = structuralChange();
+        if (structural != null) return structural;
+        if (scene.background != background) return "its background was replaced (setBackground)";
+        if (scene.ambientLight != ambient) return "its ambient light was replaced (setAmbientLight)";
+        Surfaces now = Surfaces.of(geometries);
+        if (now.materials != surfaces.materials)
+            return "a material of its geometries changed (a Material setter such as setKd, a field, or setMaterial)";
+        if (now.emissions != surfaces.emissions) return "the emission of one of its geometries changed (setEmission)";
+        for (int i = 0; i < lights.length; ++i)
+            if (lights[i].settingsStamp() != lightStamps[i])
+                return "the settings of its light #" + i + " changed (" + lights[i].getClass().getSimpleName() + ")";
+        return null;
+    }
+
+    private static long[] settingsStamps(LightSource[] lights) {
+        long[] stamps = new long[lights.length];
+        for (int i = 0; i < lights.length; ++i) stamps[i] = lights[i].settingsStamp();
+        return stamps;
+    }
+
+    /**
+     * Fingerprints of what the shading reads from the geometries: every material's coefficients
+     * and every emission, over each geometry in the nested lists (each list walked once, without
+     * recursion: lists may nest deeper than the stack allows, see {@link Geometries#MAX_NESTING_DEPTH}).
+     * Values, not identities, so that a field written directly (the course's public fields) is seen
+     * as a setter is; in walk order, so that two geometries swapping materials is seen too.
+     *
+     * @param materials the fingerprint of the materials (their coefficients, shininess, spreads, index of refraction)
+     * @param emissions the fingerprint of the emissions
+     */
+    record Surfaces(long materials, long emissions) {
+        static Surfaces of(Geometries root) {
+            long materials = 0, emissions = 0;
+            Set<Geometries> seen = Collections.newSetFromMap(new IdentityHashMap<>());
+            Deque<Geometries> todo = new ArrayDeque<>(List.of(root));
+            while (!todo.isEmpty()) {
+                Geometries list = todo.pop();
+                if (!seen.add(list)) continue;
+                for (Intersectable item : list.getItems()) {
+                    if (item instanceof Geometries nested) todo.push(nested);
+                    else if (item instanceof Geometry g) {
+                        materials = material(materials, g.getMaterial());
+                        Color e = g.getEmission();
+                        emissions = mix(mix(mix(emissions, e.getR()), e.getG()), e.getB());
+                    }
+                }
+            }
+            return new Surfaces(materials, emissions);
+        }
+
+        private static long material(long stamp, Material m) {
+            stamp = mix(mix(mix(mix(mix(stamp, m.kA), m.kD), m.kS), m.kT), m.kR);
+            return mix(mix(mix(mix(stamp, m.nShininess), m.reflectionSpread), m.transmissionSpread), m.ior);
+        }
+
+        private static long mix(long stamp, Double3 k) {
+            return mix(mix(mix(stamp, k.d1()), k.d2()), k.d3());
+        }
+
+        /** One step of a 64-bit multiply-and-add fingerprint over the bits of {@code value}. */
+        private static long mix(long stamp, double value) {
+            return (stamp ^ Double.doubleToLongBits(value)) * 0x9E3779B97F4A7C15L + 0x632BE59BD9B4E019L;
+        }
+    }
+
+    /** The structural part of {@link #change()}: lists and lights added, removed or replaced. */
+    private String structuralChange() {
         if (scene.geometries != geometries) return "its geometry list was replaced";
         long now = geometries.changeCount();
-        if (now != changes) return "its geometries were added to (" + (now - changes) + " times)";
+        if (now != changes) return "its geometries were added to (" + (now - changes) + (now - changes == 1 ? " time)" : " times)");
         if (scene.lights != lightList) return "its light list was replaced";
         LightSource[] nowLights = lightList.toArray(new LightSource[0]);
         if (nowLights.length != lights.length) return "its lights went from " + lights.length + " to " + nowLights.length;

@@ -46,6 +46,15 @@ final class TraceContext {
      * after an interrupt, so the tracer asks between the rays of a beam or a soft shadow.
      */
     boolean interruptible;
+    /**
+     * The most rays the current pixel may trace ({@link RayBudget#MAX_RAYS_PER_PIXEL}; a test may
+     * lower it). The up-front budget counts one bounce; this bounds every bounce below it.
+     */
+    long rayLimit = RayBudget.MAX_RAYS_PER_PIXEL;
+    /** cameraRays + shadowRays + secondaryRays when the current pixel began. */
+    private long pixelStart;
+    /** The current pixel, for the message of one that goes over the budget; -1: a direct traceRay call. */
+    private int pixelX = -1, pixelY = -1;
 
     TraceContext(int levels, double threshold) {
         transmittance = new Transmittance(threshold);
@@ -77,6 +86,36 @@ final class TraceContext {
     void stopIfInterrupted() {
         if (interruptible && Thread.currentThread().isInterrupted())
             throw new CancellationException("render was interrupted");
+    }
+
+    /** Starts counting the rays of pixel (x, y) against {@link #rayLimit}: (-1, -1) for a direct call. */
+    void beginPixel(int x, int y) {
+        pixelStart = cameraRays + shadowRays + secondaryRays;
+        pixelX = x;
+        pixelY = y;
+    }
+
+    /**
+     * Holds the current pixel to {@link #rayLimit}, before {@code more} rays not yet counted are
+     * traced: asked where rays multiply (each camera sample, each secondary ray, each shadow ray),
+     * so a pixel never traces more than the limit. Two additions and a comparison: no allocation.
+     *
+     * @param more the rays about to be traced and not yet counted (0: the camera ray, counted by
+     *             the sampler before it is traced)
+     * @throws IllegalStateException naming the pixel, the limit and what multiplies the rays
+     */
+    void requireWithinBudget(int more) {
+        if (cameraRays + shadowRays + secondaryRays - pixelStart + more > rayLimit) throw overBudget();
+    }
+
+    private IllegalStateException overBudget() {
+        String where = pixelX < 0 ? "a traceRay call" : "pixel (" + pixelX + ", " + pixelY + ")";
+        return new IllegalStateException(where + " needs more than " + rayLimit + " rays"
+                + (rayLimit == RayBudget.MAX_RAYS_PER_PIXEL ? " (RayBudget.MAX_RAYS_PER_PIXEL)" : "")
+                + ": each reflection and refraction below the first bounce shades again, with its own shadow rays,"
+                + " beyond the budget checked up front (samples per pixel × (1 + 2 beams) × (1 + shadow samples × soft"
+                + " lights + other lights)); lower the samples per pixel, the beam size, the shadow samples or the soft"
+                + " lights, or let fewer materials both reflect and transmit");
     }
 
     void addTo(RenderStats.Counter counter) {

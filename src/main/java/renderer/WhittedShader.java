@@ -57,6 +57,7 @@ final class WhittedShader {
      */
     Rgb shadeCameraRay(TraceContext ctx) {
         ctx.stopIfInterrupted(); // a pixel may take 65,536 camera samples
+        ctx.requireWithinBudget(0); // the camera ray is counted already
         Level top = ctx.top();
         Hit hit = top.hit.reset(Double.POSITIVE_INFINITY);
         if (!world.closestHit(hit)) return top.colour.set(scene.background);
@@ -143,6 +144,7 @@ final class WhittedShader {
         double px = hit.pointX(), py = hit.pointY(), pz = hit.pointZ();
         double nx = hit.normalX(), ny = hit.normalY(), nz = hit.normalZ();
         if (radius == 0) {
+            ctx.requireWithinBudget(1); // thousands of lights at each of a thousand shaded points
             ctx.shadowRays++;
             cache.trace(w, ctx.shadow.setRay(px, py, pz, -lx, -ly, -lz, nx, ny, nz), light.getDistance(px, py, pz), li, walk);
             return walk.product;
@@ -161,6 +163,7 @@ final class WhittedShader {
         double[] disk = ctx.disk;
         for (int i = 0; i < shadowSamples; ++i) {
             ctx.stopIfInterrupted(); // a soft shadow may take millions of rays
+            ctx.requireWithinBudget(1);
             diskPoint(i, shadowSamples, offset, radius, ctx);
             double sx = c.getX() + disk[0] * ax + disk[1] * bx;
             double sy = c.getY() + disk[0] * ay + disk[1] * by;
@@ -305,6 +308,7 @@ final class WhittedShader {
      * hit, shaded at that level, or the background; into and returned as {@code at.colour}.
      */
     private Rgb shadeSecondaryRay(Level at, int budget, TraceContext ctx) {
+        ctx.requireWithinBudget(1); // a path that reflects and transmits at every level doubles at each
         ctx.secondaryRays++;
         if (world.closestHit(at.hit)) return calcColor(at, budget, ctx);
         return at.colour.set(scene.background);

@@ -3,6 +3,9 @@ package geometries;
 import static geometries.Hits.assertHits;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatNullPointerException;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.util.List;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
@@ -64,6 +67,49 @@ class GeometriesTest {
             Geometries nested = new Geometries(new Geometries(sphere), new Geometries(new Geometries(triangle), plane));
             assertHits(nested, new Ray(new Point(0, 0, 10), DOWN), new Point(0, 0, 6), new Point(0, 0, 4), new Point(0, 0, 2),
                     new Point(0, 0, 0));
+        }
+
+        /** {@code inner} inside {@code depth} − 1 lists, each within the next. */
+        private Geometries nest(int depth, Intersectable inner) {
+            Geometries list = new Geometries(inner);
+            for (int i = 1; i < depth; ++i) list = new Geometries(list);
+            return list;
+        }
+
+        @Test
+        @DisplayName("10,000 levels deep: every year's query answers (a walk, not a recursion per level), in the items' order")
+        void deepNest() {
+            Geometries deep = new Geometries(plane, nest(10_000, sphere), nest(5_000, new Geometries(triangle)));
+            Ray ray = new Ray(new Point(0, 0, 10), DOWN);
+            List<Point> expected = List.of(new Point(0, 0, 0), new Point(0, 0, 6), new Point(0, 0, 4), new Point(0, 0, 2));
+            assertThat(deep.findIntersections(ray)).containsExactlyElementsOf(expected);
+            assertThat(deep.findGeoIntersections(ray)).extracting(gp -> gp.point).containsExactlyElementsOf(expected);
+            assertThat(deep.calculateIntersections(ray)).extracting(gp -> gp.geometry)
+                    .containsExactly(plane, sphere, sphere, triangle);
+            assertThat(deep.calcIntersections(ray, 8)).extracting(gp -> gp.point) // within 8 of the head: not the plane
+                    .containsExactly(new Point(0, 0, 6), new Point(0, 0, 4), new Point(0, 0, 2));
+            assertThat(ray.findClosestPoint(deep.findIntersections(ray))).isEqualTo(new Point(0, 0, 6));
+        }
+
+        @Test
+        @DisplayName("a list met twice (not within itself) gives its hits twice, as the course's recursion did")
+        void sharedList() {
+            Geometries shared = new Geometries(sphere);
+            assertThat(new Geometries(shared, new Geometries(shared)).findIntersections(new Ray(new Point(0, 0, 10), DOWN)))
+                    .containsExactly(new Point(0, 0, 6), new Point(0, 0, 4), new Point(0, 0, 6), new Point(0, 0, 4));
+        }
+
+        @Test
+        @DisplayName("a list within itself: refused with its depth, not walked for ever")
+        void cycle() {
+            Geometries outer = new Geometries(sphere);
+            Geometries inner = new Geometries(triangle);
+            outer.add(new Geometries(inner));
+            inner.add(outer);
+            assertThatThrownBy(() -> outer.findIntersections(new Ray(new Point(0, 0, 10), DOWN)))
+                    .isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("the geometries contain themselves: a Geometries list is nested in itself, 3 levels down,"
+                            + " so no query can walk them");
         }
 
     }

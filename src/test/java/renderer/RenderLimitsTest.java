@@ -128,6 +128,18 @@ class RenderLimitsTest {
             assertThat(ImageWriter.bytesNeeded(40_000, 40_000)).isEqualTo(6_400_000_000L);
             assertThat(ImageWriter.memoryNeeded(1, 1)).startsWith("image 1x1 needs 1 MB");
         }
+
+        @Test
+        @DisplayName("an image within the heap's limit says how much was free, so the refusal does not read as a contradiction")
+        void withinTheLimit() {
+            long max = Runtime.getRuntime().maxMemory();
+            assumeTrue(max != Long.MAX_VALUE && max < ImageWriter.bytesNeeded(40_000, 40_000), "no heap limit, or one above 6.4 GB");
+            int side = (int) Math.sqrt(max / 4.0 * 0.99); // 99 % of the limit: needs less than it
+            assertThat(ImageWriter.memoryNeeded(side, side))
+                    .matches("image " + side + "x" + side + " needs \\d+ MB; Java may use at most " + (max >> 20)
+                            + " MB here, of which about \\d+ MB were free for it \\(the image is one array\\)");
+            assertThat(ImageWriter.memoryNeeded(40_000, 40_000)).doesNotContain("free"); // over the limit: the limit says it
+        }
     }
 
     @Nested
@@ -162,7 +174,7 @@ class RenderLimitsTest {
             assertThat(thrown).hasSize(1);
             assertThat(thrown.get(0)).isInstanceOf(ConcurrentModificationException.class)
                     .hasMessage("the scene 'every-effect' changed during the render of changed: its geometries were added"
-                            + " to (1 times) (a scene must not change while it renders; render it again when it is complete)");
+                            + " to (1 time) (a scene must not change while it renders; render it again when it is complete)");
         }
 
         /**

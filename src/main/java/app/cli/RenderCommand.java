@@ -63,21 +63,27 @@ public final class RenderCommand implements Callable<Integer> {
     /** Percent between redraws of the terminal progress bar. */
     private static final double BAR_STEP = 1;
 
-    /** The stated limits, for --help: each is refused with a message that names it. */
+    /**
+     * The stated limits, for --help: each is refused with a message that names it. Each line fits
+     * picocli's 80 columns (a longer one wraps to column 0, out of the table).
+     */
     private static final String[] LIMITS = {
             "  threads            at most " + Camera.MAX_THREADS_PER_CORE + " per core (" + Camera.maxThreads() + " here)",
             "  samples per pixel  at most " + Camera.MAX_SAMPLES_PER_PIXEL + " (RANDOM grid, depth-of-field samples)",
             "  rays per pixel     at most " + RenderSettings.MAX_RAYS_PER_PIXEL + ": samples per pixel",
-            "                     (grid, adaptive, lens) x beam-size x shadow-samples",
+            "                     (grid, adaptive, lens) x (1 + 2 x beam-size)",
+            "                     x (1 + shadow-samples x lights with a radius",
+            "                     + other lights); deeper bounces counted as traced",
             "  image              at most " + RenderSettings.MAX_PIXELS + " pixels, written to images/<name>.png:",
-            "                     a name of at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH
-                    + " characters, no / \\ : .. or invisible format characters (U+202E...)",
+            "                     a name of at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH + " characters, no / \\ : ..",
+            "                     and no control, invisible or space-like character",
+            "                     other than the space (U+202E, U+3164, U+00A0...)",
             "  scene file         at most " + Limits.MAX_SCENE_BYTES + " bytes, elements nested at most "
                     + Limits.MAX_NESTING_DEPTH + " deep,",
             "                     numbers at most " + magnitude(Limits.MAX_MAGNITUDE) + " in magnitude,",
             "                     sizes and factors 0 or at least " + magnitude(Limits.MIN_MAGNITUDE),
-            "  OBJ file           a regular .obj file inside the scene file's folder (or --mesh-root),",
-            "                     of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
+            "  OBJ file           a regular .obj file inside the scene file's folder",
+            "                     (or --mesh-root), of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
             "                     lines of at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters",
             "  memory             what does not fit in Java's heap (-Xmx) fails at once" };
 
@@ -133,7 +139,10 @@ public final class RenderCommand implements Callable<Integer> {
             description = { "Render on Apache Spark, byte-identical to the local render: MASTER is a Spark master URL"
                     + " (local[2], spark://HOST:7077, yarn, k8s://...) or 'submit' for the --master of spark-submit.",
                     "Needs the command line built with Spark (mvn -Pspark package) and Spark on the class path"
-                            + " (the 'spark' Maven profile or spark-submit; see README.md)." })
+                            + " (the 'spark' Maven profile or spark-submit; see README.md).",
+                    "A cluster master needs the runnable jar: under spark-submit, or with java -cp target/raytracer.jar"
+                            + " and Spark's jars (the command ships the jar); from the Maven profile's class folders"
+                            + " only local[N] runs, and a cluster master is refused at once." })
     private String spark;
     // ===== end Spark =====
 
@@ -191,13 +200,14 @@ public final class RenderCommand implements Callable<Integer> {
 
     private static void usageError(CommandLine commandLine, String message) {
         PrintWriter w = commandLine.getErr();
-        w.println(NAME + ": " + message);
+        w.println(NAME + ": " + Messages.visible(message));
         w.println("Try 'java -jar raytracer.jar --help' for more information.");
     }
 
     private static String describe(Throwable e) {
         String message = e.getMessage();
-        return message == null || message.isBlank() ? e.getClass().getSimpleName() : message;
+        // A message may quote a file's or a user's text: nothing in it reaches the terminal raw.
+        return message == null || message.isBlank() ? e.getClass().getSimpleName() : Messages.visible(message);
     }
 
     @Override
@@ -212,7 +222,7 @@ public final class RenderCommand implements Callable<Integer> {
             err.println(e.getMessage());
             return BAD_INPUT;
         } catch (IOException e) {
-            err.println(Messages.cannotReadScene(scene, e));
+            err.println(Messages.visible(Messages.cannotReadScene(scene, e)));
             return BAD_INPUT;
         } catch (OutOfMemoryError e) {
             // Meshes within the size limits can still outgrow a small heap: one line, at once.
@@ -248,12 +258,17 @@ public final class RenderCommand implements Callable<Integer> {
         } catch (IllegalArgumentException e) {
             // A value the camera refuses that neither the reader nor the options rejected: bad
             // input all the same, in one line.
-            err.println(job.source() + ": " + e.getMessage());
+            err.println(Messages.visible(job.source() + ": " + e.getMessage()));
             return BAD_INPUT;
         }
 
         try {
             camera.render();
+        } catch (OutOfMemoryError e) {
+            // The BVH's build names itself; anything else, the render as a whole: one line either way.
+            err.println(outOfMemory(e, "render " + settings.imageName() + " (" + settings.width() + "x"
+                    + settings.height() + ")"));
+            return FAILURE;
         } finally {
             if (bar != null) bar.finish();
         }
@@ -261,7 +276,10 @@ public final class RenderCommand implements Callable<Integer> {
         try {
             image.writeToImage(target);
         } catch (UncheckedIOException e) {
-            err.println(NAME + ": " + e.getMessage());
+            err.println(NAME + ": " + Messages.visible(e.getMessage()));
+            return FAILURE;
+        } catch (OutOfMemoryError e) { // the PNG encoder's own copy of the pixels
+            err.println(outOfMemory(e, "write " + target + " (" + settings.width() + "x" + settings.height() + ")"));
             return FAILURE;
         }
         if (!quiet)
@@ -394,6 +412,19 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     /** "; Java may use at most N MB here", or nothing when the JVM states no limit. */
+    /**
+     * The one line for an {@code OutOfMemoryError} while rendering or writing: the library's own
+     * message when it named what needed the memory (the BVH, an image), else what was being done,
+     * the limit and the option that raises it.
+     */
+    static String outOfMemory(OutOfMemoryError e, String doing) {
+        String message = e.getMessage();
+        if (message != null && (message.startsWith("the BVH ") || message.startsWith("image ")))
+            return NAME + ": " + Messages.visible(message);
+        return NAME + ": not enough memory to " + Messages.visible(doing) + maxMemory()
+                + " (give Java more memory with -Xmx, or render it smaller)";
+    }
+
     private static String maxMemory() {
         long max = Runtime.getRuntime().maxMemory();
         return max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB here";

@@ -376,12 +376,13 @@ public final class RenderSettings implements java.io.Serializable {
      * @throws NullPointerException     for a null name
      * @throws IllegalArgumentException for a blank name, one longer than
      *                                  {@link #MAX_IMAGE_NAME_LENGTH}, or one with a path separator
-     *                                  ({@code /} or {@code \}), a drive colon, {@code ..} or a
-     *                                  control character, naming it; for one with an invisible
-     *                                  format character (Unicode category Cf: the bidirectional
-     *                                  overrides and isolates U+202A–U+202E and U+2066–U+2069, the
-     *                                  marks U+200E, U+200F and U+061C, U+200B, U+FEFF...), naming
-     *                                  its code point
+     *                                  ({@code /} or {@code \}), a drive colon or {@code ..},
+     *                                  naming it; for one with a character that would not show
+     *                                  as what it is ({@link Messages#hidden}: control, format and
+     *                                  bidirectional characters, separators and spaces other than
+     *                                  U+0020, private-use and unassigned code points, Unicode's
+     *                                  default-ignorable characters such as the Hangul fillers, the
+     *                                  blank braille pattern), naming its code point and its kind
      */
     public static String requireImageName(String name) {
         Objects.requireNonNull(name, "image name");
@@ -389,16 +390,14 @@ public final class RenderSettings implements java.io.Serializable {
         if (name.length() > MAX_IMAGE_NAME_LENGTH)
             throw new IllegalArgumentException("the image name has " + name.length() + " characters, more than the limit of "
                     + MAX_IMAGE_NAME_LENGTH);
-        name.codePoints().filter(cp -> Character.getType(cp) == Character.FORMAT).findFirst().ifPresent(cp -> {
-            throw new IllegalArgumentException(String.format(Locale.ROOT, "the image name contains U+%04X, an invisible"
-                    + " or direction-changing character (the file name would display as something else)", cp));
+        name.codePoints().filter(cp -> Messages.hidden(cp) != null).findFirst().ifPresent(cp -> {
+            throw new IllegalArgumentException(String.format(Locale.ROOT, "the image name contains U+%04X, %s (the file"
+                    + " name would display as something else, or not at all)", cp, Messages.hidden(cp)));
         });
         for (int i = 0; i < name.length(); ++i) {
             char c = name.charAt(i);
-            if (c == '/' || c == '\\' || c == ':' || Character.isISOControl(c))
-                throw new IllegalArgumentException("the image name '" + name.replaceAll("[\\p{Cntrl}\\p{Cf}]", "?")
-                        + "' is a path, not a name (it contains " + (Character.isISOControl(c) ? "a control character"
-                                : "'" + c + "'") + ")");
+            if (c == '/' || c == '\\' || c == ':')
+                throw new IllegalArgumentException("the image name '" + name + "' is a path, not a name (it contains '" + c + "')");
         }
         if (name.contains(".."))
             throw new IllegalArgumentException("the image name '" + name + "' contains '..' (a name, not a path, is expected)");
@@ -481,7 +480,20 @@ public final class RenderSettings implements java.io.Serializable {
      *                                  with the library's message naming the factors
      */
     public RenderSettings requireRayBudget() {
-        applyTo(Camera.getBuilder(), new Scene("ray budget"), new ImageWriter(1, 1)).requireRayBudget();
+        return requireRayBudget(new Scene("ray budget"));
+    }
+
+    /**
+     * Checks this specification against the library's ray budget for {@code scene}'s lights (a
+     * light with a radius takes the shadow samples at each shaded point, every other light one
+     * ray), as {@code Camera.Builder.build()} will for a camera over that scene.
+     *
+     * @param scene the scene the settings will render: only its lights are read
+     * @return this specification
+     * @throws IllegalArgumentException as {@link #requireRayBudget()}, with the lights among the factors
+     */
+    public RenderSettings requireRayBudget(Scene scene) {
+        applyTo(Camera.getBuilder(), scene, new ImageWriter(1, 1)).requireRayBudget();
         return this;
     }
 

@@ -46,9 +46,10 @@ public class SceneFormatException extends Exception {
     }
 
     private static String format(String file, int line, int column, String reason) {
-        String where = line > 0 ? file + ":" + line + ":" + column : file;
-        // One line, whatever a wrapped library message contained.
-        return where + ": " + reason.replaceAll("\\s*\\R\\s*", " ");
+        String where = Messages.visible(line > 0 ? file + ":" + line + ":" + column : file);
+        // One line, whatever a wrapped library message contained, and no character a terminal
+        // would obey (a C1 control from a hostile OBJ line) or hide (a direction override).
+        return where + ": " + Messages.visible(reason.replaceAll("\\s*\\R\\s*", " "));
     }
 
     /** @return the file as the user named it */

@@ -110,20 +110,9 @@ final class XmlElement {
         return "<" + name + " " + attribute + "=\"" + visible(attributes.get(attribute)) + "\">";
     }
 
-    /**
-     * {@code value} with its control and invisible format characters written as backslash-u escapes:
-     * a message quoting it stays one line and displays as the file holds it (a right-to-left
-     * override would reverse the rest of the line).
-     */
+    /** {@code value} as {@link Messages#visible(String)} writes it: one line, nothing hidden. */
     private static String visible(String value) {
-        if (value == null) return null;
-        StringBuilder b = new StringBuilder(value.length());
-        value.codePoints().forEach(cp -> {
-            if (Character.isISOControl(cp) || Character.getType(cp) == Character.FORMAT)
-                b.append(String.format(java.util.Locale.ROOT, "\\u%04X", cp));
-            else b.appendCodePoint(cp);
-        });
-        return b.toString();
+        return Messages.visible(value);
     }
 
     /** An error at the start of this element's tag. */

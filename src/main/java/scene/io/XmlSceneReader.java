@@ -223,7 +223,8 @@ public final class XmlSceneReader {
         RenderSettings settings = RenderSettings.defaults(image != null && image.has("name")
                 ? image.required("name", IMAGE_NAME) : imageNameOf(root, scene.name));
         if (image != null) settings = image(image, settings);
-        if ((part = parts.get("render")) != null) settings = render(part, settings);
+        if ((part = parts.get("render")) != null) settings = render(part, settings, scene);
+        else if ((part = parts.get("lights")) != null) requireRayBudget(part, "", settings, scene); // the defaults, these lights
         ViewSpec view = (part = parts.get("camera")) != null ? camera(part) : null;
         return new LoadedScene(scene, view, settings, view != null ? null
                 : root.error("the scene has no <camera> (expected a <camera> element inside <scene> to render it)"));
@@ -543,14 +544,14 @@ public final class XmlSceneReader {
         return e.has(attribute) ? with.apply(s, e.required(attribute, type)) : s;
     }
 
-    private static RenderSettings render(XmlElement e, RenderSettings s) throws SceneFormatException {
+    private static RenderSettings render(XmlElement e, RenderSettings s, Scene scene) throws SceneFormatException {
         e.allowAttributes(List.of("threads", "seed", "bvh", "beam-size", "shadow-samples"));
         s = stated(e, "threads", THREADS, s, RenderSettings::withThreads);
         s = stated(e, "seed", LONG, s, RenderSettings::withSeed);
         s = stated(e, "bvh", BOOLEAN, s, RenderSettings::withBvh);
         s = stated(e, "beam-size", POSITIVE_INTEGER, s, RenderSettings::withBeamSize);
         s = stated(e, "shadow-samples", POSITIVE_INTEGER, s, RenderSettings::withShadowSamples);
-        requireRayBudget(e, e.has("beam-size") ? "beam-size" : "shadow-samples", s);
+        requireRayBudget(e, e.has("beam-size") ? "beam-size" : "shadow-samples", s, scene);
         Map<String, XmlElement> parts = uniqueChildren(e, RENDER_CHILDREN);
         XmlElement aa = parts.get("anti-aliasing");
         if (aa != null) {
@@ -560,7 +561,7 @@ public final class XmlSceneReader {
             AntiAliasing mode = aa.required("mode", ValueType.enumeration(AntiAliasing.class));
             s = stated(aa, "depth", ADAPTIVE_DEPTH, s.withAntiAliasing(mode), RenderSettings::withAdaptiveDepth);
             s = stated(aa, "threshold", NON_NEGATIVE, s, RenderSettings::withAdaptiveThreshold);
-            requireRayBudget(aa, mode == AntiAliasing.RANDOM ? "grid" : mode == AntiAliasing.ADAPTIVE ? "depth" : "mode", s);
+            requireRayBudget(aa, mode == AntiAliasing.RANDOM ? "grid" : mode == AntiAliasing.ADAPTIVE ? "depth" : "mode", s, scene);
         }
         XmlElement dof = parts.get("depth-of-field");
         if (dof != null) {
@@ -570,23 +571,25 @@ public final class XmlSceneReader {
             double aperture = dof.required("aperture", NON_NEGATIVE);
             s = stated(dof, "samples", LENS_SAMPLES, s.withDepthOfField(focalDistance, aperture),
                     RenderSettings::withDepthOfFieldSamples);
-            requireRayBudget(dof, "samples", s);
+            requireRayBudget(dof, "samples", s, scene);
         }
         return s;
     }
 
     /**
-     * The library's ray budget (see {@link RenderSettings#requireRayBudget()}) for what the file
-     * states so far: a budget the element just exceeded is reported at {@code attribute} of
-     * {@code e}, or at {@code e} when the attribute is not written (a default made the product too
-     * large).
+     * The library's ray budget (see {@link RenderSettings#requireRayBudget(Scene)}) for what the
+     * file states so far, over the scene's lights (read before the settings): a budget the element
+     * just exceeded is reported at {@code attribute} of {@code e}, or at {@code e} when the
+     * attribute is not written (a default, or the lights, made the product too large).
      */
-    private static void requireRayBudget(XmlElement e, String attribute, RenderSettings s) throws SceneFormatException {
+    private static void requireRayBudget(XmlElement e, String attribute, RenderSettings s, Scene scene)
+            throws SceneFormatException {
         try {
-            s.requireRayBudget();
+            s.requireRayBudget(scene);
         } catch (IllegalArgumentException ex) {
-            String reason = "invalid <" + e.name() + ">: " + ex.getMessage() + " (expected samples per pixel × beam-size"
-                    + " × shadow-samples at most " + RenderSettings.MAX_RAYS_PER_PIXEL + ")";
+            String reason = "invalid <" + e.name() + ">: " + ex.getMessage() + " (expected samples per pixel"
+                    + " × (1 + 2 × beam-size) × (1 + shadow-samples × lights with a radius + other lights) at most "
+                    + RenderSettings.MAX_RAYS_PER_PIXEL + ")";
             throw e.has(attribute) ? e.errorAt(attribute, reason, ex) : e.error(reason, ex);
         }
     }

@@ -61,8 +61,20 @@ class ExecutorWatchTest {
     }
 
     @Test
+    @DisplayName("no executor yet when the job starts, then the first ones: they joined, they are not back")
+    void joined() {
+        executors = 0;
+        at(0);
+        executors = 1;
+        assertThat(at(2)).isFalse();
+        assertThat(said).containsExactly("waiting for executors: none is available (the job ends if none comes within 30 s)",
+                "executors joined; the job goes on");
+    }
+
+    @Test
     @DisplayName("executors back within the timeout: the wait starts afresh")
     void back() {
+        at(0); // seen
         executors = 0;
         at(0);
         executors = 1;
@@ -72,5 +84,30 @@ class ExecutorWatchTest {
         assertThat(at(69)).isFalse();
         assertThat(at(70)).isTrue();
         assertThat(said).hasSize(3).element(1).isEqualTo("executors are back; the job goes on");
+    }
+
+    @Test
+    @DisplayName("a timeout under a second is said to the millisecond, not as 0 s")
+    void shortTimeout() {
+        List<String> lines = new ArrayList<>();
+        ExecutorWatch w = new ExecutorWatch(new ExecutorWatch.Cluster() {
+            @Override
+            public int executors() {
+                return 0;
+            }
+
+            @Override
+            public void cancel(String reason) {
+                lines.add(reason);
+            }
+        }, 0.001, () -> now, lines::add);
+        now = 0;
+        w.check();
+        now = 2_000_000;
+        assertThat(w.check()).isTrue();
+        assertThat(lines).containsExactly(
+                "waiting for executors: none is available (the job ends if none comes within 0.001 s)",
+                "no executor for 0.001 s: the cluster lost every worker, or has none for this job (the limit is"
+                        + " spark.raytracer.executorTimeout)");
     }
 }

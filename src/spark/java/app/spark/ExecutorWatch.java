@@ -9,7 +9,7 @@ import java.util.function.LongSupplier;
  * long as it takes: with every worker gone, a job neither fails nor progresses, and the driver
  * says nothing. The watch looks at the cluster's executors now and then ({@link #check()}); when
  * none has been there for the timeout, it cancels the job with a reason the driver prints in one
- * line (exit 1). It says when it starts waiting, and when executors are back.
+ * line (exit 1). It says when it starts waiting, and when executors join (the first) or are back.
  */
 final class ExecutorWatch {
     /** The cluster as the watch sees it: a seam for the tests' fake clusters. */
@@ -31,6 +31,8 @@ final class ExecutorWatch {
     private final Consumer<String> say;
     /** When the cluster was last seen without an executor; -1 while it has some. */
     private long noneSince = -1;
+    /** Whether the watch has seen an executor: the first ones to come are not "back". */
+    private boolean seen;
     private volatile String reason;
 
     /**
@@ -56,21 +58,28 @@ final class ExecutorWatch {
         if (reason != null) return true;
         long now = clock.getAsLong();
         if (cluster.executors() > 0) {
-            if (noneSince >= 0) say.accept("executors are back; the job goes on");
+            if (noneSince >= 0) say.accept(seen ? "executors are back; the job goes on" : "executors joined; the job goes on");
             noneSince = -1;
+            seen = true;
             return false;
         }
         if (noneSince < 0) {
             noneSince = now;
-            say.accept(String.format(Locale.ROOT, "waiting for executors: none is available (the job ends if none comes"
-                    + " within %.0f s)", timeoutNanos / 1e9));
+            say.accept("waiting for executors: none is available (the job ends if none comes within " + seconds() + ")");
             return false;
         }
         if (now - noneSince < timeoutNanos) return false;
-        reason = String.format(Locale.ROOT, "no executor for %.0f s: the cluster lost every worker, or has none for"
-                + " this job (the limit is spark.raytracer.executorTimeout)", timeoutNanos / 1e9);
+        reason = "no executor for " + seconds() + ": the cluster lost every worker, or has none for this job (the limit"
+                + " is spark.raytracer.executorTimeout)";
         cluster.cancel(reason);
         return true;
+    }
+
+    /** The timeout in words: whole seconds as {@code 120 s}, shorter or finer ones to the millisecond ({@code 0.001 s}). */
+    private String seconds() {
+        double s = timeoutNanos / 1e9;
+        return (s == Math.rint(s) ? String.format(Locale.ROOT, "%.0f", s)
+                : String.format(Locale.ROOT, "%.3f", s).replaceAll("0+$", "")) + " s";
     }
 
     /** @return why the watch cancelled the job, or null when it did not */

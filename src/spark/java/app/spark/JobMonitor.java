@@ -29,6 +29,8 @@ final class JobMonitor extends SparkListener {
     private int attempts;
     private int retries;
     private int failures;
+    /** Whether Spark has started a job of the group: the executor watch is armed from then on. */
+    private boolean jobStarted;
 
     /**
      * @param jobGroup          the job group of the render's jobs
@@ -46,6 +48,18 @@ final class JobMonitor extends SparkListener {
         if (jobStart.properties() == null || !jobGroup.equals(jobStart.properties().getProperty("spark.jobGroup.id")))
             return;
         for (Object stage : CollectionConverters.asJava(jobStart.stageIds())) stages.add((Integer) stage);
+        jobStarted = true;
+        notifyAll();
+    }
+
+    /**
+     * Waits until Spark has started a job of the group (the listener hears of it just after the
+     * submission).
+     *
+     * @throws InterruptedException when the waiting thread is interrupted (the job ended first)
+     */
+    synchronized void awaitJobStart() throws InterruptedException {
+        while (!jobStarted) wait();
     }
 
     @Override

@@ -28,6 +28,26 @@ final class SparkCommand {
     private SparkCommand() {
     }
 
+    /** @return whether {@code master} runs its executors in the driver's JVM (local, local[N], local[N,M], local[*]) */
+    static boolean runsInThisJvm(String master) {
+        return master.equals("local") || master.startsWith("local[");
+    }
+
+    /**
+     * The jar this program's classes come from, for {@code spark.jars}; null when they come from
+     * a class folder (a build's target/classes) or from where no file is.
+     */
+    static Path applicationJar() {
+        try {
+            java.security.CodeSource source = SparkCommand.class.getProtectionDomain().getCodeSource();
+            if (source == null || source.getLocation() == null) return null;
+            Path path = Path.of(source.getLocation().toURI());
+            return java.nio.file.Files.isRegularFile(path) && path.toString().endsWith(".jar") ? path : null;
+        } catch (java.net.URISyntaxException | IllegalArgumentException | java.nio.file.FileSystemNotFoundException e) {
+            return null; // not a file on this machine: nothing to ship
+        }
+    }
+
     static int run(SparkRequest request, PrintStream progress, PrintStream out, PrintStream err) {
         return run(request, TileProbe.NONE, progress, out, err);
     }
@@ -46,13 +66,13 @@ final class SparkCommand {
                 err.println(e.getMessage());
                 return SparkEntry.BAD_INPUT;
             } catch (IOException e) {
-                err.println(Messages.cannotReadScene(scene, e));
+                err.println(Messages.visible(Messages.cannotReadScene(scene, e)));
                 return SparkEntry.BAD_INPUT;
             }
             try {
                 frame = frame.withSettings(request.settings().apply(frame.settings()));
             } catch (IllegalArgumentException e) {
-                err.println(scene + ": " + e.getMessage());
+                err.println(Messages.visible(scene + ": " + e.getMessage()));
                 return SparkEntry.BAD_INPUT;
             }
             if (request.output() != null) frame = frame.withOutput(request.output());
@@ -73,6 +93,27 @@ final class SparkCommand {
                     + "give a master URL such as --spark local[2], or " + SparkRunner.HOW_TO_RUN);
             return SparkEntry.BAD_INPUT;
         }
+        String master = conf.get("spark.master");
+        if (!runsInThisJvm(master) && !conf.contains("spark.jars")) {
+            // Outside spark-submit nothing ships this program's classes to a cluster's executors,
+            // whose every task then failed with ClassNotFoundException after a minute: ship the
+            // jar this class came from, or, run from class folders (the Maven profile), refuse.
+            Path jar = applicationJar();
+            if (jar == null) {
+                err.println("raytracer: --spark " + master + ": a cluster's executors need this program's jar, and it runs"
+                        + " from class folders here, which Spark cannot ship: build it (mvn -Pspark package) and run"
+                        + " spark-submit --master " + master + " --class app.cli.Main target/raytracer.jar --spark submit ...,"
+                        + " or render on this machine with --spark local[N]");
+                return SparkEntry.BAD_INPUT;
+            }
+            conf.set("spark.jars", jar.toUri().toString());
+        }
+        try {
+            SparkRenderer.executorTimeout(conf); // before Spark starts: a bad value costs no context
+        } catch (IllegalArgumentException e) {
+            err.println("raytracer: " + Messages.visible(e.getMessage()));
+            return SparkEntry.BAD_INPUT;
+        }
         JavaSparkContext started;
         try {
             started = new JavaSparkContext(conf);
@@ -84,10 +125,17 @@ final class SparkCommand {
             new SparkRenderer(spark).setProbe(probe).setProgress(request.progressStep()).setOutput(progress)
                     .setSummary(request.summary()).render(frames);
         } catch (SparkRenderException e) {
-            err.println("raytracer: failed on Spark: " + e.getMessage());
+            err.println("raytracer: failed on Spark: " + Messages.visible(e.getMessage()));
             return 1;
         } catch (UncheckedIOException e) {
-            err.println("raytracer: " + e.getMessage());
+            err.println("raytracer: " + Messages.visible(e.getMessage()));
+            return 1;
+        } catch (OutOfMemoryError e) { // on the driver, outside the job: assembling, or the PNG's encoding
+            long max = Runtime.getRuntime().maxMemory();
+            err.println("raytracer: failed on Spark: the driver ran out of memory beside the job's images ("
+                    + SparkRenderer.imageSizes(frames) + ")" + (max == Long.MAX_VALUE ? "" : "; Java may use at most "
+                    + (max >> 20) + " MB there") + " (give the driver more memory with spark-submit --driver-memory, or -Xmx"
+                    + " for a local master; or render it smaller)");
             return 1;
         }
         if (request.summary())

@@ -12,6 +12,7 @@ import java.util.UUID;
 
 import org.apache.spark.TaskContext;
 import org.apache.spark.api.java.JavaRDD;
+import org.apache.spark.SparkConf;
 import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.broadcast.Broadcast;
 
@@ -71,7 +72,34 @@ public final class SparkRenderer {
     public SparkRenderer(JavaSparkContext spark) {
         requireSupportedJava();
         this.spark = Objects.requireNonNull(spark, "spark context");
-        this.executorTimeout = spark.sc().getConf().getTimeAsSeconds(EXECUTOR_TIMEOUT, "120s");
+        this.executorTimeout = executorTimeout(spark.sc().getConf());
+    }
+
+    /**
+     * The context's {@value #EXECUTOR_TIMEOUT}, checked as {@link #setExecutorTimeout} checks its
+     * argument: a time Spark reads ({@code 120s}, {@code 5m}, {@code 500ms}) that is positive.
+     * The command line asks it before Spark starts, so a bad value costs no context.
+     *
+     * @param conf the configuration (spark-submit's {@code --conf}, or {@code -Dspark.…})
+     * @return the timeout in seconds, &gt; 0; 120 when it is not set
+     * @throws IllegalArgumentException naming the setting and the value, for one that is not a
+     *                                  time or not positive
+     */
+    static double executorTimeout(SparkConf conf) {
+        String given = conf.get(EXECUTOR_TIMEOUT, "120s");
+        long millis;
+        try {
+            // A bare number is seconds, as Spark's getTimeAsSeconds reads it (getTimeAsMs would take milliseconds).
+            millis = given.trim().matches("-?\\d+") ? Math.multiplyExact(Long.parseLong(given.trim()), 1000L)
+                    : conf.getTimeAsMs(EXECUTOR_TIMEOUT, "120s");
+        } catch (NumberFormatException | ArithmeticException e) {
+            throw new IllegalArgumentException(EXECUTOR_TIMEOUT + " '" + given + "' is not a time (expected a positive"
+                    + " time such as 120s, 5m or 500ms)", e);
+        }
+        if (millis <= 0)
+            throw new IllegalArgumentException(EXECUTOR_TIMEOUT + " '" + given + "' is not positive (expected a positive"
+                    + " time such as 120s, 5m or 500ms)");
+        return millis / 1000.0;
     }
 
     /**
@@ -215,7 +243,7 @@ public final class SparkRenderer {
         JobMonitor monitor = new JobMonitor("raytracer-" + UUID.randomUUID(),
                 groups.stream().mapToInt(List::size).toArray(), progress);
 
-        run(new FrameSet(sent), groups, monitor, label, assembly);
+        run(new FrameSet(sent), groups, monitor, label, assembly, imageSizes(frames));
         double renderSeconds = (System.nanoTime() - start) / 1e9;
         long pixels = write(frames, assembly.images);
 
@@ -311,7 +339,8 @@ public final class SparkRenderer {
      *
      * @throws SparkRenderException when the job fails (a task failed every attempt)
      */
-    private void run(FrameSet frames, List<List<Tile>> groups, JobMonitor monitor, String label, Assembly assembly) {
+    private void run(FrameSet frames, List<List<Tile>> groups, JobMonitor monitor, String label, Assembly assembly,
+                     String images) {
         Broadcast<FrameSet> scenes = spark.broadcast(frames);
         spark.sc().addSparkListener(monitor);
         spark.setJobGroup(monitor.jobGroup(), label, false);
@@ -320,7 +349,7 @@ public final class SparkRenderer {
                 line -> {
                     if (progressStep > 0) out.println(label + ": " + line);
                 });
-        Thread watching = watching(watch, label);
+        Thread watching = watching(watch, monitor, label);
         try {
             JavaRDD<List<TilePixels>> rendered = spark.parallelize(groups, groups.size()).map(g -> {
                 List<TilePixels> done = new ArrayList<>(g.size());
@@ -346,6 +375,7 @@ public final class SparkRenderer {
             throw new SparkRenderException(label + ": interrupted", e);
         } catch (Exception e) { // SparkException is checked in Java's eyes but undeclared
             String reason = watch.reason();
+            if (reason == null) reason = driverOutOfMemory(e, images, Runtime.getRuntime().maxMemory());
             throw new SparkRenderException(label + ": " + (reason != null ? reason : firstLine(e)), e);
         } finally {
             watching.interrupt();
@@ -370,10 +400,15 @@ public final class SparkRenderer {
         };
     }
 
-    /** A daemon thread that checks {@code watch} every half second until it is interrupted or cancels the job. */
-    private static Thread watching(ExecutorWatch watch, String label) {
+    /**
+     * A daemon thread that waits until Spark has the job (a watch started before would count the
+     * time before the submission, and a timeout shorter than that would let the job run on), then
+     * checks {@code watch} every half second until it is interrupted or cancels the job.
+     */
+    private static Thread watching(ExecutorWatch watch, JobMonitor monitor, String label) {
         Thread t = new Thread(() -> {
             try {
+                monitor.awaitJobStart();
                 while (!watch.check()) Thread.sleep(500);
             } catch (InterruptedException e) {
                 // the job ended
@@ -412,6 +447,43 @@ public final class SparkRenderer {
     }
 
     /** The first line of an exception's message (Spark's carry a stack trace), or its class. */
+    /** @return the job's images and the memory they hold on the driver, as "11000x11000, 462 MB" */
+    static String imageSizes(List<SparkFrame> frames) {
+        long bytes = 0;
+        StringBuilder sizes = new StringBuilder();
+        for (SparkFrame f : frames) {
+            RenderSettings s = f.settings();
+            bytes += ImageWriter.bytesNeeded(s.width(), s.height());
+            if (sizes.length() > 0) sizes.append(" + ");
+            sizes.append(s.width()).append('x').append(s.height());
+        }
+        long mb = 1 << 20;
+        return sizes + ", " + (bytes + mb - 1) / mb + " MB";
+    }
+
+    /**
+     * The one line for a job that failed because the driver ran out of memory (Spark reports it
+     * as the job's failure, with the error's trace in its message: a task that could not be
+     * serialized beside the job's images, say), or null for another failure.
+     *
+     * @param e      the job's failure
+     * @param images {@link #imageSizes}
+     * @param max    the driver's heap limit ({@link Runtime#maxMemory()})
+     * @return the reason, naming the images, the limit and --driver-memory; null when the failure was not a lack of memory
+     */
+    static String driverOutOfMemory(Throwable e, String images, long max) {
+        boolean oom = false;
+        for (Throwable t = e; t != null && !oom; t = t.getCause())
+            oom = t instanceof OutOfMemoryError || (t.getMessage() != null && t.getMessage().contains("java.lang.OutOfMemoryError"));
+        if (!oom) return null;
+        String message = e.getMessage() == null ? "" : e.getMessage();
+        return "the driver ran out of memory " + (message.contains("Task serialization failed") ? "serializing the job's tasks"
+                : "during the job") + " beside the job's images (" + images + ")"
+                + (max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB there")
+                + " (give the driver more memory with spark-submit --driver-memory, or -Xmx for a local master; or render"
+                + " it smaller)";
+    }
+
     static String firstLine(Throwable e) {
         String m = e.getMessage();
         if (m == null || m.isBlank()) return e.getClass().getSimpleName();

@@ -66,6 +66,17 @@ class RenderCommandTest {
         return image;
     }
 
+    @Test
+    @DisplayName("out of memory while rendering or writing: one line, the library's own when it named the need, else what and -Xmx")
+    void outOfMemoryLine() {
+        String bvh = "the BVH over 4500000 primitives needs about 996 MB; Java may use at most 1200 MB here, of which about"
+                + " 900 MB were free (give Java more memory with -Xmx, …)";
+        assertThat(RenderCommand.outOfMemory(new OutOfMemoryError(bvh), "render teapot (100x100)")).isEqualTo("raytracer: " + bvh);
+        assertThat(RenderCommand.outOfMemory(new OutOfMemoryError("Java heap space"), "write images/x.png (100x100)"))
+                .startsWith("raytracer: not enough memory to write images/x.png (100x100)")
+                .endsWith("(give Java more memory with -Xmx, or render it smaller)").doesNotContain("\n");
+    }
+
     @Nested
     @DisplayName("--help and --version")
     class HelpAndVersion {

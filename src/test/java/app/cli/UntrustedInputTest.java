@@ -8,6 +8,7 @@ import java.io.RandomAccessFile;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.regex.Pattern;
+import java.util.List;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.DisplayName;
@@ -67,6 +68,9 @@ class UntrustedInputTest {
         return run(scene.toString(), "-o", dir.resolve("out.png").toString());
     }
 
+    /** A light with a radius, written after the element under test so that its columns stay put. */
+    private static final String SOFT_LIGHT = "<lights><point-light color=\"100 100 100\" position=\"0 5 0\" radius=\"1\"/></lights>";
+
     static Stream<Arguments> badValues() {
         return Stream.of(
                 Arguments.of("an attenuation of nothing: kc 0 and no kl, kq", "<lights><point-light color=\"100 100 100\""
@@ -87,14 +91,17 @@ class UntrustedInputTest {
                         "no ray through the view plane"),
                 Arguments.of("a 65536x65536 grid", "<render><anti-aliasing mode=\"random\" grid=\"65536 65536\"/></render>",
                         "2:38", "has 4294967296 samples per pixel, more than the limit of 65536"),
-                Arguments.of("adaptive depth 6 × beams of 256 × 16 shadow samples",
-                        "<render beam-size=\"256\"><anti-aliasing mode=\"adaptive\" depth=\"6\"/></render>", "2:56",
+                Arguments.of("adaptive depth 6 × beams of 256 × 16 shadow samples of a soft light",
+                        "<render beam-size=\"256\"><anti-aliasing mode=\"adaptive\" depth=\"6\"/></render>" + SOFT_LIGHT, "2:56",
                         "more than the limit of 16777216"),
                 Arguments.of("65536 lens samples", "<render><depth-of-field focal-distance=\"10\" aperture=\"1\""
                         + " samples=\"65537\"/></render>", "2:58", "depth-of-field samples must be from 1 to 65536"),
-                Arguments.of("lens samples × beams × shadow samples", "<render beam-size=\"100\"><depth-of-field"
-                        + " focal-distance=\"10\" aperture=\"1\" samples=\"60000\"/></render>", "2:74",
+                Arguments.of("lens samples × beams × shadow samples of a soft light", "<render beam-size=\"100\"><depth-of-field"
+                        + " focal-distance=\"10\" aperture=\"1\" samples=\"60000\"/></render>" + SOFT_LIGHT, "2:74",
                         "more than the limit of 16777216"),
+                Arguments.of("beams of 2048 × 4096 shadow samples of one soft light", "<render beam-size=\"2048\""
+                        + " shadow-samples=\"4096\"/>" + SOFT_LIGHT, "2:9", "(1 + 4096 shadow samples × 1 soft light"
+                        + " + 0 other lights) is 16785409 rays per pixel, more than the limit of 16777216"),
                 Arguments.of("beams of 2^31 - 1 rays", "<render beam-size=\"2147483647\"/>", "2:9",
                         "more than the limit of 16777216"),
                 Arguments.of("100000 threads", "<render threads=\"100000\"/>", "2:9",
@@ -224,6 +231,19 @@ class UntrustedInputTest {
             assertThat(Path.of(target + ".png")).doesNotExist();
         }
 
+        @ParameterizedTest(name = "U+{0}")
+        @ValueSource(strings = { "009B", "3164", "2028", "00A0" })
+        @DisplayName("a name with a control, invisible or look-alike character: refused, the character escaped on stderr")
+        void hidden(String hex) throws IOException {
+            String c = Character.toString(Integer.parseInt(hex, 16));
+            Path file = write("scene.xml", "<scene name=\"hostile\">\n<image name=\"a" + c + "[31mb\"/>\n"
+                    + "<camera location=\"0 0 0\" direction=\"0 0 -1\" up=\"0 1 0\" vp-size=\"1\" vp-distance=\"1\"/></scene>");
+            Run r = run(file.toString());
+            assertRefused(r, file, ":2:8", "the image name contains U+" + hex);
+            assertThat(r.errLines()).hasSize(1);
+            assertThat(r.err()).contains("\\u" + hex).doesNotContain(c);
+        }
+
         @ParameterizedTest(name = "name=\"{0}\"")
         @ValueSource(strings = { "../../x", "..", "a\\b", "c:x" })
         @DisplayName("a name that leaves images/")
@@ -274,13 +294,23 @@ class UntrustedInputTest {
         @Test
         @DisplayName("--aa random with the file's large grid over the ray budget: a usage error")
         void antiAliasing() throws IOException {
-            Path file = write("scene.xml", scene("<render beam-size=\"17\"><anti-aliasing mode=\"none\" grid=\"256 256\"/></render>"));
+            Path file = write("scene.xml", scene("<render beam-size=\"128\"><anti-aliasing mode=\"none\" grid=\"256 256\"/></render>"));
             Run r = run(file.toString(), "--aa", "random", "-o", dir.resolve("out.png").toString());
             assertThat(r.exitCode()).isEqualTo(RenderCommand.BAD_INPUT);
             assertThat(r.errLines().get(0)).isEqualTo("raytracer: --aa RANDOM: RANDOM sampling with 65536 samples per pixel"
-                    + " × beam size 17 × 16 shadow samples is 17825792 rays per pixel, more than the limit of "
+                    + " × (1 + 2 beams of 128 rays: reflection and transmission) × (1 + 16 shadow samples × 0 soft lights"
+                    + " + 0 other lights) is 16842752 rays per pixel, more than the limit of "
                     + RenderSettings.MAX_RAYS_PER_PIXEL);
             assertNothingWritten();
+        }
+
+        @Test
+        @DisplayName("--help fits 80 columns: no line wraps, and every Limits line stays in its table")
+        void helpFits() {
+            List<String> lines = run("--help").out().lines().toList();
+            assertThat(lines).allSatisfy(line -> assertThat(line.length()).as(line).isLessThanOrEqualTo(80));
+            List<String> limits = lines.subList(lines.indexOf("Limits (docs/scene-format.md, \"Limits\"):") + 1, lines.size());
+            assertThat(limits).isNotEmpty().allSatisfy(line -> assertThat(line).startsWith("  "));
         }
 
         @Test

@@ -21,8 +21,11 @@ import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
+import lighting.DirectionalLight;
+import lighting.PointLight;
 import primitives.Color;
 import primitives.Point;
+import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
@@ -251,16 +254,33 @@ class RenderSettingsTest {
         }
 
         @Test
-        @DisplayName("the library's figures: a 256×256 grid at 16×16 is the limit; ADAPTIVE depth 3 at 256×256 fits")
+        @DisplayName("the library's figures: a 256×256 grid with beams of 127 is the limit; ADAPTIVE depth 3 at 256×256 fits")
         void figures() {
             RenderSettings grid = RenderSettings.empty().withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(256, 256);
-            assertThat(grid.requireRayBudget()).isSameAs(grid);
-            assertThatThrownBy(() -> grid.withBeamSize(17).requireRayBudget()).isInstanceOf(IllegalArgumentException.class)
-                    .hasMessage("RANDOM sampling with 65536 samples per pixel × beam size 17 × 16 shadow samples is 17825792"
+            assertThat(grid.withBeamSize(127).requireRayBudget()).isNotNull(); // 65536 × 255
+            assertThatThrownBy(() -> grid.withBeamSize(128).requireRayBudget()).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("RANDOM sampling with 65536 samples per pixel × (1 + 2 beams of 128 rays: reflection and"
+                            + " transmission) × (1 + 16 shadow samples × 0 soft lights + 0 other lights) is 16842752"
                             + " rays per pixel, more than the limit of 16777216");
-            // The lattice of depth 3 traces at most (2^3 + 1)² = 81 camera rays: 81 × 256 × 256 < 2^24.
+            // The lattice of depth 3 traces at most (2^3 + 1)² = 81 camera rays: 81 × 513 × 257 < 2^24.
+            Scene oneSoftLight = new Scene("soft");
+            oneSoftLight.lights.add(new PointLight(new Color(1, 1, 1), new Point(0, 5, 0)).setRadius(1));
             RenderSettings.empty().withAntiAliasing(AntiAliasing.ADAPTIVE).withBeamSize(256).withShadowSamples(256)
-                    .requireRayBudget();
+                    .requireRayBudget(oneSoftLight);
+        }
+
+        @Test
+        @DisplayName("requireRayBudget(scene) counts the scene's lights: shadow samples for each soft light, one ray for each other")
+        void lights() {
+            Scene scene = new Scene("lights");
+            RenderSettings s = RenderSettings.empty().withBeamSize(256).withShadowSamples(256);
+            for (int i = 0; i < 127; ++i) scene.lights.add(new PointLight(new Color(1, 1, 1), new Point(0, 5, i)).setRadius(1));
+            assertThat(s.requireRayBudget(scene)).isSameAs(s); // 513 × 32,513
+            scene.lights.add(new DirectionalLight(new Color(1, 1, 1), new Vector(0, -1, 0)));
+            assertThat(s.requireRayBudget(scene)).isSameAs(s); // 513 × 32,514
+            scene.lights.add(new PointLight(new Color(1, 1, 1), new Point(0, 5, -1)).setRadius(1));
+            assertThatThrownBy(() -> s.requireRayBudget(scene)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessageContaining("× (1 + 256 shadow samples × 128 soft lights + 1 other light) is 16811010 rays");
         }
     }
 
@@ -322,7 +342,36 @@ class RenderSettingsTest {
             String name = "invoice" + Character.toString(Integer.parseInt(hex, 16)) + "gnp.exe";
             assertThatThrownBy(() -> RenderSettings.defaults(name)).isInstanceOf(IllegalArgumentException.class)
                     .hasMessage("the image name contains U+" + hex + ", an invisible or direction-changing character"
-                            + " (the file name would display as something else)");
+                            + " (the file name would display as something else, or not at all)");
+        }
+
+        @ParameterizedTest(name = "U+{0}: {1}")
+        @CsvSource(delimiter = '|', value = {
+                "3164|an invisible character (Unicode's Default_Ignorable_Code_Point)", // Hangul filler, a letter by category
+                "115F|an invisible character (Unicode's Default_Ignorable_Code_Point)",
+                "FFA0|an invisible character (Unicode's Default_Ignorable_Code_Point)",
+                "034F|an invisible character (Unicode's Default_Ignorable_Code_Point)", // combining grapheme joiner
+                "FE0F|an invisible character (Unicode's Default_Ignorable_Code_Point)", // variation selector
+                "2800|a blank-looking character (the empty braille pattern)",
+                "2028|a line or paragraph separator",
+                "00A0|a space other than U+0020 (it looks like one and is another character)",
+                "3000|a space other than U+0020 (it looks like one and is another character)",
+                "009B|a control character", // C1: a terminal's control sequence introducer
+                "0007|a control character",
+                "E000|a private-use, unassigned or surrogate code point" })
+        @DisplayName("refused: every character that would not show as what it is, naming the code point and its kind")
+        void hidden(String hex, String kind) {
+            String name = "render" + Character.toString(Integer.parseInt(hex, 16)) + "1";
+            assertThatThrownBy(() -> RenderSettings.defaults(name)).isInstanceOf(IllegalArgumentException.class)
+                    .hasMessage("the image name contains U+" + hex + ", " + kind
+                            + " (the file name would display as something else, or not at all)");
+        }
+
+        @ParameterizedTest(name = "\"{0}\"")
+        @ValueSource(strings = { "תמונה 1", "שָׁלוֹם", "e\u0301te", "日本", "a+b (2)", "x_y-z.v2" })
+        @DisplayName("accepted: letters of any script with their marks (Hebrew points, combining accents), digits, punctuation, the plain space")
+        void visibleNames(String name) {
+            assertThat(RenderSettings.defaults(name).imageName()).isEqualTo(name);
         }
 
         @Test

@@ -194,6 +194,17 @@ class SceneFormatErrorTest {
     }
 
     @Test
+    @DisplayName("a hostile mesh line: its C1 control and direction override escaped in the message, never sent raw to a terminal")
+    void hostileMeshLine() throws IOException {
+        Path file = dir.resolve("hostile.xml");
+        Files.writeString(dir.resolve("hostile.obj"), "v 0 0 0\nv 1 0 0\nv 0 \u009B31m\u202E 0\nf 1 2 3\n");
+        Files.writeString(file, inGeometries("<mesh file=\"hostile.obj\"/>"));
+        SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> XmlSceneReader.read(file));
+        assertThat(e.getMessage()).contains("'\\u009B31m\\u202E'").doesNotContain("\u009B", "\u202E");
+        assertThat(e.getMessage().codePoints().filter(cp -> Messages.hidden(cp) != null)).isEmpty();
+    }
+
+    @Test
     @DisplayName("bytes that are not UTF-8")
     void notUtf8() throws IOException {
         Path file = dir.resolve("latin1.xml");

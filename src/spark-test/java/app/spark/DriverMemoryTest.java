@@ -1,0 +1,50 @@
+package app.spark;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+
+import app.Project;
+
+/**
+ * A job that fails because the driver ran out of memory (its tasks could not be serialized beside
+ * the job's images) ends in the command line's one line naming the images, the limit and
+ * --driver-memory, not in Spark's "Task serialization failed: java.lang.OutOfMemoryError".
+ */
+class DriverMemoryTest {
+    private static final long MB = 1 << 20;
+
+    @Test
+    @DisplayName("the images of a job: sizes and the MB they hold")
+    void imageSizes() throws Exception {
+        SparkFrame f = SparkFrame.read(Project.file("scenes/glossy.xml"));
+        SparkFrame big = f.withSettings(f.settings().withImage("big", 11000, 11000));
+        SparkFrame small = f.withSettings(f.settings().withImage("small", 100, 50));
+        assertThat(SparkRenderer.imageSizes(List.of(big))).isEqualTo("11000x11000, 462 MB");
+        assertThat(SparkRenderer.imageSizes(List.of(big, small))).isEqualTo("11000x11000 + 100x50, 462 MB");
+    }
+
+    @Test
+    @DisplayName("task serialization out of memory: one line, the images, the limit, --driver-memory")
+    void serialization() {
+        RuntimeException failed = new RuntimeException("Job aborted due to stage failure: Task serialization failed:"
+                + " java.lang.OutOfMemoryError: Java heap space\njava.lang.OutOfMemoryError: Java heap space\n\tat"
+                + " java.base/java.util.Arrays.copyOf(Arrays.java:3537)");
+        assertThat(SparkRenderer.driverOutOfMemory(failed, "11000x11000, 462 MB", 512 * MB))
+                .isEqualTo("the driver ran out of memory serializing the job's tasks beside the job's images (11000x11000,"
+                        + " 462 MB); Java may use at most 512 MB there (give the driver more memory with spark-submit"
+                        + " --driver-memory, or -Xmx for a local master; or render it smaller)");
+    }
+
+    @Test
+    @DisplayName("an OutOfMemoryError among the causes: the same line; any other failure: not this one")
+    void causes() {
+        assertThat(SparkRenderer.driverOutOfMemory(new IllegalStateException("job failed", new OutOfMemoryError("Java heap space")),
+                "64x64, 1 MB", 512 * MB)).startsWith("the driver ran out of memory during the job beside the job's images (64x64, 1 MB)");
+        assertThat(SparkRenderer.driverOutOfMemory(new IllegalStateException("Task 0 failed 4 times"), "64x64, 1 MB", 512 * MB))
+                .isNull();
+    }
+}
