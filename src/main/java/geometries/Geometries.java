@@ -234,6 +234,7 @@ public class Geometries extends Intersectable {
 
     @Override
     public boolean closestHit(Hit hit) {
+        if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         boolean found = false;
         for (int i = 0, n = items.size(); i < n; ++i)
             found |= items.get(i).closestHit(hit);
@@ -242,6 +243,7 @@ public class Geometries extends Intersectable {
 
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+        if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         for (int i = 0, n = items.size(); i < n; ++i)
             if (!items.get(i).visitHits(query, maxDistance, visitor)) return false;
         return true;
@@ -276,6 +278,10 @@ public class Geometries extends Intersectable {
      */
     @Override
     void collectLeaves(List<Intersectable> out) {
+        if (!answersInDoubles()) { // a user's list with a hook of its own is asked as one leaf
+            out.add(this);
+            return;
+        }
         requireNestingWithinLimit(); // a list within itself would be walked without end
         Deque<Geometries> lists = new ArrayDeque<>();
         Deque<Integer> positions = new ArrayDeque<>();
@@ -290,7 +296,7 @@ public class Geometries extends Intersectable {
             }
             positions.push(i + 1);
             Intersectable item = g.items.get(i);
-            if (item instanceof Geometries nested) {
+            if (item instanceof Geometries nested && nested.answersInDoubles()) {
                 lists.push(nested);
                 positions.push(0);
             } else {

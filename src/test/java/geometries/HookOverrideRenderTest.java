@@ -5,6 +5,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.List;
 import java.util.stream.Stream;
 
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
@@ -166,6 +168,35 @@ class HookOverrideRenderTest {
                         .satisfies(color -> assertThat(color.distance(libraryTracer.traceRay(ray))).isGreaterThan(1));
             }
             assertThat(onShape).as("rays on the %s", name).isGreaterThan(5);
+        }
+    }
+
+    @Test
+    @DisplayName("a Geometries subclass whose hook answers nothing hides its children, BVH on and off")
+    void blindList() {
+        Geometry inside = new Sphere(Point.ZERO, 10).setEmission(new Color(60, 0, 0));
+        Geometries blind = new Geometries(inside) {
+            @Override
+            protected List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+                return null;
+            }
+        };
+        Geometry far = new Sphere(new Point(500, 500, -500), 1);
+        Scene empty = scene(far), hidden = scene(far), shown = scene(far);
+        hidden.geometries.add(blind);
+        shown.geometries.add(new Geometries(inside));
+        for (boolean bvh : new boolean[] { true, false }) {
+            var emptyTracer = new SimpleRayTracer(empty).setBvh(bvh);
+            var hiddenTracer = new SimpleRayTracer(hidden).setBvh(bvh);
+            var shownTracer = new SimpleRayTracer(shown).setBvh(bvh);
+            int onShape = 0;
+            for (Ray ray : rays()) {
+                assertThat(blind.findGeoIntersections(ray)).isNull();
+                Color none = emptyTracer.traceRay(ray);
+                assertThat(hiddenTracer.traceRay(ray).distance(none)).as("bvh %s, %s", bvh, ray).isLessThan(1e-9);
+                if (shownTracer.traceRay(ray).distance(none) > 1) ++onShape;
+            }
+            assertThat(onShape).as("rays on the list's sphere when the list is the library's").isGreaterThan(5);
         }
     }
 
