@@ -28,7 +28,8 @@ class DepthOfFieldTest {
     /** Row 5 sees y = 1.45 on the focal plane (only the near board); row 34 sees y = −1.45 (only the far one). */
     private static final int NEAR_ROW = 5, FAR_ROW = 34;
 
-    private static Scene boards() {
+    /** Two white boards on black: a near one in focus and a far one 30 behind it (shared with NoiseAdaptiveSamplerTest). */
+    static Scene boards() {
         Color white = new Color(255, 255, 255);
         Scene scene = new Scene("boards");
         scene.geometries.add(

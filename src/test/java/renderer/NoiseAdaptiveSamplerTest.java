@@ -8,9 +8,7 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 
-import geometries.Polygon;
 import primitives.Color;
-import primitives.Point;
 import scene.Scene;
 
 /**
@@ -23,14 +21,7 @@ class NoiseAdaptiveSamplerTest {
     private static final int SIZE = 40;
 
     private static Scene boards() {
-        Color white = new Color(255, 255, 255);
-        Scene scene = new Scene("boards");
-        scene.geometries.add(
-                new Polygon(new Point(-100, 0, 0), new Point(0, 0, 0), new Point(0, 100, 0), new Point(-100, 100, 0))
-                        .setEmission(white),
-                new Polygon(new Point(-400, -400, -30), new Point(0, -400, -30), new Point(0, 0, -30),
-                        new Point(-400, 0, -30)).setEmission(white));
-        return scene;
+        return DepthOfFieldTest.boards();
     }
 
     private record Render(ImageWriter image, RenderStats stats) {
