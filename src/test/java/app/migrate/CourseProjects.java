@@ -71,7 +71,7 @@ final class CourseProjects {
 
 
     /**
-     * A 2024–25 IntelliJ project (src/, unittests/, an .iml, .idea/, no pom), from
+     * A 2024–25 IntelliJ project (src/, unittests/, an .iml, no pom; .idea/ made here), from
      * {@code src/it/migrate/course}, the project the migration's integration test also runs Maven
      * on: the student's Point, Vector (with a {@code rotate} of their own), Ray, Intersectable and
      * Geometry; extras on the course API (a shape, a parser package, a helper) and one that uses
@@ -86,6 +86,9 @@ final class CourseProjects {
                 Files.copy(f, to);
             }
         }
+        // IntelliJ's project folder, which the repository does not track (it is tool state): its
+        // presence is what makes the migration keep left-out tests out of the IDE's compile too.
+        write(dir, ".idea/misc.xml", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<project version=\"4\">\n</project>\n");
         return dir;
     }
 
