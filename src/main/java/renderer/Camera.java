@@ -598,8 +598,9 @@ public final class Camera {
          * 40.7 dB against 256 (BENCHMARKS.md, depth of field).
          *
          * @param maxDepth  the deepest subdivision, 1..6
-         * @param threshold the pixel-level corner spread that subdivides, finite and ≥ 0 (0 always
-         *                  subdivides)
+         * @param threshold the pixel-level corner spread that subdivides, finite and ≥ 0 (0: any
+         *                  difference subdivides; corners that agree exactly, as on a flat
+         *                  background, never do)
          * @return this builder
          * @throws IllegalArgumentException when either is out of range, naming it
          */

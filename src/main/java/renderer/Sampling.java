@@ -58,7 +58,8 @@ record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, int len
      * @param depth     the deepest subdivision, 1..6: sub-pixels down to 1/2^depth of the pixel
      *                  side; with a lens, at most 4^depth samples a pixel
      * @param threshold the pixel-level corner spread that subdivides, on the 0..255 scale, finite
-     *                  and ≥ 0 (0 always subdivides); with a lens, the estimated standard error of
+     *                  and ≥ 0 (the test is "more than": at 0 any difference subdivides, corners
+     *                  that agree exactly never do); with a lens, the estimated standard error of
      *                  its mean at which a pixel stops
      */
     record Adaptive(int depth, double threshold) {

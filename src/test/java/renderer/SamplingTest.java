@@ -12,6 +12,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import geometries.Plane;
 import lighting.PointLight;
@@ -97,6 +98,34 @@ class SamplingTest {
             assertThat(onePixel().setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(3, 8).build().sampling()
                     .maxSamplesPerPixel(true)).isEqualTo(64);
             assertThat(RayBudget.cameraRaysPerPixel(AntiAliasing.ADAPTIVE, 1, 1, 3, true, 16)).isEqualTo(64);
+        }
+    }
+
+    /** The test is "more than the threshold": at 0, corners that agree exactly are not subdivided. */
+    @Nested
+    @DisplayName("ADAPTIVE at threshold 0 subdivides where the corners differ, not where they agree")
+    class ThresholdZero {
+        private long cameraRays(Scene scene, boolean lens) {
+            Camera.Builder b = onePixel().setRayTracer(new RayTracerBasic(scene)).setAntiAliasing(AntiAliasing.ADAPTIVE)
+                    .setAdaptive(3, 0);
+            if (lens) b.setDepthOfField(12, 0.3);
+            return b.build().render().cameraRays();
+        }
+
+        @ParameterizedTest(name = "lens: {0}")
+        @ValueSource(booleans = { false, true })
+        @DisplayName("a flat background: the first corners (or samples) agree, nothing more is traced")
+        void flat(boolean lens) {
+            long traced = cameraRays(new Scene("flat background"), lens);
+            assertThat(traced).as("camera rays of a flat pixel").isEqualTo(lens ? 8 : 4)
+                    .isLessThan(onePixel().setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(3, 0).build().sampling()
+                            .maxSamplesPerPixel(lens));
+        }
+
+        @Test
+        @DisplayName("a gradient: every square is subdivided down to the deepest level")
+        void gradient() {
+            assertThat(cameraRays(gradient(), false)).isEqualTo(81);
         }
     }
 

@@ -428,9 +428,12 @@ public final class RenderSettings implements java.io.Serializable {
         return applyTo(camera, scene, newImageWriter());
     }
 
-    /** @return a new, black image writer of this name and size (4 bytes a pixel) */
+    /**
+     * @return a new, black image writer of this size (4 bytes a pixel) and name; without a stated
+     *         name, an unnamed one (the 2024&ndash;25 form, named when written)
+     */
     public ImageWriter newImageWriter() {
-        return new ImageWriter(imageName, width(), height());
+        return imageName != null ? new ImageWriter(imageName, width(), height()) : new ImageWriter(width(), height());
     }
 
     /**
@@ -460,9 +463,12 @@ public final class RenderSettings implements java.io.Serializable {
                 // The builder takes the two together: a specification stating one gets the library's other.
                 adaptiveDepth != null ? adaptiveDepth : Camera.DEFAULT_ADAPTIVE_DEPTH,
                 adaptiveThreshold != null ? adaptiveThreshold : Camera.DEFAULT_ADAPTIVE_THRESHOLD);
-        // Aperture 0 is the pinhole whatever the focal distance, so a stated pinhole undoes a lens
-        // set on the builder before.
-        if (focalDistance != null) camera.setDepthOfField(focalDistance == 0 ? 1 : focalDistance, aperture);
+        // A stated pinhole (focal distance 0, whatever the aperture) is the builder's aperture 0,
+        // which is the pinhole whatever the focal distance: it undoes a lens set on the builder before.
+        if (focalDistance != null) {
+            if (focalDistance == 0) camera.setDepthOfField(1, 0);
+            else camera.setDepthOfField(focalDistance, aperture);
+        }
         if (lensSamples != null) camera.setDepthOfFieldSamples(lensSamples);
         if (seed != null) camera.setSeed(seed);
         return camera.setMultithreading(threads != null ? threads : ALL_CORES);

@@ -83,7 +83,7 @@ public final class XmlSceneReader {
 
     // Settings validated by the library's own setters, so the rules live in one place.
     private static final ValueType<Integer> THREADS = INTEGER.narrowedBy(
-            "0 (the calling thread), a number of threads up to " + Camera.MAX_THREADS_PER_CORE + " per core, or -2 (all cores)",
+            "0 (the calling thread), a number of threads up to " + Camera.MAX_THREADS_PER_CORE + " per core, or -1 or -2 (all cores)",
             n -> Camera.getBuilder().setMultithreading(n));
     private static final ValueType<Integer> ADAPTIVE_DEPTH = INTEGER.narrowedBy("an integer from 1 to 6",
             d -> Camera.getBuilder().setAdaptive(d, 0));

@@ -23,12 +23,14 @@ import org.junit.jupiter.params.provider.ValueSource;
 
 import lighting.DirectionalLight;
 import lighting.PointLight;
+import geometries.Sphere;
 import primitives.Color;
 import primitives.Point;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
+import renderer.RayTracerBasic;
 import scene.Scene;
 
 /**
@@ -47,6 +49,29 @@ class RenderSettingsTest {
 
     private static Camera apply(RenderSettings settings, Camera.Builder camera) {
         return settings.applyTo(camera, SCENE, new ImageWriter("settings", 1, 1)).setSummary(false).build();
+    }
+
+    /** A sphere at distance 10 whose edge a lens blurs. */
+    private static final Scene SPHERE = new Scene("sphere");
+
+    static {
+        SPHERE.geometries.add(new Sphere(new Point(0, 0, -10), 2).setEmission(new Color(200, 100, 50)));
+    }
+
+    /** A view of {@link #SPHERE}, 6×6 scene units at distance 10. */
+    private static Camera.Builder lensView() {
+        return Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Point(0, 0, -1)).setVpSize(6, 6)
+                .setVpDistance(10);
+    }
+
+    /** Replays {@code settings} onto {@code camera} over {@link #SPHERE}, renders 6×6 pixels and returns them, row-major. */
+    private static int[] pixels(RenderSettings settings, Camera.Builder camera) {
+        Camera rendered = settings.applyTo(camera, SPHERE, new ImageWriter("settings", 6, 6)).setSummary(false).build()
+                .renderImage();
+        int[] rgb = new int[36];
+        for (int y = 0; y < 6; ++y)
+            for (int x = 0; x < 6; ++x) rgb[y * 6 + x] = rendered.getImageWriter().getRgb(x, y);
+        return rgb;
     }
 
     /** The description of a camera built with the library's defaults and {@code change}. */
@@ -108,11 +133,26 @@ class RenderSettingsTest {
             assertThat(Camera.getBuilder(corners).setAntiAliasing(AntiAliasing.RANDOM).build().describe()).startsWith("RANDOM 3x5,");
         }
 
+        /** Focal distance 0 is the pinhole whatever the aperture (it was a lens focused at 1 for aperture 5). */
+        @ParameterizedTest(name = "withDepthOfField(0, {0})")
+        @ValueSource(doubles = { 0, 5 })
+        @DisplayName("a stated pinhole (focal distance 0, any aperture) renders as the pinhole, undoing a lens set before")
+        void pinhole(double aperture) {
+            RenderSettings pinhole = RenderSettings.defaults("x").withDepthOfField(0, aperture);
+            int[] library = pixels(RenderSettings.empty(), lensView());
+            assertThat(pixels(pinhole, lensView().setDepthOfField(10, 2))).as("the pixels of the stated pinhole")
+                    .isEqualTo(library);
+            assertThat(pixels(RenderSettings.empty(), lensView().setDepthOfField(1, 5)))
+                    .as("a lens focused at 1, to show the scene tells it from the pinhole").isNotEqualTo(library);
+        }
+
         @Test
-        @DisplayName("a stated pinhole (focal distance 0) undoes a lens set before")
-        void pinhole() {
-            Camera camera = apply(RenderSettings.empty().withDepthOfField(0, 0), view().setDepthOfField(10, 2));
-            assertThat(camera.describe()).doesNotContain("DOF");
+        @DisplayName("a specification without an image name replays an unnamed image of the format's size")
+        void noImageName() {
+            Camera camera = RenderSettings.empty().applyTo(view(), SCENE).setSummary(false).build();
+            assertThat(camera.getImageWriter().getImageName()).isEqualTo("(unnamed)");
+            assertThat(camera.getImageWriter().getNx()).isEqualTo(RenderSettings.DEFAULT_SIZE);
+            assertThat(camera.getImageWriter().getNy()).isEqualTo(RenderSettings.DEFAULT_SIZE);
         }
 
         /** A half-stated ADAPTIVE pair is completed with the builder's own value of the other half. */

@@ -113,7 +113,8 @@ class SceneFormatErrorTest {
                 Arguments.of("a boolean that is not one", inScene("<render bvh=\"yes\"/>"), 2, 11,
                         "'yes' is not a boolean (expected true or false)"),
                 Arguments.of("thread count -3 (the library's message)", inScene("<render threads=\"-3\"/>"), 2, 11,
-                        "thread count must be 0 (calling thread), a positive number, or -1 or -2 (all cores), got -3"),
+                        "thread count must be 0 (calling thread), a positive number, or -1 or -2 (all cores), got -3 (expected 0 (the"
+                                + " calling thread), a number of threads up to 8 per core, or -1 or -2 (all cores))"),
                 Arguments.of("adaptive depth 7 (the library's message)",
                         inScene("<render><anti-aliasing mode=\"adaptive\" depth=\"7\"/></render>"), 2, 42,
                         "adaptive depth must be in 1..6, got 7 (expected an integer from 1 to 6)"),
