@@ -13,8 +13,6 @@ import primitives.Color;
 import primitives.CourseClassGuard;
 import primitives.Point;
 import primitives.Ray;
-import primitives.Rgb;
-import primitives.Util;
 import primitives.Vector;
 import scene.Scene;
 
@@ -33,17 +31,17 @@ public final class Camera {
      * threads than cores gain nothing, and a few times more stay harmless; a count such as 100,000
      * would exhaust the native threads of the machine.
      */
-    public static final int MAX_THREADS_PER_CORE = 8;
+    public static final int MAX_THREADS_PER_CORE = Execution.MAX_THREADS_PER_CORE;
     /**
      * The most primary samples of one pixel from the RANDOM grid (columns × rows) or the depth of
      * field's lens samples: 65,536 (a 256×256 grid), so that the count fits an int and a pixel
      * ends (ADAPTIVE's depth 6 stays below it, at most 65² lattice points).
      */
-    public static final int MAX_SAMPLES_PER_PIXEL = 1 << 16;
+    public static final int MAX_SAMPLES_PER_PIXEL = Sampling.MAX_SAMPLES_PER_PIXEL;
     /** ADAPTIVE's deepest subdivision when none is set ({@link Builder#setAdaptive}): sub-pixels down to 1/8 of the side. */
-    public static final int DEFAULT_ADAPTIVE_DEPTH = 3;
+    public static final int DEFAULT_ADAPTIVE_DEPTH = Sampling.DEFAULT_ADAPTIVE_DEPTH;
     /** ADAPTIVE's pixel-level corner spread that subdivides when none is set ({@link Builder#setAdaptive}), 0..255 scale. */
-    public static final double DEFAULT_ADAPTIVE_THRESHOLD = 8;
+    public static final double DEFAULT_ADAPTIVE_THRESHOLD = Sampling.DEFAULT_ADAPTIVE_THRESHOLD;
 
     private final View view;
     private final Sampling sampling;
@@ -57,15 +55,16 @@ public final class Camera {
     /** Told of each finished render (a test's report, for example); by default nobody. */
     private final BiConsumer<? super Camera, ? super RenderStats> renderListener;
 
-    private Camera(Builder b, View view, Sampling sampling, ImageWriter imageWriter, RayTracerBase rayTracer) {
+    private Camera(View view, Sampling sampling, Execution execution, RayTracerBase rayTracer, ImageWriter imageWriter,
+                   boolean ownWriter, boolean summary, BiConsumer<? super Camera, ? super RenderStats> renderListener) {
         this.view = view;
         this.sampling = sampling;
-        this.execution = b.execution(sampling);
-        this.imageWriter = imageWriter;
-        this.ownWriter = b.imageWriter == null;
+        this.execution = execution;
         this.rayTracer = rayTracer;
-        this.summary = b.summary;
-        this.renderListener = b.renderListener;
+        this.imageWriter = imageWriter;
+        this.ownWriter = ownWriter;
+        this.summary = summary;
+        this.renderListener = renderListener;
     }
 
     /**
@@ -73,7 +72,7 @@ public final class Camera {
      *         available core
      */
     public static int maxThreads() {
-        return MAX_THREADS_PER_CORE * Runtime.getRuntime().availableProcessors();
+        return Execution.maxThreads();
     }
 
     /** @return a new builder with the defaults: no anti-aliasing, pinhole, calling thread, seed 0 */
@@ -227,16 +226,6 @@ public final class Camera {
         return this;
     }
 
-    /**
-     * A renderer of rectangles of this camera's image, for renders split into parts (a cluster's
-     * tiles) that must assemble to the bytes of {@link #render()}; it prepares the scene now, once.
-     *
-     * @return a new region renderer over this camera
-     */
-    public RegionRenderer regionRenderer() {
-        return new RegionRenderer(view, sampling, execution, rayTracer, imageWriter.getImageName());
-    }
-
     /** @return the sampling settings in words, for summaries and benchmark tables */
     public String describe() {
         return sampling.describe(view.lens()) + ", " + rayTracer.describe() + ", seed " + sampling.seed();
@@ -322,12 +311,10 @@ public final class Camera {
         private int nX = 1, nY = 1;
         private ImageWriter imageWriter;
         private RayTracerBase rayTracer;
-        private AntiAliasing antiAliasing = Sampling.DEFAULT.antiAliasing();
-        private Sampling.Grid grid = Sampling.DEFAULT.grid();
-        private Sampling.Adaptive adaptive = Sampling.DEFAULT.adaptive();
-        private double focalDistance, aperture;
-        private int lensSamples = Sampling.DEFAULT.lensSamples();
-        private long seed = Sampling.DEFAULT.seed();
+        /** Every mode's parameters, the lens samples and the seed: each setter replaces one part. */
+        private Sampling sampling = Sampling.DEFAULT;
+        private View.Lens lens = View.Lens.PINHOLE;
+        /** As set: -1 and -2 (all cores) are resolved when a camera is built. */
         private int threads;
         private double debugPrint;
         private boolean summary = true;
@@ -366,14 +353,8 @@ public final class Camera {
             nY = camera.imageWriter.getNy();
             imageWriter = camera.ownWriter ? null : camera.imageWriter;
             rayTracer = camera.rayTracer;
-            Sampling sampling = camera.sampling;
-            antiAliasing = sampling.antiAliasing();
-            grid = sampling.grid();
-            adaptive = sampling.adaptive();
-            focalDistance = view.lens().focalDistance();
-            aperture = view.lens().aperture();
-            lensSamples = sampling.lensSamples();
-            seed = sampling.seed();
+            sampling = camera.sampling;
+            lens = view.lens();
             threads = camera.execution.threads();
             debugPrint = camera.execution.progressStep();
             summary = camera.summary;
@@ -399,12 +380,9 @@ public final class Camera {
          * @throws IllegalArgumentException when the two are not orthogonal
          */
         public Builder setDirection(Vector to, Vector up) {
-            Objects.requireNonNull(to, "camera direction 'to'");
-            Objects.requireNonNull(up, "camera direction 'up'");
-            if (!Util.isZero(to.normalize().dotProduct(up.normalize())))
-                throw new IllegalArgumentException("camera 'to' " + to + " and 'up' " + up + " must be orthogonal");
-            this.to = to.normalize();
-            this.up = up.normalize();
+            View.Frame frame = View.Frame.along(to, up);
+            this.to = frame.to();
+            this.up = frame.up();
             this.target = null;
             return this;
         }
@@ -543,7 +521,7 @@ public final class Camera {
          * @return this builder
          */
         public Builder setAntiAliasing(AntiAliasing mode) {
-            this.antiAliasing = Objects.requireNonNull(mode, "anti-aliasing mode");
+            this.sampling = sampling.withAntiAliasing(mode);
             return this;
         }
 
@@ -576,7 +554,7 @@ public final class Camera {
          *                                  {@link #MAX_SAMPLES_PER_PIXEL} samples, naming it
          */
         public Builder setAntiAliasingGrid(int columns, int rows) {
-            this.grid = new Sampling.Grid(columns, rows);
+            this.sampling = sampling.withGrid(columns, rows);
             return this;
         }
 
@@ -605,7 +583,7 @@ public final class Camera {
          * @throws IllegalArgumentException when either is out of range, naming it
          */
         public Builder setAdaptive(int maxDepth, double threshold) {
-            this.adaptive = new Sampling.Adaptive(maxDepth, threshold);
+            this.sampling = sampling.withAdaptive(maxDepth, threshold);
             return this;
         }
 
@@ -620,8 +598,7 @@ public final class Camera {
          * @throws IllegalArgumentException when either is out of range, naming it
          */
         public Builder setDepthOfField(double focalDistance, double apertureRadius) {
-            this.focalDistance = Util.requirePositive(focalDistance, "focal distance");
-            this.aperture = Util.requireNonNegative(apertureRadius, "aperture radius");
+            this.lens = View.Lens.thin(focalDistance, apertureRadius);
             return this;
         }
 
@@ -635,8 +612,7 @@ public final class Camera {
          * @throws IllegalArgumentException when it is below 1 or above the limit
          */
         public Builder setDepthOfFieldSamples(int samples) {
-            Sampling.requireLensSamples(samples);
-            this.lensSamples = samples;
+            this.sampling = sampling.withLensSamples(samples);
             return this;
         }
 
@@ -648,7 +624,7 @@ public final class Camera {
          * @return this builder
          */
         public Builder setSeed(long seed) {
-            this.seed = seed;
+            this.sampling = sampling.withSeed(seed);
             return this;
         }
 
@@ -661,12 +637,7 @@ public final class Camera {
          * @throws IllegalArgumentException for another value, naming it and the limit
          */
         public Builder setMultithreading(int threads) {
-            if (threads < -2)
-                throw new IllegalArgumentException("thread count must be 0 (calling thread), a positive number, or -1 or -2 (all cores), got " + threads);
-            if (threads > maxThreads())
-                throw new IllegalArgumentException("thread count " + threads + " is more than the limit of " + maxThreads()
-                        + " (" + MAX_THREADS_PER_CORE + " per core, " + Runtime.getRuntime().availableProcessors() + " cores)");
-            this.threads = threads;
+            this.threads = Execution.requireThreads(threads);
             return this;
         }
 
@@ -718,8 +689,7 @@ public final class Camera {
 
         /**
          * Checks the view settings alone and returns the {@link View} they make, without an image
-         * or a tracer: what a scene file's camera element is checked with. The checks and
-         * messages are {@link #build()}'s, in the same order.
+         * or a tracer. The checks and messages are {@link #build()}'s, in the same order.
          *
          * @return the view of the current settings (the resolution is the image writer's, or the
          *         one set, 1×1 by default)
@@ -729,7 +699,7 @@ public final class Camera {
          *                                  value), or when a target is the location or lies along
          *                                  the up direction from it
          */
-        public View buildView() {
+        View view() {
             final String missing = "Missing rendering data";
             final String camera = "Camera";
             if (location == null) throw new MissingResourceException(missing + ": location", camera, "location");
@@ -739,23 +709,7 @@ public final class Camera {
             if (!vpDistanceSet) throw new IllegalArgumentException(missing + ": view plane distance (setVpDistance)");
             View.ViewPlane plane = new View.ViewPlane(vpWidth, vpHeight, vpDistance, nX, nY);
             View.Frame frame = (to != null ? View.Frame.of(to, up) : View.Frame.lookingAt(location, target, up)).rolled(roll);
-            return new View(location, frame, plane, new View.Lens(aperture, focalDistance));
-        }
-
-        /**
-         * Checks the ray budget of the current sampling, lens and tracer settings, as
-         * {@link #build()} does, without a view or an image: what a scene file's settings are
-         * checked with before any camera is made.
-         *
-         * @return this builder, for chaining
-         * @throws IllegalArgumentException when a pixel would take more than
-         *                                  {@link RayBudget#MAX_RAYS_PER_PIXEL} rays (camera
-         *                                  samples × (1 + 2 beams) × (1 + shadow samples × the
-         *                                  scene's soft lights + its other lights), naming them)
-         */
-        public Builder requireRayBudget() {
-            sampling().requireRayBudget(new View.Lens(aperture, focalDistance), tracer());
-            return this;
+            return new View(location, frame, plane, lens);
         }
 
         /**
@@ -773,41 +727,29 @@ public final class Camera {
          *                                  scene's soft lights + its other lights), naming them)
          */
         public Camera build() {
-            View view = buildView();
-            Sampling sampling = sampling();
+            View view = view();
             RayTracerBase tracer = tracer();
             // Before the image is allocated: a refused budget costs no memory.
             sampling.requireRayBudget(view.lens(), tracer);
             ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
-            return new Camera(this, view, sampling, writer, tracer);
+            return new Camera(view, sampling, execution(), tracer, writer, imageWriter == null, summary, renderListener);
         }
 
         /**
          * Checks the settings as {@link #build()} does and makes a renderer of rectangles of the
-         * image, without allocating the image (see {@link Camera#regionRenderer()}): what a
-         * cluster's executor renders its tiles with. It prepares the scene now, once.
-         *
-         * @return a new region renderer over the current settings
-         * @throws MissingResourceException as {@link #build()}
-         * @throws IllegalArgumentException as {@link #build()}
+         * image, without allocating the image (see {@link RegionRenderer#of(Builder)}).
          */
-        public RegionRenderer buildRegionRenderer() {
-            View view = buildView();
-            Sampling sampling = sampling();
+        RegionRenderer regionRenderer() {
+            View view = view();
             RayTracerBase tracer = tracer();
             sampling.requireRayBudget(view.lens(), tracer);
             String name = imageWriter != null && imageWriter.hasName() ? imageWriter.getImageName() : "region";
-            return new RegionRenderer(view, sampling, execution(sampling), tracer, name);
+            return new RegionRenderer(view, sampling, execution(), tracer, name);
         }
 
-        private Sampling sampling() {
-            return new Sampling(antiAliasing, grid, adaptive, lensSamples, seed);
-        }
-
-        /** The execution of a camera with {@code sampling}, whose tile size it takes. */
-        private Execution execution(Sampling sampling) {
-            int resolved = threads < 0 ? Runtime.getRuntime().availableProcessors() : threads; // -1, -2: all cores
-            return new Execution(resolved, sampling.tileSize(), debugPrint, output);
+        /** The execution of a camera with this builder's sampling, whose tile size it takes. */
+        private Execution execution() {
+            return new Execution(Execution.resolveThreads(threads), sampling.tileSize(), debugPrint, output);
         }
 
         /** The tracer given, or a {@link SimpleRayTracer} on an empty scene. */

@@ -1,13 +1,21 @@
 package renderer;
 
+import java.util.Collection;
 import java.util.Locale;
+
+import lighting.LightSource;
 
 /**
  * The ray budget of one pixel, defined once for the Java API and the scene files: the most camera
  * rays the sampling may trace for a pixel, times the tracer's rays per camera ray (its beams, its
  * shadow samples and the scene's lights: {@link #require}), at most {@link #MAX_RAYS_PER_PIXEL};
  * a render also counts the rays each pixel traces and fails a pixel that goes over. {@link Camera.Builder#build()} holds a
- * camera to it; {@code scene.io.RenderSettings} holds a scene file to it, with the same words.
+ * camera to it; {@code scene.io.RenderSettings} holds a scene file to it, with the same rule and words.
+ *
+ * <p>Internal: public only for the scene reader and the command line, which check a setting
+ * before any camera exists; a scene test meets the budget through {@code build()}.
+ *
+ * @hidden
  */
 public final class RayBudget {
     /**
@@ -21,34 +29,37 @@ public final class RayBudget {
     }
 
     /**
-     * The most camera rays one pixel may take, by the rule of the sampler that spends them (the
-     * camera's own figure, {@code Sampling.maxSamplesPerPixel}): RANDOM's grid (columns × rows),
-     * ADAPTIVE's whole lattice of (2^depth + 1)² points (the worst case: every square split down
-     * to the deepest level; the lattice of pixel x spans points x·2^depth … (x+1)·2^depth on each
-     * axis), or with depth of field its 4^depth samples (a pixel whose noise never settles),
-     * CORNERS' five points, or without anti-aliasing the lens samples with depth of field and 1
-     * without.
+     * The budget of a render's settings, before any camera or tracer exists (a scene file's or a
+     * command line's): {@code sampling}'s camera rays per pixel ({@link Sampling#maxSamplesPerPixel})
+     * times the Whitted tracer's rays per camera ray over {@code lights}, the rule and message of
+     * {@code Camera.Builder.build()}. The beam size and shadow samples are checked first, by the
+     * tracer's own rules.
      *
-     * @param mode          the anti-aliasing mode
-     * @param columns       RANDOM: grid columns
-     * @param rows          RANDOM: grid rows
-     * @param adaptiveDepth ADAPTIVE: the deepest subdivision (negative counts as 0, above 30 as 30)
-     * @param depthOfField  whether the camera has a lens (aperture above 0): NONE's lens samples,
-     *                      ADAPTIVE's per-pixel sampling
-     * @param lensSamples   NONE with depth of field: lens samples per pixel
-     * @return camera rays per pixel, as a long (a grid of two ints may overflow an int)
+     * @param sampling      the camera's sampling
+     * @param depthOfField  whether the camera has a lens (aperture above 0)
+     * @param beamSize      rays per glossy or diffuse-glass beam, ≥ 1
+     * @param shadowSamples shadow rays toward a light with a radius, ≥ 1
+     * @param lights        the scene's lights (read once, a copy)
+     * @throws IllegalArgumentException for a beam size or shadow samples below 1, or more than
+     *                                  {@link #MAX_RAYS_PER_PIXEL} rays per pixel, naming the
+     *                                  factors, the product and the limit
      */
-    public static long cameraRaysPerPixel(AntiAliasing mode, int columns, int rows, int adaptiveDepth,
-                                          boolean depthOfField, int lensSamples) {
-        return switch (mode) {
-            case RANDOM -> GridSampler.samplesPerPixel(columns, rows);
-            case ADAPTIVE -> {
-                int depth = Math.min(Math.max(adaptiveDepth, 0), 30);
-                yield depthOfField ? NoiseAdaptiveSampler.maxSamplesPerPixel(depth) : LatticeSampler.maxSamplesPerPixel(true, depth);
-            }
-            case CORNERS -> LatticeSampler.maxSamplesPerPixel(false, 0);
-            case NONE -> CenterSampler.samplesPerPixel(depthOfField, lensSamples);
-        };
+    public static void require(Sampling sampling, boolean depthOfField, int beamSize, int shadowSamples,
+                               Collection<? extends LightSource> lights) {
+        WhittedShader.requireBeamSize(beamSize);
+        WhittedShader.requireShadowSamples(shadowSamples);
+        require(sampling.antiAliasing(), sampling.maxSamplesPerPixel(depthOfField), beamSize, shadowSamples, lights);
+    }
+
+    /** {@link #require(AntiAliasing, long, int, int, int, int)} with the lights counted: soft (a radius) and other. */
+    static void require(AntiAliasing mode, long cameraRays, int beamSize, int shadowSamples,
+                        Collection<? extends LightSource> lights) {
+        int soft = 0, other = 0;
+        for (LightSource light : lights.toArray(new LightSource[0])) { // a copy: read once, whatever its kind
+            if (light.getRadius() > 0) ++soft;
+            else ++other;
+        }
+        require(mode, cameraRays, beamSize, shadowSamples, soft, other);
     }
 
     /**
@@ -66,7 +77,7 @@ public final class RayBudget {
      * ({@code TraceContext.requireWithinBudget}), so no pixel ever traces more.
      *
      * @param mode          the anti-aliasing mode, for the message
-     * @param cameraRays    camera rays per pixel ({@link #cameraRaysPerPixel})
+     * @param cameraRays    camera rays per pixel ({@link Sampling#maxSamplesPerPixel})
      * @param beamSize      rays per glossy or diffuse-glass beam
      * @param shadowSamples shadow rays toward a light with a radius
      * @param softLights    lights with a radius in the scene

@@ -38,13 +38,17 @@ import scene.Scene;
  */
 public class RayTracerBasic extends RayTracerBase {
     /** The recursion depth limit of reflection and refraction. */
-    public static final int MAX_CALC_COLOR_LEVEL = 10;
+    public static final int MAX_CALC_COLOR_LEVEL = WhittedShader.MAX_CALC_COLOR_LEVEL;
     /** Below this accumulated coefficient (in every channel) a contribution is not traced. */
-    public static final double MIN_CALC_COLOR_K = 0.001;
+    public static final double MIN_CALC_COLOR_K = WhittedShader.MIN_CALC_COLOR_K;
+    /** Rays per glossy or diffuse-glass beam when none is set ({@link #setBeamSize(int)}). */
+    public static final int DEFAULT_BEAM_SIZE = WhittedShader.DEFAULT_BEAM_SIZE;
+    /** Shadow rays toward a light with a radius when none is set ({@link #setShadowSamples(int)}). */
+    public static final int DEFAULT_SHADOW_SAMPLES = WhittedShader.DEFAULT_SHADOW_SAMPLES;
 
     private boolean useBvh = true;
-    private int beamSize = 16;
-    private int shadowSamples = 16;
+    private int beamSize = DEFAULT_BEAM_SIZE;
+    private int shadowSamples = DEFAULT_SHADOW_SAMPLES;
 
     /**
      * The shading over the scene as the last prepare() took it (the BVH or the flat list, the
@@ -91,8 +95,7 @@ public class RayTracerBasic extends RayTracerBase {
      * @throws IllegalArgumentException when {@code rays < 1}
      */
     public RayTracerBasic setBeamSize(int rays) {
-        if (rays < 1) throw new IllegalArgumentException("beam size must be at least 1 ray, got " + rays);
-        this.beamSize = rays;
+        this.beamSize = WhittedShader.requireBeamSize(rays);
         forgetPreparation();
         return this;
     }
@@ -106,8 +109,7 @@ public class RayTracerBasic extends RayTracerBase {
      * @throws IllegalArgumentException when {@code samples < 1}
      */
     public RayTracerBasic setShadowSamples(int samples) {
-        if (samples < 1) throw new IllegalArgumentException("shadow samples must be at least 1, got " + samples);
-        this.shadowSamples = samples;
+        this.shadowSamples = WhittedShader.requireShadowSamples(samples);
         forgetPreparation();
         return this;
     }
@@ -148,12 +150,7 @@ public class RayTracerBasic extends RayTracerBase {
 
     @Override
     void requireRayBudget(AntiAliasing mode, long cameraRays) {
-        int soft = 0, other = 0;
-        for (LightSource light : scene.lights.toArray(new LightSource[0])) { // a copy: read once, whatever its kind
-            if (light.getRadius() > 0) ++soft;
-            else ++other;
-        }
-        RayBudget.require(mode, cameraRays, beamSize, shadowSamples, soft, other);
+        RayBudget.require(mode, cameraRays, beamSize, shadowSamples, scene.lights);
     }
 
     @Override

@@ -28,6 +28,31 @@ public final class RegionRenderer {
     }
 
     /**
+     * A renderer of rectangles of a camera's image; it prepares the scene now, once.
+     *
+     * @param camera the camera whose image is rendered in parts (its image writer only names the render)
+     * @return a new region renderer over the camera
+     */
+    public static RegionRenderer of(Camera camera) {
+        return new RegionRenderer(camera.view(), camera.sampling(), camera.execution(), camera.rayTracer(),
+                camera.imageWriter().getImageName());
+    }
+
+    /**
+     * A renderer of rectangles of the image {@code camera} would render, checked as its
+     * {@code build()} checks it, without allocating the image: what a cluster's executor renders its
+     * tiles with. It prepares the scene now, once.
+     *
+     * @param camera the builder whose settings are rendered
+     * @return a new region renderer over those settings
+     * @throws java.util.MissingResourceException as {@link Camera.Builder#build()}
+     * @throws IllegalArgumentException           as {@link Camera.Builder#build()}
+     */
+    public static RegionRenderer of(Camera.Builder camera) {
+        return camera.regionRenderer();
+    }
+
+    /**
      * Prepares the tracer for its scene, once for every rectangle.
      *
      * @param name labels worker threads and messages

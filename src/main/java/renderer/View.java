@@ -9,7 +9,7 @@ import primitives.Vector;
 
 /**
  * What a camera sees: where it stands, its orthonormal frame, its view plane cut into pixels and
- * its lens. A value, checked when it is made; {@link Camera.Builder#buildView()} makes one from a
+ * its lens. A value, checked when it is made; {@link Camera.Builder#build()} makes one from a
  * builder's settings, and a camera generates its rays from it. Units are scene units.
  *
  * @param location where the camera stands: the head of every pinhole ray, the lens centre
@@ -68,6 +68,26 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
          */
         public static Frame of(Vector to, Vector up) {
             return new Frame(to, up, to.crossProduct(up).normalize());
+        }
+
+        /**
+         * The frame looking along {@code to} with image up {@code up}, of any length: the rule of
+         * the course's {@code setDirection(to, up)}, which the scene reader checks a
+         * {@code <camera direction up>} with.
+         *
+         * @param to the view direction, any length
+         * @param up the image's up direction, any length
+         * @return the frame of the two normalized
+         * @throws NullPointerException     naming a missing direction
+         * @throws IllegalArgumentException when the two are not orthogonal, naming them
+         */
+        public static Frame along(Vector to, Vector up) {
+            Objects.requireNonNull(to, "camera direction 'to'");
+            Objects.requireNonNull(up, "camera direction 'up'");
+            Vector unitTo = to.normalize(), unitUp = up.normalize();
+            if (!Util.isZero(unitTo.dotProduct(unitUp)))
+                throw new IllegalArgumentException("camera 'to' " + to + " and 'up' " + up + " must be orthogonal");
+            return of(unitTo, unitUp);
         }
 
         /**
@@ -178,6 +198,21 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
             Util.requireNonNegative(aperture, "aperture radius");
             if (aperture > 0) Util.requirePositive(focalDistance, "focal distance");
             else Util.requireNonNegative(focalDistance, "focal distance");
+        }
+
+        /**
+         * The rule of the course's {@code setDepthOfField(focalDistance, apertureRadius)}: the
+         * focal distance checked first, then the aperture.
+         *
+         * @param focalDistance  the distance of the sharp plane, positive and finite
+         * @param apertureRadius the lens radius, finite and ≥ 0 (0: the pinhole camera)
+         * @return the lens
+         * @throws IllegalArgumentException when either is out of range, naming it
+         */
+        public static Lens thin(double focalDistance, double apertureRadius) {
+            Util.requirePositive(focalDistance, "focal distance");
+            Util.requireNonNegative(apertureRadius, "aperture radius");
+            return new Lens(apertureRadius, focalDistance);
         }
 
         /** @return whether this is the pinhole camera (aperture 0): a camera sample draws no lens point */

@@ -1,7 +1,5 @@
 package renderer;
 
-import static renderer.RayTracerBasic.MIN_CALC_COLOR_K;
-
 import geometries.Geometry;
 import geometries.Hit;
 import geometries.Intersectable;
@@ -28,6 +26,35 @@ import scene.Scene;
  * objects. The golden-image tests and {@code DeterminismTest} hold the images to the bit.
  */
 final class WhittedShader {
+    /** The recursion depth limit of reflection and refraction (the course's value). */
+    static final int MAX_CALC_COLOR_LEVEL = 10;
+    /** Below this accumulated coefficient (in every channel) a contribution is not traced (the course's value). */
+    static final double MIN_CALC_COLOR_K = 0.001;
+    /** Rays per glossy or diffuse-glass beam when none is set. */
+    static final int DEFAULT_BEAM_SIZE = 16;
+    /** Shadow rays toward a light with a radius when none is set. */
+    static final int DEFAULT_SHADOW_SAMPLES = 16;
+
+    /**
+     * @param rays rays per glossy or diffuse-glass beam
+     * @return {@code rays}
+     * @throws IllegalArgumentException when it is below 1, naming it
+     */
+    static int requireBeamSize(int rays) {
+        if (rays < 1) throw new IllegalArgumentException("beam size must be at least 1 ray, got " + rays);
+        return rays;
+    }
+
+    /**
+     * @param samples shadow rays toward a light with a radius
+     * @return {@code samples}
+     * @throws IllegalArgumentException when it is below 1, naming it
+     */
+    static int requireShadowSamples(int samples) {
+        if (samples < 1) throw new IllegalArgumentException("shadow samples must be at least 1, got " + samples);
+        return samples;
+    }
+
     /** The golden-ratio conjugate: spreads beam samples evenly in angle (a Fibonacci lattice). */
     private static final double PHI = 0.6180339887498949;
 
@@ -90,7 +117,7 @@ final class WhittedShader {
     /**
      * Emission aside, the light arriving directly: Phong per light, times its shadow
      * transparency; into and returned as {@code ctx.local}. A light whose transparency times the
-     * path's {@code weight} is below {@link RayTracerBasic#MIN_CALC_COLOR_K} in every channel adds
+     * path's {@code weight} is below {@link #MIN_CALC_COLOR_K} in every channel adds
      * nothing.
      */
     private Rgb calcLocalEffects(Hit hit, double nv, Material material, Rgb weight, TraceContext ctx) {
@@ -248,7 +275,7 @@ final class WhittedShader {
 
     /**
      * Adds the light of one bounce to {@code at.indirect}: nothing when its k is zero, or when the
-     * path weight below it ({@code at.weight · k}) is under {@link RayTracerBasic#MIN_CALC_COLOR_K}
+     * path weight below it ({@code at.weight · k}) is under {@link #MIN_CALC_COLOR_K}
      * in every channel.
      */
     private void addBounce(Level at, Bounce bounce, int budget, TraceContext ctx) {

@@ -1,20 +1,27 @@
 package renderer;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatIllegalArgumentException;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.assertj.core.api.Assertions.catchThrowable;
 import static org.junit.jupiter.api.Assertions.assertTimeoutPreemptively;
 
 import java.time.Duration;
+import java.util.List;
 import java.util.concurrent.CancellationException;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.UnaryOperator;
+import java.util.stream.Stream;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.MethodSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
 import geometries.Plane;
@@ -32,6 +39,18 @@ import scene.Scene;
  * middle of a pixel of millions of rays stops within a bounded time.
  */
 class RayBudgetTest {
+    static Stream<Arguments> builds() {
+        return Stream.of(
+                Arguments.of("RANDOM 256x256, beams of 128", (UnaryOperator<Camera.Builder>) b -> b
+                        .setAntiAliasing(AntiAliasing.RANDOM, 256, 256), Sampling.DEFAULT.withAntiAliasing(AntiAliasing.RANDOM)
+                        .withGrid(256, 256), false, 128, 1, 0),
+                Arguments.of("ADAPTIVE depth 6 with a lens, 3 soft lights", (UnaryOperator<Camera.Builder>) b -> b
+                        .setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(6, 1).setDepthOfField(10, 1),
+                        Sampling.DEFAULT.withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptive(6, 1), true, 64, 64, 3),
+                Arguments.of("NONE with 60000 lens samples", (UnaryOperator<Camera.Builder>) b -> b.setDepthOfField(10, 1)
+                        .setDepthOfFieldSamples(60_000), Sampling.DEFAULT.withLensSamples(60_000), true, 200, 1, 0));
+    }
+
     /** A camera on {@link TestScenes#EYE} of side × side pixels with {@code tracer}. */
     private static Camera.Builder camera(RayTracerBasic tracer, int side) {
         return Camera.getBuilder().setLocation(TestScenes.EYE)
@@ -104,17 +123,29 @@ class RayBudgetTest {
         }
 
         @Test
-        @DisplayName("requireRayBudget() checks the sampling, lens and tracer alone: no view, no image needed")
-        void withoutAView() {
-            Camera.Builder noView = Camera.getBuilder()
-                    .setRayTracer(new RayTracerBasic(new Scene("s")).setBeamSize(1_000_000_000));
-            assertThatThrownBy(noView::requireRayBudget).isInstanceOf(IllegalArgumentException.class)
+        @DisplayName("the rule alone, as a scene file is checked: sampling, lens, beam and shadow samples over the lights")
+        void theRuleAlone() {
+            assertThatThrownBy(() -> RayBudget.require(Sampling.DEFAULT, false, 1_000_000_000, 16, List.of()))
+                    .isInstanceOf(IllegalArgumentException.class)
                     .hasMessage("NONE sampling with 1 samples per pixel × (1 + 2 beams of 1000000000 rays: reflection and"
                             + " transmission) × (1 + 16 shadow samples × 0 soft lights + 0 other lights) is 2000000001 rays"
                             + " per pixel, more than the limit of 16777216");
-            Camera.Builder fits = Camera.getBuilder().setRayTracer(new RayTracerBasic(new Scene("s")))
-                    .setAntiAliasing(AntiAliasing.ADAPTIVE);
-            assertThat(fits.requireRayBudget()).isSameAs(fits);
+            RayBudget.require(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.ADAPTIVE), true, 16, 16, lit(1, 2).lights);
+            assertThatIllegalArgumentException().isThrownBy(() -> RayBudget.require(Sampling.DEFAULT, false, 0, 16, List.of()))
+                    .withMessage("beam size must be at least 1 ray, got 0");
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("renderer.RayBudgetTest#builds")
+        @DisplayName("the rule refuses exactly what build() refuses, with its message")
+        void theRuleIsBuilds(String name, UnaryOperator<Camera.Builder> settings, Sampling sampling, boolean lens,
+                             int beamSize, int shadowSamples, int softLights) {
+            Scene scene = lit(softLights, 1);
+            Throwable built = catchThrowable(() -> settings.apply(camera(new RayTracerBasic(scene).setBeamSize(beamSize)
+                    .setShadowSamples(shadowSamples), 1)).build());
+            Throwable ruled = catchThrowable(() -> RayBudget.require(sampling, lens, beamSize, shadowSamples, scene.lights));
+            assertThat(built).as("build() refuses").isNotNull();
+            assertThat(ruled).isInstanceOf(IllegalArgumentException.class).hasMessage(built.getMessage());
         }
 
         @Test

@@ -49,7 +49,7 @@ class RegionRendererTest {
         camera(mode, whole, 2).render();
 
         ImageWriter parts = new ImageWriter("parts", NX, NY);
-        RegionRenderer regions = camera(mode, new ImageWriter("unused", NX, NY), 0).regionRenderer();
+        RegionRenderer regions = RegionRenderer.of(camera(mode, new ImageWriter("unused", NX, NY), 0));
         int[] xs = { 0, 7, 30, 31, NX }, ys = { 0, 13, 22, NY };
         for (int j = 0; j + 1 < ys.length; ++j)
             for (int i = 0; i + 1 < xs.length; ++i) {
@@ -68,7 +68,7 @@ class RegionRendererTest {
         ImageWriter whole = new ImageWriter("whole", NX, NY);
         camera(b -> b, whole, 0).render();
         ImageWriter image = new ImageWriter("region", NX, NY);
-        int[] rgb = camera(b -> b, image, 0).regionRenderer().render(10, 5, 20, 9).rgb();
+        int[] rgb = RegionRenderer.of(camera(b -> b, image, 0)).render(10, 5, 20, 9).rgb();
         for (int y = 5; y < 9; ++y)
             for (int x = 10; x < 20; ++x)
                 assertThat(rgb[(y - 5) * 10 + (x - 10)]).as("pixel (%d,%d)", x, y).isEqualTo(whole.getRgb(x, y));
@@ -82,17 +82,17 @@ class RegionRendererTest {
         Camera camera = builder.build();
         camera.render();
         ImageWriter whole = camera.getImageWriter();
-        int[] rgb = builder.setResolution(NX, NY).buildRegionRenderer().render(4, 6, 7, 8).rgb();
+        int[] rgb = RegionRenderer.of(builder.setResolution(NX, NY)).render(4, 6, 7, 8).rgb();
         assertThat(rgb).containsExactly(whole.getRgb(4, 6), whole.getRgb(5, 6), whole.getRgb(6, 6),
                 whole.getRgb(4, 7), whole.getRgb(5, 7), whole.getRgb(6, 7));
         // 6.4 GB as an image: more than the test JVM's heap.
-        assertThat(builder.setResolution(40_000, 40_000).buildRegionRenderer().render(0, 0, 3, 2).rgb()).hasSize(6);
+        assertThat(RegionRenderer.of(builder.setResolution(40_000, 40_000)).render(0, 0, 3, 2).rgb()).hasSize(6);
     }
 
     @Test
     @DisplayName("an empty rectangle or one reaching outside the image is refused, naming it")
     void badRectangles() {
-        RegionRenderer regions = camera(b -> b, new ImageWriter("bad", NX, NY), 0).regionRenderer();
+        RegionRenderer regions = RegionRenderer.of(camera(b -> b, new ImageWriter("bad", NX, NY), 0));
         assertThatIllegalArgumentException().isThrownBy(() -> regions.render(5, 5, 5, 10))
                 .withMessage("region [5,5)x[5,10) must be a non-empty rectangle inside the 53x37 image");
         assertThatIllegalArgumentException().isThrownBy(() -> regions.render(-1, 0, 5, 5)).withMessageContaining("[-1,5)");

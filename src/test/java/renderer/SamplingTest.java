@@ -25,8 +25,8 @@ import scene.Scene;
 /**
  * {@link Sampling}: the budget it states is the rays its samplers spend. For every mode, with and
  * without a lens, a one-pixel render at its worst case traces exactly
- * {@link Sampling#maxSamplesPerPixel} camera rays, which is also the figure
- * {@link RayBudget#cameraRaysPerPixel} gives scene files.
+ * {@link Sampling#maxSamplesPerPixel} camera rays, the one figure the builder and the scene files
+ * ({@link RayBudget#require(Sampling, boolean, int, int, java.util.Collection)}) hold a pixel to.
  */
 class SamplingTest {
     /**
@@ -81,8 +81,6 @@ class SamplingTest {
             boolean lens = !camera.view().lens().isPinhole();
             long budget = s.maxSamplesPerPixel(lens);
             assertThat(camera.render().cameraRays()).as("camera rays traced for the pixel").isEqualTo(budget);
-            assertThat(RayBudget.cameraRaysPerPixel(s.antiAliasing(), s.grid().columns(), s.grid().rows(),
-                    s.adaptive().depth(), lens, s.lensSamples())).as("the scene files' figure").isEqualTo(budget);
         }
 
         @Test
@@ -97,7 +95,6 @@ class SamplingTest {
         void adaptiveLensFigure() {
             assertThat(onePixel().setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(3, 8).build().sampling()
                     .maxSamplesPerPixel(true)).isEqualTo(64);
-            assertThat(RayBudget.cameraRaysPerPixel(AntiAliasing.ADAPTIVE, 1, 1, 3, true, 16)).isEqualTo(64);
         }
     }
 
@@ -124,8 +121,8 @@ class SamplingTest {
 
         @Test
         @DisplayName("a gradient: every square is subdivided down to the deepest level")
-        void gradient() {
-            assertThat(cameraRays(gradient(), false)).isEqualTo(81);
+        void gradientSplits() {
+            assertThat(cameraRays(SamplingTest.gradient(), false)).isEqualTo(81);
         }
     }
 

@@ -21,7 +21,7 @@ import primitives.Ray;
 import primitives.Vector;
 
 /**
- * {@link View}: the value {@link Camera.Builder#buildView()} checks a camera's view with, before
+ * {@link View}: the value {@link Camera.Builder#view()} checks a camera's view with, before
  * any image or tracer exists, refusing exactly what {@code build()} refuses with the same
  * exception and message; its rays are the camera's.
  */
@@ -32,7 +32,7 @@ class ViewTest {
     }
 
     @Nested
-    @DisplayName("buildView() refuses what build() refuses, with the same exception and message")
+    @DisplayName("view() refuses what build() refuses, with the same exception and message")
     class SameChecks {
         static Stream<Arguments> broken() {
             return Stream.of(
@@ -60,9 +60,9 @@ class ViewTest {
         void sameFailure(String what, UnaryOperator<Camera.Builder> breakIt) {
             Camera.Builder builder = breakIt.apply(complete());
             Throwable byBuild = catchThrown(builder::build);
-            Throwable byView = catchThrown(builder::buildView);
+            Throwable byView = catchThrown(builder::view);
             assertThat(byBuild).as("build()").isNotNull();
-            assertThat(byView).as("buildView()").isExactlyInstanceOf(byBuild.getClass()).hasMessage(byBuild.getMessage());
+            assertThat(byView).as("view()").isExactlyInstanceOf(byBuild.getClass()).hasMessage(byBuild.getMessage());
             if (byBuild instanceof MissingResourceException m)
                 assertThat(((MissingResourceException) byView).getKey()).isEqualTo(m.getKey());
         }
@@ -83,7 +83,7 @@ class ViewTest {
         @Test
         @DisplayName("holds the builder's location, orthonormal frame, view plane, resolution and lens")
         void parts() {
-            View view = complete().setDepthOfField(12, 0.5).buildView();
+            View view = complete().setDepthOfField(12, 0.5).view();
             assertThat(view.location()).isEqualTo(new Point(1, 2, 3));
             assertThat(view.frame().to()).isEqualTo(new Vector(0, 0, -1));
             assertThat(view.frame().up()).isEqualTo(new Vector(0, 1, 0));
@@ -95,14 +95,14 @@ class ViewTest {
         @Test
         @DisplayName("without an image writer or tracer: a 40000x40000 resolution allocates nothing")
         void noImage() {
-            assertThat(complete().setResolution(40_000, 40_000).buildView().plane().nX()).isEqualTo(40_000);
+            assertThat(complete().setResolution(40_000, 40_000).view().plane().nX()).isEqualTo(40_000);
         }
 
         @Test
         @DisplayName("is the built camera's: same frame and the same rays, bit for bit")
         void cameraDelegates() {
             Camera.Builder builder = complete().setDirection(new Point(-3, 5, -20), new Vector(0.1, 1, 0));
-            View view = builder.buildView();
+            View view = builder.view();
             Camera camera = builder.build();
             assertThat(camera.getVRight()).isEqualTo(view.frame().right());
             for (int i = 0; i < 6; ++i)
@@ -147,7 +147,7 @@ class ViewTest {
         @Test
         @DisplayName("constructRay refuses a pixel outside the resolution, naming it")
         void outside() {
-            View view = complete().buildView();
+            View view = complete().view();
             assertThatThrownBy(() -> view.constructRay(2, 2, 2, 0)).isInstanceOf(IllegalArgumentException.class)
                     .hasMessage("pixel (2,0) is outside the 2x2 view plane");
             assertThatThrownBy(() -> view.constructRay(0, 2, 0, 0)).hasMessage("resolution must be positive, got 0x2");

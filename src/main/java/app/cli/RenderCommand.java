@@ -24,6 +24,7 @@ import picocli.CommandLine.Spec;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.Execution;
 import renderer.ImageWriter;
 import scene.Scene;
 import scene.io.FileSource;
@@ -328,7 +329,7 @@ public final class RenderCommand implements Callable<Integer> {
         if (height != null && height < 1) throw usage("--height must be at least 1, got " + height);
         if (threads != null) {
             try {
-                Camera.getBuilder().setMultithreading(threads);
+                Execution.requireThreads(threads);
             } catch (IllegalArgumentException e) {
                 throw usage("--threads: " + e.getMessage());
             }

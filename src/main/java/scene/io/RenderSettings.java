@@ -10,12 +10,14 @@ import java.util.StringJoiner;
 import java.util.function.Consumer;
 
 import primitives.Color;
-import primitives.Point;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.Execution;
 import renderer.ImageWriter;
 import renderer.RayBudget;
 import renderer.RayTracerBasic;
+import renderer.Sampling;
+import renderer.View;
 import scene.Scene;
 
 /**
@@ -53,7 +55,7 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public static final long MAX_PIXELS = ImageWriter.MAX_PIXELS;
     /**
-     * The ray budget of one pixel, {@link RayBudget#MAX_RAYS_PER_PIXEL}: the library's limit,
+     * The ray budget of one pixel, {@code RayBudget.MAX_RAYS_PER_PIXEL}: the library's limit,
      * which {@code Camera.Builder.build()} holds every camera to; named here for the scene
      * format's messages and documentation.
      */
@@ -459,10 +461,12 @@ public final class RenderSettings implements java.io.Serializable {
         camera.setImageWriter(image).setRayTracer(tracer);
         if (antiAliasing != null) camera.setAntiAliasing(antiAliasing);
         if (gridColumns != null) camera.setAntiAliasingGrid(gridColumns, gridRows);
-        if (adaptiveDepth != null || adaptiveThreshold != null) camera.setAdaptive(
-                // The builder takes the two together: a specification stating one gets the library's other.
-                adaptiveDepth != null ? adaptiveDepth : Camera.DEFAULT_ADAPTIVE_DEPTH,
-                adaptiveThreshold != null ? adaptiveThreshold : Camera.DEFAULT_ADAPTIVE_THRESHOLD);
+        if (adaptiveDepth != null || adaptiveThreshold != null) {
+            // The builder takes the two together: a specification stating one gets the library's other.
+            Sampling.Adaptive library = Sampling.DEFAULT.adaptive();
+            camera.setAdaptive(adaptiveDepth != null ? adaptiveDepth : library.depth(),
+                    adaptiveThreshold != null ? adaptiveThreshold : library.threshold());
+        }
         // A stated pinhole (focal distance 0, whatever the aperture) is the builder's aperture 0,
         // which is the pinhole whatever the focal distance: it undoes a lens set on the builder before.
         if (focalDistance != null) {
@@ -476,9 +480,9 @@ public final class RenderSettings implements java.io.Serializable {
 
     /**
      * Checks this specification against the library's ray budget, as {@code Camera.Builder.build()}
-     * will when it is replayed: the stated values over the library's defaults, replayed onto a
-     * fresh builder and tracer ({@link Camera.Builder#requireRayBudget()}; the budget depends on
-     * the sampling, the lens and the tracer, not on the view).
+     * will when it is replayed: the stated values over the library's defaults, by the library's rule
+     * ({@link RayBudget#require(Sampling, boolean, int, int, java.util.Collection)}; the budget
+     * depends on the sampling, the lens and the tracer, not on the view), with no lights.
      *
      * @return this specification
      * @throws IllegalArgumentException for a stated value the camera or the tracer refuses, or
@@ -499,8 +503,31 @@ public final class RenderSettings implements java.io.Serializable {
      * @throws IllegalArgumentException as {@link #requireRayBudget()}, with the lights among the factors
      */
     public RenderSettings requireRayBudget(Scene scene) {
-        applyTo(Camera.getBuilder(), scene, new ImageWriter(1, 1)).requireRayBudget();
+        if (threads != null) Execution.requireThreads(threads);
+        RayBudget.require(sampling(), !lens().isPinhole(), beamSize != null ? beamSize : RayTracerBasic.DEFAULT_BEAM_SIZE,
+                shadowSamples != null ? shadowSamples : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, scene.lights);
         return this;
+    }
+
+    /** The stated lens, checked by the library's rule: the pinhole when none is stated or its focal distance is 0. */
+    private View.Lens lens() {
+        return focalDistance == null || focalDistance == 0 ? View.Lens.PINHOLE : View.Lens.thin(focalDistance, aperture);
+    }
+
+    /**
+     * The stated sampling over the library's, each part checked by the library's rule. ADAPTIVE's
+     * depth and threshold are one value there: a specification stating one gets the library's other.
+     */
+    private Sampling sampling() {
+        Sampling s = Sampling.DEFAULT;
+        if (antiAliasing != null) s = s.withAntiAliasing(antiAliasing);
+        if (gridColumns != null) s = s.withGrid(gridColumns, gridRows);
+        if (adaptiveDepth != null || adaptiveThreshold != null)
+            s = s.withAdaptive(adaptiveDepth != null ? adaptiveDepth : s.adaptive().depth(),
+                    adaptiveThreshold != null ? adaptiveThreshold : s.adaptive().threshold());
+        if (lensSamples != null) s = s.withLensSamples(lensSamples);
+        if (seed != null) s = s.withSeed(seed);
+        return s;
     }
 
     /**

@@ -5,6 +5,7 @@ import java.util.Objects;
 import primitives.Point;
 import primitives.Vector;
 import renderer.Camera;
+import renderer.View;
 
 /**
  * A {@code <camera>} element as the file states it: the view (location, direction, view plane),
@@ -35,9 +36,26 @@ record ViewSpec(Point location, Direction direction, double vpWidth, double vpHe
         return direction.applyTo(camera);
     }
 
+    /**
+     * The view a camera built from this one has (at one pixel, through a pinhole), made by the
+     * library's own rules without a builder: what the scene reader checks a {@code <camera>} with.
+     *
+     * @return the view
+     * @throws IllegalArgumentException when the directions make no frame (up not orthogonal to the
+     *                                  direction, a target at the location or along the up), or
+     *                                  the view plane is not positive, with the builder's message
+     */
+    View view() {
+        return new View(location, direction.frame(location), new View.ViewPlane(vpWidth, vpHeight, vpDistance, 1, 1),
+                View.Lens.PINHOLE);
+    }
+
     /** The two ways a {@code <camera>} states where it looks. */
     sealed interface Direction {
         Camera.Builder applyTo(Camera.Builder camera);
+
+        /** The frame {@link #applyTo}'s setter makes, by the same rule, seen from {@code location}. */
+        View.Frame frame(Point location);
     }
 
     /**
@@ -51,6 +69,11 @@ record ViewSpec(Point location, Direction direction, double vpWidth, double vpHe
         public Camera.Builder applyTo(Camera.Builder camera) {
             return camera.setDirection(to, up);
         }
+
+        @Override
+        public View.Frame frame(Point location) {
+            return View.Frame.along(to, up);
+        }
     }
 
     /**
@@ -63,6 +86,11 @@ record ViewSpec(Point location, Direction direction, double vpWidth, double vpHe
         @Override
         public Camera.Builder applyTo(Camera.Builder camera) {
             return up != null ? camera.setDirection(target, up) : camera.setDirection(target);
+        }
+
+        @Override
+        public View.Frame frame(Point location) {
+            return View.Frame.lookingAt(location, target, up != null ? up.normalize() : null); // the setter normalizes it
         }
     }
 }

@@ -55,6 +55,8 @@ import primitives.Ray;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.Execution;
+import renderer.Sampling;
 import renderer.View;
 import scene.Scene;
 
@@ -84,13 +86,13 @@ public final class XmlSceneReader {
     // Settings validated by the library's own setters, so the rules live in one place.
     private static final ValueType<Integer> THREADS = INTEGER.narrowedBy(
             "0 (the calling thread), a number of threads up to " + Camera.MAX_THREADS_PER_CORE + " per core, or -1 or -2 (all cores)",
-            n -> Camera.getBuilder().setMultithreading(n));
+            Execution::requireThreads);
     private static final ValueType<Integer> ADAPTIVE_DEPTH = INTEGER.narrowedBy("an integer from 1 to 6",
-            d -> Camera.getBuilder().setAdaptive(d, 0));
+            Sampling.Adaptive::requireDepth);
     private static final ValueType<int[]> AA_GRID = GRID.narrowedBy(GRID.expected() + ", at most "
-            + Camera.MAX_SAMPLES_PER_PIXEL + " samples", g -> Camera.getBuilder().setAntiAliasingGrid(g[0], g[1]));
+            + Camera.MAX_SAMPLES_PER_PIXEL + " samples", g -> new Sampling.Grid(g[0], g[1]));
     private static final ValueType<Integer> LENS_SAMPLES = POSITIVE_INTEGER.narrowedBy("an integer from 1 to "
-            + Camera.MAX_SAMPLES_PER_PIXEL, n -> Camera.getBuilder().setDepthOfFieldSamples(n));
+            + Camera.MAX_SAMPLES_PER_PIXEL, Sampling::requireLensSamples);
     private static final ValueType<Integer> SHININESS = INTEGER.narrowedBy("an integer ≥ 0",
             n -> new Material().setShininess(n));
     private static final ValueType<String> IMAGE_NAME = TEXT.narrowedBy("a file name without /, \\, :, .., control"
@@ -610,7 +612,7 @@ public final class XmlSceneReader {
             Vector to = e.required("direction", VECTOR);
             Vector up = e.required("up", VECTOR);
             try {
-                Camera.getBuilder().setDirection(to, up); // checked here to report it at 'up'
+                View.Frame.along(to, up); // setDirection(to, up)'s rule, checked here to report it at 'up'
             } catch (IllegalArgumentException ex) {
                 throw e.errorAt("up", "invalid <camera>: " + ex.getMessage()
                         + " (expected an up vector orthogonal to the direction)", ex);
@@ -625,10 +627,10 @@ public final class XmlSceneReader {
         ViewSpec view = new ViewSpec(location, direction, size[0], size[1], e.required("vp-distance", POSITIVE));
 
         // The checks that need every part (target at the location, up along the view) are the
-        // builder's, which makes the view a camera built from the file will have.
+        // library's rules for the view a camera built from the file will have.
         View checked;
         try {
-            checked = view.applyTo(Camera.getBuilder()).buildView();
+            checked = view.view();
         } catch (IllegalArgumentException ex) {
             throw e.error("invalid <camera>: " + ex.getMessage()
                     + " (expected a target away from the location and an up not along the view direction)", ex);

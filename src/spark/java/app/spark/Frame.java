@@ -33,9 +33,8 @@ record Frame(SceneFiles files, RenderSettings settings) implements Serializable 
             LoadedScene loaded = files.load();
             // applyTo wants an image writer; a 1x1 one stands in, and the resolution set after it
             // replaces it, so that the builder makes only the region renderer, no image.
-            return settings.withThreads(0).applyTo(loaded.requireView(), loaded.scene(), new ImageWriter(1, 1))
-                    .setResolution(settings.width(), settings.height()).setDebugPrint(0).setSummary(false)
-                    .buildRegionRenderer();
+            return RegionRenderer.of(settings.withThreads(0).applyTo(loaded.requireView(), loaded.scene(), new ImageWriter(1, 1))
+                    .setResolution(settings.width(), settings.height()).setDebugPrint(0).setSummary(false));
         } catch (IOException | SceneFormatException e) {
             throw new IllegalStateException("the scene " + files.scene() + " the driver validated fails on the executor: "
                     + e.getMessage(), e);
