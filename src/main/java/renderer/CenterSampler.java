@@ -14,9 +14,9 @@ final class CenterSampler extends PixelSampler {
     private final int samples;
     private final Rgb pixel = new Rgb();
 
-    CenterSampler(Sampling sampling, View.CameraRays rays, RayTracerBase tracer) {
-        super(sampling, rays, tracer);
-        this.samples = (int) samplesPerPixel(rays.hasLens(), sampling.lensSamples());
+    CenterSampler(Sampling sampling, boolean lens, Estimator estimator) {
+        super(sampling, lens, estimator);
+        this.samples = (int) samplesPerPixel(lens, sampling.lensSamples());
     }
 
     /** Camera rays per pixel: the lens samples with depth of field, else 1. */

@@ -11,8 +11,8 @@ final class GridSampler extends PixelSampler {
     private final int rows;
     private final Rgb pixel = new Rgb();
 
-    GridSampler(Sampling sampling, View.CameraRays rays, RayTracerBase tracer) {
-        super(sampling, rays, tracer);
+    GridSampler(Sampling sampling, boolean lens, Estimator estimator) {
+        super(sampling, lens, estimator);
         this.columns = sampling.grid().columns();
         this.rows = sampling.grid().rows();
     }

@@ -58,8 +58,8 @@ final class LatticeSampler extends PixelSampler {
      *
      * @param tileSize the render loop's tile side in pixels: the cache covers one tile's lattice
      */
-    LatticeSampler(Sampling sampling, View.CameraRays rays, RayTracerBase tracer, int tileSize) {
-        super(sampling, rays, tracer);
+    LatticeSampler(Sampling sampling, boolean lens, Estimator estimator, int tileSize) {
+        super(sampling, lens, estimator);
         this.adaptive = sampling.antiAliasing() == AntiAliasing.ADAPTIVE;
         this.maxDepth = adaptive ? sampling.adaptive().depth() : 0;
         this.threshold = sampling.adaptive().threshold();

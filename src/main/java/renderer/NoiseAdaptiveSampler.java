@@ -37,8 +37,8 @@ final class NoiseAdaptiveSampler extends PixelSampler {
     private final double tolerance2;
     private final Rgb pixel = new Rgb();
 
-    NoiseAdaptiveSampler(Sampling sampling, View.CameraRays rays, RayTracerBase tracer) {
-        super(sampling, rays, tracer);
+    NoiseAdaptiveSampler(Sampling sampling, boolean lens, Estimator estimator) {
+        super(sampling, lens, estimator);
         this.max = (int) maxSamplesPerPixel(sampling.adaptive().depth());
         double tolerance = sampling.adaptive().threshold();
         this.tolerance2 = tolerance * tolerance;

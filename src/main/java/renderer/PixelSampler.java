@@ -6,7 +6,8 @@ import primitives.Rgb;
  * A sampling strategy: the colour of one pixel from as many camera samples as it chooses. For
  * each sample it chooses a film point (in pixels from the image's top-left corner) and, with a
  * lens, a lens point (drawn from the sample's stream, or stratified over the pixel's samples by
- * {@link SobolPoints}); the view makes the ray and the tracer colours it. One instance per worker thread (it may keep scratch state); the render loop calls
+ * {@link SobolPoints}); its {@link Estimator}, from the render loop, colours the sample. One
+ * instance per worker thread (it may keep scratch state); the render loop calls
  * {@link #beginTile} before the pixels of each tile.
  */
 abstract class PixelSampler {
@@ -17,16 +18,18 @@ abstract class PixelSampler {
     static final int PIXEL_KEY = -1;
     /** The render's seed: every sample's stream is keyed by it, the pixel and the sample index. */
     final long seed;
-    private final View.CameraRays rays;
-    private final RayTracerBase tracer;
+    private final Estimator estimator;
     /** Whether each camera sample draws a lens point (the view has an aperture). */
     private final boolean lens;
 
-    PixelSampler(Sampling sampling, View.CameraRays rays, RayTracerBase tracer) {
+    /**
+     * @param lens      whether each camera sample draws a lens point (the view has an aperture)
+     * @param estimator the colour of a camera sample
+     */
+    PixelSampler(Sampling sampling, boolean lens, Estimator estimator) {
         this.seed = sampling.seed();
-        this.rays = rays;
-        this.tracer = tracer;
-        this.lens = rays.hasLens();
+        this.estimator = estimator;
+        this.lens = lens;
     }
 
     /** Announces the tile of columns [x0, x1) and rows [y0, y1) about to be sampled. */
@@ -58,8 +61,7 @@ abstract class PixelSampler {
      */
     final Rgb trace(double px, double py, double u, double v, TraceContext ctx) {
         ctx.cameraRays++;
-        rays.generate(px, py, u, v, ctx);
-        return tracer.traceRay(ctx);
+        return estimator.estimate(px, py, u, v, ctx);
     }
 
     /** @return whether each camera sample takes a lens point (the view has an aperture) */

@@ -7,7 +7,6 @@ import primitives.Color;
 import primitives.CourseClassGuard;
 import primitives.Point;
 import primitives.Ray;
-import primitives.Rgb;
 import primitives.Vector;
 import scene.Scene;
 
@@ -42,8 +41,11 @@ public abstract class RayTracerBase {
     /**
      * Builds what tracing needs from the scene as it is now (acceleration structures, checked
      * lights). Entered only through {@link #prepareFor}, which holds the tracer's lock.
+     *
+     * @return the tracing over what was built; by default the course's {@link #traceRay(Hit)}
      */
-    void prepare() {
+    PreparedTracer prepare() {
+        return ctx -> ctx.cameraColour().set(traceRay(ctx.cameraRay()));
     }
 
     /**
@@ -52,11 +54,13 @@ public abstract class RayTracerBase {
      * a region renderer once for all its regions; a direct call when the scene changed since.
      *
      * @param scene the scene's state now, the one the tracer is prepared for
+     * @return the tracing prepared for that state, which the render holds
      */
-    final synchronized void prepareFor(SceneStamp scene) {
+    final synchronized PreparedTracer prepareFor(SceneStamp scene) {
         prepared = null; // until prepare() succeeds: a failed preparation is tried again
-        prepare();
+        PreparedTracer tracing = prepare();
         prepared = scene;
+        return tracing;
     }
 
     /**
@@ -108,18 +112,6 @@ public abstract class RayTracerBase {
     protected Color traceRay(Hit ray) {
         return traceRay(new Ray(new Point(ray.headX(), ray.headY(), ray.headZ()),
                 new Vector(ray.directionX(), ray.directionY(), ray.directionZ())));
-    }
-
-    /**
-     * The render loop's entry: traces the camera ray held in {@link TraceContext#cameraRay()},
-     * using the worker's scratch state and the sample's random stream. Tracers outside this
-     * package get {@link #traceRay(Hit)}.
-     *
-     * @return the colour seen, on the 0..255 scale: the context's {@link TraceContext#cameraColour()},
-     *         valid until its next trace
-     */
-    Rgb traceRay(TraceContext ctx) {
-        return ctx.cameraColour().set(traceRay(ctx.cameraRay()));
     }
 
     /** A short description of the tracer's settings for the render summary. */

@@ -7,7 +7,6 @@ import primitives.Color;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
-import primitives.Rgb;
 import primitives.Vector;
 import scene.Scene;
 
@@ -136,11 +135,13 @@ public class RayTracerBasic extends RayTracerBase {
      * one an earlier render built over the same, unchanged shapes ({@link Bvh#of}).
      */
     @Override
-    synchronized void prepare() {
+    synchronized PreparedTracer prepare() {
         scene.geometries.requireNestingWithinLimit(); // the flat walk recurses once per level
         for (LightSource light : scene.lights) light.validate();
         Intersectable world = useBvh ? Bvh.of(scene.geometries) : scene.geometries;
-        shader = new WhittedShader(scene, world, scene.lights.toArray(new LightSource[0]), beamSize, shadowSamples);
+        WhittedShader prepared = new WhittedShader(scene, world, scene.lights.toArray(new LightSource[0]), beamSize, shadowSamples);
+        shader = prepared;
+        return prepared::shadeCameraRay;
     }
 
     @Override
@@ -174,11 +175,6 @@ public class RayTracerBasic extends RayTracerBase {
         ctx.random.reset(Double.doubleToLongBits(h.getX()) * 31 + Double.doubleToLongBits(h.getY()),
                 Double.hashCode(h.getZ()), Double.hashCode(d.getX()) * 31 + Double.hashCode(d.getY()), Double.hashCode(d.getZ()));
         ctx.cameraRay().setRay(h.getX(), h.getY(), h.getZ(), d.getX(), d.getY(), d.getZ());
-        return traceRay(ctx).toColor();
-    }
-
-    @Override
-    Rgb traceRay(TraceContext ctx) {
-        return shader.shadeCameraRay(ctx);
+        return shader.shadeCameraRay(ctx).toColor();
     }
 }

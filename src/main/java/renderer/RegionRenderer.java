@@ -14,6 +14,8 @@ package renderer;
  */
 public final class RegionRenderer {
     private final RenderLoop loop;
+    /** The tracer as this renderer prepared it, once, for every rectangle. */
+    private final PreparedTracer prepared;
     private final String name;
     private final int nX, nY;
 
@@ -62,7 +64,7 @@ public final class RegionRenderer {
         this.name = name;
         this.nX = view.plane().nX();
         this.nY = view.plane().nY();
-        tracer.prepareFor(SceneStamp.of(tracer.scene, name));
+        this.prepared = tracer.prepareFor(SceneStamp.of(tracer.scene, name));
     }
 
     /**
@@ -80,6 +82,6 @@ public final class RegionRenderer {
         if (x0 < 0 || y0 < 0 || x1 > nX || y1 > nY || x0 >= x1 || y0 >= y1)
             throw new IllegalArgumentException("region [" + x0 + "," + x1 + ")x[" + y0 + "," + y1
                     + ") must be a non-empty rectangle inside the " + nX + "x" + nY + " image");
-        return loop.region(name, x0, y0, x1, y1);
+        return loop.region(name, prepared, x0, y0, x1, y1);
     }
 }

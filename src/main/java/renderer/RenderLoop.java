@@ -29,6 +29,7 @@ final class RenderLoop {
     private final ImageWriter image;
     private final View.Lens lens;
     private final View.CameraRays rays;
+    private final boolean hasLens;
 
     /**
      * @param image the image a whole-image pass writes, of the view's resolution; null when only
@@ -41,6 +42,7 @@ final class RenderLoop {
         this.image = image;
         this.lens = view.lens();
         this.rays = view.cameraRays();
+        this.hasLens = rays.hasLens();
     }
 
     /**
@@ -63,9 +65,9 @@ final class RenderLoop {
         try {
             sampling.requireRayBudget(lens, tracer); // the tracer's settings may have grown since the camera was built
             long t0 = System.nanoTime();
-            tracer.prepareFor(before);
+            PreparedTracer prepared = tracer.prepareFor(before);
             double prepareSeconds = (System.nanoTime() - t0) / 1e9;
-            stats = new Pass(name, new Rect(0, 0, image.getNx(), image.getNy()), null).run(prepareSeconds);
+            stats = new Pass(name, prepared, new Rect(0, 0, image.getNx(), image.getNy()), null).run(prepareSeconds);
         } catch (CancellationException e) {
             throw e;
         } catch (RuntimeException | Error e) { // a list read while another thread adds to it, say
@@ -78,17 +80,17 @@ final class RenderLoop {
 
     /**
      * Renders the rectangle of columns [x0, x1) and rows [y0, y1) only (the caller checked that
-     * it lies in the image, and prepared the tracer). Its tiles start at (x0, y0); a pixel's
+     * it lies in the image, and prepared the tracer: {@code prepared}). Its tiles start at (x0, y0); a pixel's
      * value does not depend on the tiling (see {@link LatticeSampler}), so a rectangle renders
      * exactly as it does within the whole image.
      *
      * @param name the label of progress lines and worker threads
      * @return the rectangle's pixels, packed 0xRRGGBB row by row, and what the render did
      */
-    RegionRenderer.Pixels region(String name, int x0, int y0, int x1, int y1) {
+    RegionRenderer.Pixels region(String name, PreparedTracer prepared, int x0, int y0, int x1, int y1) {
         sampling.requireRayBudget(lens, tracer);
         int[] rgb = new int[(x1 - x0) * (y1 - y0)];
-        RenderStats stats = new Pass(name, new Rect(x0, y0, x1, y1), rgb).run(0);
+        RenderStats stats = new Pass(name, prepared, new Rect(x0, y0, x1, y1), rgb).run(0);
         return new RegionRenderer.Pixels(rgb, stats);
     }
 
@@ -106,6 +108,8 @@ final class RenderLoop {
     /** One pass over a rectangle: its tiles, the workers' shared counters, and where its pixels go. */
     private final class Pass {
         private final String name;
+        /** The colour of a camera sample: the view's camera ray, traced by the tracer as this render prepared it. */
+        private final Estimator estimator;
         private final Rect rect;
         /** The rectangle's pixels, row by row; null: the tiles go into the image. */
         private final int[] out;
@@ -118,8 +122,12 @@ final class RenderLoop {
         private final AtomicReference<Throwable> failure = new AtomicReference<>();
         private final RenderStats.Counter counter = new RenderStats.Counter();
 
-        Pass(String name, Rect rect, int[] out) {
+        Pass(String name, PreparedTracer prepared, Rect rect, int[] out) {
             this.name = name;
+            this.estimator = (px, py, u, v, ctx) -> {
+                rays.generate(px, py, u, v, ctx);
+                return prepared.traceRay(ctx);
+            };
             this.rect = rect;
             this.out = out;
             this.tilesX = (rect.x1 - rect.x0 + tile - 1) / tile;
@@ -197,7 +205,7 @@ final class RenderLoop {
 
         private Runnable worker(Progress progress) {
             return () -> {
-                PixelSampler sampler = sampling.newSampler(rays, tracer, tile);
+                PixelSampler sampler = sampling.newSampler(hasLens, estimator, tile);
                 // One tile's pixels, written out when the tile is done.
                 int[] tilePixels = new int[tile * tile];
                 TraceContext ctx = tracer.newContext();

@@ -212,18 +212,18 @@ public record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, 
     /**
      * A new sampler, for one worker: its scratch state is its own.
      *
-     * @param rays     the view's camera rays
-     * @param tracer   what colours each camera ray
-     * @param tileSize the render loop's tile side, in pixels (at most {@link #tileSize()} for the
-     *                 lattice samplers, whose cache covers one tile)
+     * @param lens      whether the view has a lens (ADAPTIVE then samples each pixel on its own)
+     * @param estimator the colour of a camera sample, from the render loop
+     * @param tileSize  the render loop's tile side, in pixels (at most {@link #tileSize()} for the
+     *                  lattice samplers, whose cache covers one tile)
      */
-    PixelSampler newSampler(View.CameraRays rays, RayTracerBase tracer, int tileSize) {
+    PixelSampler newSampler(boolean lens, Estimator estimator, int tileSize) {
         return switch (antiAliasing) {
-            case NONE -> new CenterSampler(this, rays, tracer);
-            case RANDOM -> new GridSampler(this, rays, tracer);
-            case CORNERS -> new LatticeSampler(this, rays, tracer, tileSize);
-            case ADAPTIVE -> rays.hasLens() ? new NoiseAdaptiveSampler(this, rays, tracer)
-                    : new LatticeSampler(this, rays, tracer, tileSize);
+            case NONE -> new CenterSampler(this, lens, estimator);
+            case RANDOM -> new GridSampler(this, lens, estimator);
+            case CORNERS -> new LatticeSampler(this, lens, estimator, tileSize);
+            case ADAPTIVE -> lens ? new NoiseAdaptiveSampler(this, lens, estimator)
+                    : new LatticeSampler(this, lens, estimator, tileSize);
         };
     }
 
