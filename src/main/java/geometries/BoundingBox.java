@@ -2,6 +2,8 @@ package geometries;
 
 /**
  * An immutable axis-aligned box, {@code min ≤ max} on each axis (a flat box is allowed).
+ *
+ * @hidden internal: the bounding volume hierarchy's box, public for the renderer's packages
  */
 public final class BoundingBox {
     final double minX, minY, minZ, maxX, maxY, maxZ;

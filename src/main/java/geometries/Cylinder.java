@@ -81,6 +81,7 @@ public class Cylinder extends Tube {
         return height;
     }
 
+    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
     public BoundingBox getBoundingBox() {
         double ex = radius * Math.sqrt(Math.max(0, 1 - vx * vx));

@@ -105,6 +105,8 @@ public class Geometries extends Intersectable {
      * it rendered. Walks the nested lists without recursion, each once.
      *
      * @return the number of {@link #add} calls on this list and every list within it, so far
+     *
+     * @hidden internal: the renderer's checks of a scene before it renders
      */
     public long changeCount() {
         long count = 0;
@@ -124,6 +126,8 @@ public class Geometries extends Intersectable {
      * @return the levels of lists: 1 for a list of shapes, 2 when one of them is a list of
      *         shapes, and so on; more than the number of lists when one contains itself (counting
      *         then stops)
+     *
+     * @hidden internal: the renderer's checks of a scene before it renders
      */
     public int nestingDepth() {
         return nesting().depth();
@@ -134,6 +138,8 @@ public class Geometries extends Intersectable {
      *
      * @throws IllegalArgumentException naming the depth and the limit when the lists are nested
      *                                  deeper, or saying so when a list contains itself
+     *
+     * @hidden internal: the renderer's checks of a scene before it renders
      */
     public void requireNestingWithinLimit() {
         Nesting n = nesting();
@@ -232,6 +238,7 @@ public class Geometries extends Intersectable {
         }
     }
 
+    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
     public boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
@@ -241,6 +248,7 @@ public class Geometries extends Intersectable {
         return found;
     }
 
+    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
@@ -249,7 +257,11 @@ public class Geometries extends Intersectable {
         return true;
     }
 
-    /** @return the union of the children's boxes; null when empty or when any child is unbounded */
+    /**
+     * @return the union of the children's boxes; null when empty or when any child is unbounded
+     *
+     * @hidden internal: the bounding volume hierarchy's box
+     */
     @Override
     public BoundingBox getBoundingBox() {
         BoundingBox box = null;

@@ -17,6 +17,8 @@ import primitives.Vector;
  * same arithmetic, so the same bits); {@link Intersectable#closestHit(Hit)} and
  * {@link Intersectable#visitHits(Hit, double, HitVisitor)} then query it without any
  * {@link Ray} object.
+ *
+ * @hidden internal: the renderer's hit record, public for package renderer; a scene test uses GeoPoint
  */
 public final class Hit {
     private static final int[] NO_STACK = new int[0];

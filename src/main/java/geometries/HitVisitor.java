@@ -1,6 +1,10 @@
 package geometries;
 
-/** Receives the intersections of an any-hit walk; see {@link Intersectable#visitHits}. */
+/**
+ * Receives the intersections of an any-hit walk; see {@link Intersectable#visitHits}.
+ *
+ * @hidden internal: the renderer's any-hit walk, public for package renderer
+ */
 @FunctionalInterface
 public interface HitVisitor {
     /**

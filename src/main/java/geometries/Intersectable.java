@@ -387,6 +387,8 @@ public abstract class Intersectable extends BvhLeaf {
      * @param ray the ray to intersect
      * @param hit the record to update; its {@code t} is the upper bound
      * @return true when {@code hit} was updated
+     *
+     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
      */
     public boolean closestHit(Ray ray, Hit hit) {
         if (answersInDoubles) return closestHit(hit.setRay(ray));
@@ -414,6 +416,8 @@ public abstract class Intersectable extends BvhLeaf {
      *
      * @param hit the record holding the query ray; its {@code t} is the upper bound
      * @return true when {@code hit} was updated
+     *
+     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
      */
     @Override
     public boolean closestHit(Hit hit) {
@@ -435,6 +439,8 @@ public abstract class Intersectable extends BvhLeaf {
      * @param maxDistance the largest distance from the ray head that counts
      * @param visitor     called with each hit's geometry and distance
      * @return false when the visitor stopped the walk
+     *
+     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
      */
     public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
         if (answersInDoubles) return visitHits(Hit.of(ray), maxDistance, visitor);
@@ -456,13 +462,19 @@ public abstract class Intersectable extends BvhLeaf {
      * @param maxDistance the largest distance from the ray head that counts
      * @param visitor     called with each hit's geometry and distance
      * @return false when the visitor stopped the walk
+     *
+     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
      */
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         return visitHits(query.ray(), maxDistance, visitor);
     }
 
-    /** @return the axis-aligned box enclosing this shape, or null when it is unbounded */
+    /**
+     * @return the axis-aligned box enclosing this shape, or null when it is unbounded
+     *
+     * @hidden internal: the bounding volume hierarchy's box
+     */
     @Override
     public BoundingBox getBoundingBox() {
         return null;

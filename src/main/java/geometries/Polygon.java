@@ -132,6 +132,7 @@ public class Polygon extends SingleHitGeometry {
         return t;
     }
 
+    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
     public BoundingBox getBoundingBox() {
         double minX = vx[0], minY = vy[0], minZ = vz[0], maxX = minX, maxY = minY, maxZ = minZ;

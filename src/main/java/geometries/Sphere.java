@@ -106,6 +106,7 @@ public class Sphere extends Geometry {
         return Util.alignZero(th2) <= 0 ? Double.NaN : Math.sqrt(th2);
     }
 
+    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
     public boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
@@ -142,6 +143,7 @@ public class Sphere extends Geometry {
         out[at + 3] = radiusSquared;
     }
 
+    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
@@ -173,6 +175,7 @@ public class Sphere extends Geometry {
         return result.isEmpty() ? null : result;
     }
 
+    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
     public BoundingBox getBoundingBox() {
         return new BoundingBox(center.getX() - radius, center.getY() - radius, center.getZ() - radius,

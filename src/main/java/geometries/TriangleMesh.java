@@ -315,7 +315,11 @@ public class TriangleMesh extends Geometry {
         return paddedBounds.intersects(query.ox, query.oy, query.oz, 1 / query.dx, 1 / query.dy, 1 / query.dz, tMax);
     }
 
-    /** Tests the triangles in index order, as a list of the same {@link Triangle}s would be. */
+    /**
+     * Tests the triangles in index order, as a list of the same {@link Triangle}s would be.
+     *
+     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
+     */
     @Override
     public boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
@@ -325,6 +329,7 @@ public class TriangleMesh extends Geometry {
         return found;
     }
 
+    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
@@ -349,6 +354,7 @@ public class TriangleMesh extends Geometry {
         return result;
     }
 
+    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
     public BoundingBox getBoundingBox() {
         return bounds;

@@ -220,12 +220,14 @@ public class Tube extends Geometry {
         return !within(t, maxDistance) || visitor.visit(this, t);
     }
 
+    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
     public boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         return intersect(hit, 0, null);
     }
 
+    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
     public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);

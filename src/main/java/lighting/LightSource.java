@@ -97,6 +97,8 @@ public interface LightSource {
      * Nothing to check by default.
      *
      * @throws IllegalArgumentException naming the values that do not fit together
+     *
+     * @hidden internal: the renderer's checks of a light before and after a render
      */
     default void validate() {
     }
@@ -109,6 +111,8 @@ public interface LightSource {
      * with them; the default, 0, says it has none to watch.
      *
      * @return a number that differs whenever a setting the shading reads differs (up to a 2^-64 chance)
+     *
+     * @hidden internal: the renderer's checks of a light before and after a render
      */
     default long settingsStamp() {
         return 0;

@@ -148,7 +148,11 @@ public class PointLight extends Light implements LightSource {
         return position;
     }
 
-    /** @return a fingerprint of kC, kL, kQ and the radius, the settings that may change (see {@link LightSource#settingsStamp()}) */
+    /**
+     * @return a fingerprint of kC, kL, kQ and the radius, the settings that may change (see {@link LightSource#settingsStamp()})
+     *
+     * @hidden internal: the renderer's checks of a light before and after a render
+     */
     @Override
     public long settingsStamp() {
         return mix(mix(mix(mix(0, kC), kL), kQ), radius);
@@ -159,7 +163,11 @@ public class PointLight extends Light implements LightSource {
         return (stamp ^ Double.doubleToLongBits(value)) * 0x9E3779B97F4A7C15L + 0x632BE59BD9B4E019L;
     }
 
-    /** @throws IllegalArgumentException when kC, kL and kQ are all zero, naming the three */
+    /**
+     * @throws IllegalArgumentException when kC, kL and kQ are all zero, naming the three
+     *
+     * @hidden internal: the renderer's checks of a light before and after a render
+     */
     @Override
     public void validate() {
         if (kC == 0 && kL == 0 && kQ == 0)

@@ -104,7 +104,11 @@ public class SpotLight extends PointLight {
         return this;
     }
 
-    /** @return the point light's fingerprint and the narrow beam's (see {@link LightSource#settingsStamp()}) */
+    /**
+     * @return the point light's fingerprint and the narrow beam's (see {@link LightSource#settingsStamp()})
+     *
+     * @hidden internal: the renderer's checks of a light before and after a render
+     */
     @Override
     public long settingsStamp() {
         return mix(super.settingsStamp(), narrowBeam);

@@ -19,6 +19,8 @@ import java.util.TreeMap;
  * {@link #check()} first; it compares, once per class loader, where each of the library's classes
  * of the five course packages is loaded from (its code source) with where this class was, and
  * names every one that comes from elsewhere. You never need to call it.
+ *
+ * @hidden internal: the check against a student's copy of a course class, public for the other course packages
  */
 public final class CourseClassGuard {
     /**

@@ -16,6 +16,8 @@ import java.util.Set;
  * them exactly. (Whether a subclass of a library shape may keep the shape's lean queries is the
  * narrower rule of {@code geometries.HookCheck.answersInDoubles}: only while it overrides no
  * course hook.) You never need it.
+ *
+ * @hidden internal: the library's own classes, public for the other course packages
  */
 public final class LibraryClasses {
     private final Set<Class<?>> classes;

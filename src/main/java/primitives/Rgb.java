@@ -12,6 +12,9 @@ package primitives;
  * of rounding (a fused multiply-add, say) is made in one place for all three. Every method applies
  * its kernel to the red, green and blue channels in turn; methods named after an operation
  * ({@code add}, {@code scale}, …) change this value and return it, for chaining.
+ *
+ * @hidden internal: public only for the renderer's shading in package {@code renderer}; a scene test
+ *         works with {@link Color}
  */
 public final class Rgb {
     private double r;

@@ -12,6 +12,8 @@ import java.util.Set;
  * test annotations below, compared by name, so the library does not depend on JUnit. The walk
  * stops at the first such frame (a few frames above the render call); anything reflection
  * refuses skips the frame. {@code ImageAssertions} names a camera's failure files after it.
+ *
+ * @hidden internal: public only for renderer.junit
  */
 public final class CallingTest {
     /** The test annotations of JUnit 5 (plain, repeated, parameterized, template), JUnit 4 and TestNG. */

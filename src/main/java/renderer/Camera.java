@@ -202,13 +202,19 @@ public final class Camera {
      * outside a test.
      *
      * @return the image's name as this camera's reports show it
+     *
+     * @hidden internal: public only for renderer.junit's reports
      */
     public String getImageLabel() {
         return imageWriter.hasName() ? imageWriter.getImageName()
                 : CallingTest.find().orElse(imageWriter.getImageName());
     }
 
-    /** @return the name of the scene this camera's tracer traces ({@link Scene#name}), as reports show it */
+    /**
+     * @return the name of the scene this camera's tracer traces ({@link Scene#name}), as reports show it
+     *
+     * @hidden internal: public only for renderer.junit's reports
+     */
     public String getSceneName() {
         return rayTracer.scene.name;
     }

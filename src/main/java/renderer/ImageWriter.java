@@ -105,6 +105,8 @@ public class ImageWriter {
      * @param nX the number of columns
      * @param nY the number of rows
      * @return the sentence, without advice (the caller knows how its user makes an image smaller)
+     *
+     * @hidden internal: public only for the command line's memory check
      */
     public static String memoryNeeded(int nX, int nY) {
         long mb = 1 << 20;
@@ -125,6 +127,8 @@ public class ImageWriter {
      * @param nX the number of columns
      * @param nY the number of rows
      * @return the bytes of the pixels of an nX × nY image: 4 a pixel
+     *
+     * @hidden internal: public only for the command line's memory check
      */
     public static long bytesNeeded(int nX, int nY) {
         return (long) nX * nY * Integer.BYTES;
@@ -196,6 +200,8 @@ public class ImageWriter {
      * @param rgb    its pixels, row after row, {@code width} to a row; may be longer
      * @throws IndexOutOfBoundsException naming the rectangle when it does not lie in the image or
      *                                   {@code rgb} is too short for it; nothing is written then
+     *
+     * @hidden internal: public only for app.spark's assembly of tiles
      */
     public void writeTile(int x, int y, int width, int height, int[] rgb) {
         if (x < 0 || y < 0 || width <= 0 || height <= 0 || x > nX - width || y > nY - height

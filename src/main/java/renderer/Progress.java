@@ -12,6 +12,8 @@ import java.util.concurrent.atomic.AtomicLong;
  * {@code LABEL:  45.0%  450/1000 px  elapsed 3.1 s  ETA 3.8 s}. The render loop counts pixels;
  * a distributed render counts its tiles ({@code tiles}) in the same format. Shared by the
  * workers of that render only; lock-free except when a line is due.
+ *
+ * @hidden internal: public only for the command line's progress bar
  */
 public final class Progress {
     private final String label;

@@ -108,6 +108,8 @@ public abstract class RayTracerBase {
      *
      * @param ray the record holding the camera ray
      * @return the colour seen along the ray, on the 0..255 scale, unclamped
+     * @hidden internal: the render loop's doubles entry, for a tracer outside package renderer
+     *         that queries the scene itself; a student's tracer overrides traceRay(Ray)
      */
     protected Color traceRay(Hit ray) {
         return traceRay(new Ray(new Point(ray.headX(), ray.headY(), ray.headZ()),

@@ -11,6 +11,8 @@ package renderer;
  * <p>The scene is prepared (its BVH built) once, when this renderer is made, not per rectangle:
  * the scene must not change afterwards. Several threads may render rectangles at once; progress
  * lines and the summary of {@link Camera#render()} are not printed.
+ *
+ * @hidden internal: public only for app.spark's executors
  */
 public final class RegionRenderer {
     private final RenderLoop loop;
@@ -25,6 +27,8 @@ public final class RegionRenderer {
      * @param rgb   the pixels, 0xRRGGBB, row by row: (x1 - x0) × (y1 - y0) of them, pixel (x, y)
      *              at index (y - y0)·(x1 - x0) + (x - x0); the caller's to keep
      * @param stats what the rectangle's render did (its pixels, rays and wall time; no preparation)
+     *
+     * @hidden internal: public only for app.spark
      */
     public record Pixels(int[] rgb, RenderStats stats) {
     }

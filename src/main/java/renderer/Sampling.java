@@ -110,6 +110,8 @@ public record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, 
      *
      * @param columns cells across a pixel, ≥ 1
      * @param rows    cells down a pixel, ≥ 1
+     *
+     * @hidden internal: part of the sampling value
      */
     public record Grid(int columns, int rows) {
         /**
@@ -137,6 +139,8 @@ public record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, 
      *                  and ≥ 0 (the test is "more than": at 0 any difference subdivides, corners
      *                  that agree exactly never do); with a lens, the estimated standard error of
      *                  its mean at which a pixel stops
+     *
+     * @hidden internal: part of the sampling value
      */
     public record Adaptive(int depth, double threshold) {
         /**

@@ -16,6 +16,8 @@ import primitives.Vector;
  * @param frame    the directions: view, image up and image right
  * @param plane    the view plane's size and distance, and the pixels it is cut into
  * @param lens     the thin lens: a pinhole when its aperture is 0
+ *
+ * @hidden internal: the camera's view value, public for the scene reader's checks; a scene test sets it through Camera.Builder
  */
 public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
     /**
@@ -39,6 +41,8 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
      * @param to    the view direction, through the view plane's centre
      * @param up    the image's up direction
      * @param right the image's right direction
+     *
+     * @hidden internal: part of the camera's view value
      */
     public record Frame(Vector to, Vector up, Vector right) {
         /**
@@ -148,6 +152,8 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
      * @param distance its distance from the location, positive and finite
      * @param nX       pixel columns, positive
      * @param nY       pixel rows, positive
+     *
+     * @hidden internal: part of the camera's view value
      */
     public record ViewPlane(double width, double height, double distance, int nX, int nY) {
         /**
@@ -183,6 +189,8 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
      *
      * @param aperture      the lens radius, finite and ≥ 0
      * @param focalDistance the distance of the sharp plane, finite and ≥ 0; positive with an aperture
+     *
+     * @hidden internal: part of the camera's view value
      */
     public record Lens(double aperture, double focalDistance) {
         /** The pinhole camera: every ray starts at the location. */
