@@ -14,8 +14,13 @@ import java.util.Set;
 import primitives.Ray;
 
 /**
- * A composite of intersectables (the course's flat list). The renderer does not walk this list
- * directly when the BVH is on: it indexes the leaves ({@link #collectLeaves}) in a {@link Bvh}.
+ * The course's flat list of intersectables, every course year (2023&ndash;24 to 2025&ndash;26): a
+ * scene test fills the scene's ({@code scene.geometries.add(sphere, triangle)}) or groups shapes in
+ * one ({@code new Geometries(a, b)}). Its queries ask each member and merge the answers
+ * ({@code null} when none is hit).
+ *
+ * <p>A composite of intersectables. The renderer does not walk this list directly when the BVH is
+ * on: it indexes the leaves ({@link #collectLeaves}) in a {@link Bvh}.
  */
 public class Geometries extends Intersectable {
     /**

@@ -13,7 +13,20 @@ import primitives.Util;
 import primitives.Vector;
 
 /**
- * Anything a ray can hit. It has two faces:
+ * Anything a ray can hit: what you extend to write a shape of your own. Override the one
+ * intersection hook your course year names, with {@code maxDistance} (or in the one-argument form
+ * of the courses before it):
+ * <ul>
+ * <li>2023&ndash;24 (5784): {@link #findGeoIntersectionsHelper}, answering {@link GeoPoint}s;</li>
+ * <li>2024&ndash;25 (5785): {@link #calculateIntersectionsHelper}, answering {@link Intersection}s;</li>
+ * <li>2025&ndash;26 (5786): {@link #calcIntersectionsHelper}, answering {@link Intersection}s.</li>
+ * </ul>
+ * Every year's query ({@link #findIntersections}, {@link #findGeoIntersections},
+ * {@link #calculateIntersections}, {@link #calcIntersections}) then asks your hook, and returns
+ * {@code null} when nothing is hit; so does the renderer (correct, but allocating). A subclass of
+ * a library shape that overrides a hook is asked through it too.
+ *
+ * <p>Under the course's face, the engine. Intersection has two faces:
  * <ul>
  * <li>the course's list API ({@link #findIntersections}, {@link #findGeoIntersections}) for scene
  * tests, returning {@code null} when nothing is hit;</li>

@@ -1,8 +1,13 @@
 /**
- * Shapes and the queries on them. Each {@link geometries.Intersectable} answers the course's list
- * queries and the renderer's lean ones (a closest hit into a reused {@link geometries.Hit}, an
- * any-hit walk for shadows); {@link geometries.Geometries} puts its bounded members into a
- * {@link geometries.Bvh}.
+ * The course's shapes: extend {@link geometries.Intersectable} (your course year's intersection
+ * hook) or {@link geometries.Geometry} (emission, material, normal) for a shape of your own; use
+ * {@link geometries.Sphere}, {@link geometries.Plane}, {@link geometries.Polygon},
+ * {@link geometries.Triangle}, {@link geometries.Tube}, {@link geometries.Cylinder},
+ * {@link geometries.TriangleMesh} and the list {@link geometries.Geometries} in scene tests.
+ *
+ * <p>Under them, the engine: each {@code Intersectable} also answers the renderer's lean queries
+ * (a closest hit into a reused {@code Hit}, an any-hit walk for shadows), and the tracer puts
+ * {@code Geometries}' bounded members into a {@code Bvh}.
  *
  * <p>Roles in this package:
  * <ul>

@@ -17,7 +17,13 @@ import primitives.Vector;
 import scene.Scene;
 
 /**
- * A pinhole (or thin-lens) camera: a facade over what it sees ({@link View}), how a render
+ * The camera a scene test builds and renders with, every course year: {@link #getBuilder()}, then
+ * a location, a direction, a view plane, the image (2023&ndash;24: {@link Builder#setImageWriter};
+ * 2024&ndash;25 and 2025&ndash;26: {@link Builder#setResolution}) and a tracer, {@code build()},
+ * and {@code renderImage()} and {@code writeToImage(...)}. The library's improvements
+ * (anti-aliasing, depth of field, threads, progress) are one builder line each.
+ *
+ * <p>A pinhole (or thin-lens) camera: a facade over what it sees ({@link View}), how a render
  * samples ({@code Sampling}) and runs ({@code Execution}), the tracer that colours each camera
  * ray and the image writer that receives the pixels. Made by {@link Builder#build()}, which
  * checks each setting in the value that owns it. Shallowly immutable: its values do not change,

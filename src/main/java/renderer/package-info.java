@@ -1,12 +1,21 @@
 /**
- * From a scene to a picture: {@link renderer.Camera} (built by {@link renderer.Camera.Builder},
+ * The course's renderer: a scene test builds a {@link renderer.Camera} with
+ * {@link renderer.Camera.Builder}, gives it a tracer ({@link renderer.RayTracerBasic}, named
+ * {@link renderer.SimpleRayTracer} from 2024&ndash;25 on, or {@link renderer.RayTracerType}) and
+ * an image ({@link renderer.ImageWriter}, or a resolution), renders and writes.
+ *
+ * <p>From a scene to a picture: {@link renderer.Camera} (built by {@link renderer.Camera.Builder},
  * which validates every setting), the tracer {@link renderer.RayTracerBasic}, the image
  * {@link renderer.ImageWriter} and what a render did, {@link renderer.RenderStats}. One render
  * loop serves every anti-aliasing mode, depth of field and thread count; every random number
  * comes from a stream keyed by (seed, pixel, sample), so images do not depend on threads.
  *
- * <p>Roles in this package, in the order a render meets them (values flow one way: nothing
- * below reads settings back from what is above it):
+ * <p>Roles in this package, in the order a render meets them. Values flow one way: the limits and
+ * defaults are defined in the values that own them ({@code Sampling}, {@code Execution},
+ * {@code WhittedShader}) and the course classes re-export them ({@code Camera.MAX_SAMPLES_PER_PIXEL},
+ * {@code RayTracerBasic.MIN_CALC_COLOR_K}); nothing below reads settings back from what is above
+ * it. The one tie that runs up is the course's own: its tracers take a {@code scene.Scene}, which
+ * {@code SceneStamp} and {@code WhittedShader} read through them.
  * <ul>
  * <li>The course's face, which scene tests call: {@code Camera} and its {@code Builder},
  * {@code ImageWriter}, {@code RayTracerBase} with {@code RayTracerBasic} (the Whitted tracer) and
@@ -19,14 +28,20 @@
  * and lens coordinates), {@code Sampling} (the anti-aliasing mode and its parameters, lens samples,
  * seed: it makes each worker's sampler and knows the camera rays a pixel may take) and
  * {@code Execution} (threads, tile size, progress, output). {@code RayBudget} holds the rays of a
- * pixel to one limit.</li>
- * <li>The loop: {@code RenderLoop(View, Sampling, Execution, tracer, image)} cuts the image into
- * tiles that workers claim; each worker asks the tracer for its {@code TraceContext} (its scratch
- * state, never shared) and the sampling for a {@code PixelSampler} ({@code CenterSampler},
+ * pixel to one limit. Each limit is a static rule there ({@code Execution.requireThreads},
+ * {@code Sampling.Grid}, {@code View.Frame.along}, {@code RayBudget.require}, ...), which the
+ * builder, the scene reader and the command line call alike; the three are public for those
+ * callers and hidden from the course's Javadoc.</li>
+ * <li>The loop: {@code RenderLoop(View, Sampling, Execution, tracer, image)} prepares the tracer
+ * once per render and holds the {@code PreparedTracer} it returns; it cuts the image into tiles
+ * that workers claim; each worker asks the tracer for its {@code TraceContext} (its scratch state,
+ * never shared) and the sampling for a {@code PixelSampler} ({@code CenterSampler},
  * {@code GridSampler}, {@code LatticeSampler}, and for ADAPTIVE with a lens
- * {@code NoiseAdaptiveSampler}), which positions the {@code SampleStream} of each sample, draws
- * film and lens coordinates (stratified ones from {@code SobolPoints}, under seeds keyed by the
- * pixel) and gets the sample's colour back as the return value.
+ * {@code NoiseAdaptiveSampler}) over the pass's {@code Estimator} (the view's camera ray, traced by
+ * the prepared tracer). The sampler positions the {@code SampleStream} of each sample, draws film
+ * and lens coordinates (stratified ones from {@code SobolPoints}, under seeds keyed by the pixel)
+ * and gets the sample's colour back as the estimator's return value: it knows neither the camera
+ * nor the tracer.
  * {@code RegionRenderer} renders rectangles of an image for a distributed render;
  * {@code Progress} prints the progress lines; {@code SceneStamp} notices a scene changed during a
  * render.</li>

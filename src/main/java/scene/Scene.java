@@ -11,7 +11,11 @@ import primitives.Color;
 import primitives.CourseClassGuard;
 
 /**
- * What a render shows: geometries, lights, ambient light and background. Built by the scene test
+ * The scene you fill in a scene test, every course year (2023&ndash;24 to 2025&ndash;26):
+ * {@code new Scene("name")}, then {@code scene.geometries.add(...)}, {@code scene.lights.add(...)}
+ * and the fluent setters of the background and the ambient light.
+ *
+ * <p>What a render shows: geometries, lights, ambient light and background. Built by the scene test
  * (directly through the public fields, as in the course, or with the fluent setters) and then
  * left unchanged while a render runs.
  */
