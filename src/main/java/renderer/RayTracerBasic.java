@@ -139,7 +139,7 @@ public class RayTracerBasic extends RayTracerBase {
         scene.geometries.requireNestingWithinLimit(); // the flat walk recurses once per level
         for (LightSource light : scene.lights) light.validate();
         Intersectable world = useBvh ? Bvh.of(scene.geometries) : scene.geometries;
-        WhittedShader prepared = new WhittedShader(scene, world, scene.lights.toArray(new LightSource[0]), beamSize, shadowSamples);
+        WhittedShader prepared = new WhittedShader(scene.background, scene.ambientLight.getIntensity(), world, scene.lights.toArray(new LightSource[0]), beamSize, shadowSamples);
         shader = prepared;
         return prepared::shadeCameraRay;
     }

@@ -4,6 +4,7 @@ import geometries.Geometry;
 import geometries.Hit;
 import geometries.Intersectable;
 import lighting.LightSource;
+import primitives.Color;
 import primitives.Double3;
 import primitives.Material;
 import primitives.Point;
@@ -12,7 +13,6 @@ import primitives.Util;
 import primitives.Vector;
 import renderer.TraceContext.Bounce;
 import renderer.TraceContext.Level;
-import scene.Scene;
 
 /**
  * The shading of {@link RayTracerBasic}, over the geometry and lights one {@code prepare()} made:
@@ -58,8 +58,12 @@ final class WhittedShader {
     /** The golden-ratio conjugate: spreads beam samples evenly in angle (a Fibonacci lattice). */
     private static final double PHI = 0.6180339887498949;
 
-    /** Read for its background and ambient light at each use, as the tracer's course face does. */
-    private final Scene scene;
+    /**
+     * The scene's background and ambient intensity as prepared: a render fails when the scene
+     * replaces either during it, and a direct trace after a replacement prepares again
+     * ({@link SceneStamp}).
+     */
+    private final Color background, ambient;
     /** The scene's geometry as the render queries it: a BVH or the flat list. */
     private final Intersectable world;
     private final LightSource[] lights;
@@ -68,8 +72,10 @@ final class WhittedShader {
     /** Shadow rays toward a light with a radius. */
     private final int shadowSamples;
 
-    WhittedShader(Scene scene, Intersectable world, LightSource[] lights, int beamSize, int shadowSamples) {
-        this.scene = scene;
+    WhittedShader(Color background, Color ambient, Intersectable world, LightSource[] lights, int beamSize,
+                  int shadowSamples) {
+        this.background = background;
+        this.ambient = ambient;
         this.world = world;
         this.lights = lights;
         this.beamSize = beamSize;
@@ -87,11 +93,11 @@ final class WhittedShader {
         ctx.requireWithinBudget(0); // the camera ray is counted already
         Level top = ctx.top();
         Hit hit = top.hit.reset(Double.POSITIVE_INFINITY);
-        if (!world.closestHit(hit)) return top.colour.set(scene.background);
+        if (!world.closestHit(hit)) return top.colour.set(background);
         Double3 kA = hit.getGeometry().getMaterial().kA; // ambient = I_A·kA(light)·kA(material)
         top.weight.set(1, 1, 1);
         calcColor(top, beamSize, ctx);
-        return top.colour.addProduct(scene.ambientLight.getIntensity(), kA);
+        return top.colour.addProduct(ambient, kA);
     }
 
     /**
@@ -338,7 +344,7 @@ final class WhittedShader {
         ctx.requireWithinBudget(1); // a path that reflects and transmits at every level doubles at each
         ctx.secondaryRays++;
         if (world.closestHit(at.hit)) return calcColor(at, budget, ctx);
-        return at.colour.set(scene.background);
+        return at.colour.set(background);
     }
 
     /**

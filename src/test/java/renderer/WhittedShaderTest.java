@@ -38,7 +38,7 @@ class WhittedShaderTest {
 
     /** Shades the camera ray straight down in {@code scene} with beams of {@code beamSize} rays. */
     private Rgb shade(Scene scene, int beamSize) {
-        WhittedShader shader = new WhittedShader(scene, scene.geometries, scene.lights.toArray(new LightSource[0]),
+        WhittedShader shader = new WhittedShader(scene.background, scene.ambientLight.getIntensity(), scene.geometries, scene.lights.toArray(new LightSource[0]),
                 beamSize, 1);
         ctx.random.reset(7, 0, 0, 0);
         ctx.cameraRay().setRay(0, 0, 10, 0, 0, -1);
