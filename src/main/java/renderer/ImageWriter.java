@@ -11,6 +11,7 @@ import java.nio.file.AtomicMoveNotSupportedException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.util.Locale;
 import java.util.Objects;
 
 import javax.imageio.ImageIO;
@@ -33,6 +34,13 @@ public class ImageWriter {
      * arrays of at most {@code Integer.MAX_VALUE - 8} elements.
      */
     public static final long MAX_PIXELS = Integer.MAX_VALUE - 8;
+    /**
+     * The longest image name {@link #requireFileName} allows, in characters (file names have at
+     * most 255 bytes).
+     *
+     * @hidden internal: public for the scene reader and the command line
+     */
+    public static final int MAX_FILE_NAME_LENGTH = 200;
 
     private final String imageName;
     private final int nX;
@@ -138,6 +146,81 @@ public class ImageWriter {
         Objects.requireNonNull(imageName, "image name");
         if (imageName.isBlank()) throw new IllegalArgumentException("image name must not be blank");
         return imageName;
+    }
+
+    /**
+     * Checks that {@code name} names a file in images/ and nothing else: the rule of an image name
+     * that untrusted input (a scene file) chooses, which must not choose where on disk its image
+     * goes. (The course's own constructor and {@link #writeToImage(String)} take sub-folders.)
+     *
+     * @param name the image name, without ".png"
+     * @return {@code name}
+     * @throws NullPointerException     for a null name
+     * @throws IllegalArgumentException for a blank name, one longer than
+     *                                  {@link #MAX_FILE_NAME_LENGTH}, or one with a path separator
+     *                                  ({@code /} or {@code \}), a drive colon or {@code ..},
+     *                                  naming it; for one with a character that would not show
+     *                                  as what it is ({@link #hiddenCharacter}), naming its code
+     *                                  point and its kind
+     * @hidden internal: public for the scene reader and the command line
+     */
+    public static String requireFileName(String name) {
+        Objects.requireNonNull(name, "image name");
+        if (name.isBlank()) throw new IllegalArgumentException("the image name is blank");
+        if (name.length() > MAX_FILE_NAME_LENGTH)
+            throw new IllegalArgumentException("the image name has " + name.length() + " characters, more than the limit of "
+                    + MAX_FILE_NAME_LENGTH);
+        name.codePoints().filter(cp -> hiddenCharacter(cp) != null).findFirst().ifPresent(cp -> {
+            throw new IllegalArgumentException(String.format(Locale.ROOT, "the image name contains U+%04X, %s (the file"
+                    + " name would display as something else, or not at all)", cp, hiddenCharacter(cp)));
+        });
+        for (int i = 0; i < name.length(); ++i) {
+            char c = name.charAt(i);
+            if (c == '/' || c == '\\' || c == ':')
+                throw new IllegalArgumentException("the image name '" + name + "' is a path, not a name (it contains '" + c + "')");
+        }
+        if (name.contains(".."))
+            throw new IllegalArgumentException("the image name '" + name + "' contains '..' (a name, not a path, is expected)");
+        return name;
+    }
+
+    /**
+     * Why code point {@code cp} may not stand in a name, or null when it may. The rule, in the
+     * order asked: control characters (Unicode Cc: C0, DEL and C1, such as U+009B, which a
+     * terminal obeys); format characters (Cf: the bidirectional overrides and isolates, the
+     * direction marks, zero-width characters); line and paragraph separators (Zl, Zp); spaces
+     * other than U+0020 (Zs: U+00A0, U+3000, …: they look like the plain space and are another
+     * character); private-use, unassigned and surrogate code points (Co, Cn, Cs: no agreed glyph);
+     * the rest of Unicode's Default_Ignorable_Code_Point (U+034F, the Hangul fillers U+115F,
+     * U+1160, U+3164 and U+FFA0, the variation selectors U+FE00–U+FE0F, …: drawn as nothing);
+     * and the blank braille pattern U+2800, a letter-like character drawn as a space.
+     *
+     * @param cp a Unicode code point
+     * @return the kind of character, for a message ("a control character", …), or null
+     * @hidden internal: public for the scene reader's messages, which escape these characters
+     */
+    public static String hiddenCharacter(int cp) {
+        return switch (Character.getType(cp)) {
+            case Character.CONTROL -> "a control character";
+            case Character.FORMAT -> "an invisible or direction-changing character";
+            case Character.LINE_SEPARATOR, Character.PARAGRAPH_SEPARATOR -> "a line or paragraph separator";
+            case Character.SPACE_SEPARATOR -> cp == ' ' ? null : "a space other than U+0020 (it looks like one and is another character)";
+            case Character.PRIVATE_USE, Character.UNASSIGNED, Character.SURROGATE -> "a private-use, unassigned or surrogate code point";
+            default -> defaultIgnorable(cp) ? "an invisible character (Unicode's Default_Ignorable_Code_Point)"
+                    : cp == 0x2800 ? "a blank-looking character (the empty braille pattern)" : null;
+        };
+    }
+
+    /**
+     * Unicode's Default_Ignorable_Code_Point (DerivedCoreProperties, Unicode 15) outside the
+     * format category, which {@link #hiddenCharacter} names first: characters drawn as nothing.
+     */
+    private static boolean defaultIgnorable(int cp) {
+        return cp == 0x034F || cp == 0x115F || cp == 0x1160 || cp == 0x17B4 || cp == 0x17B5
+                || (cp >= 0x180B && cp <= 0x180F) || (cp >= 0x2060 && cp <= 0x206F) || cp == 0x3164
+                || (cp >= 0xFE00 && cp <= 0xFE0F) || cp == 0xFFA0 || (cp >= 0xFFF0 && cp <= 0xFFF8)
+                || (cp >= 0x1BCA0 && cp <= 0x1BCA3) || (cp >= 0x1D173 && cp <= 0x1D17A)
+                || (cp >= 0xE0000 && cp <= 0xE0FFF);
     }
 
     /** @return the number of columns */

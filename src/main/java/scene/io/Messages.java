@@ -7,6 +7,8 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 
+import renderer.ImageWriter;
+
 /**
  * Wording shared by the scene-file reader and the {@code render} command, so that a file that
  * cannot be read is reported in the same words whether it is a scene or a mesh.
@@ -44,41 +46,15 @@ public final class Messages {
     }
 
     /**
-     * Why code point {@code cp} may not stand in a name, or null when it may. The rule, in the
-     * order asked: control characters (Unicode Cc: C0, DEL and C1, such as U+009B, which a
-     * terminal obeys); format characters (Cf: the bidirectional overrides and isolates, the
-     * direction marks, zero-width characters); line and paragraph separators (Zl, Zp); spaces
-     * other than U+0020 (Zs: U+00A0, U+3000, …: they look like the plain space and are another
-     * character); private-use, unassigned and surrogate code points (Co, Cn, Cs: no agreed glyph);
-     * the rest of Unicode's Default_Ignorable_Code_Point (U+034F, the Hangul fillers U+115F,
-     * U+1160, U+3164 and U+FFA0, the variation selectors U+FE00–U+FE0F, …: drawn as nothing);
-     * and the blank braille pattern U+2800, a letter-like character drawn as a space.
+     * Why code point {@code cp} may not stand in a name, or null when it may: the rule of image
+     * names ({@code ImageWriter.requireFileName}), kept in the renderer's image writer, which
+     * names the files.
      *
      * @param cp a Unicode code point
      * @return the kind of character, for a message ("a control character", …), or null
      */
     public static String hidden(int cp) {
-        return switch (Character.getType(cp)) {
-            case Character.CONTROL -> "a control character";
-            case Character.FORMAT -> "an invisible or direction-changing character";
-            case Character.LINE_SEPARATOR, Character.PARAGRAPH_SEPARATOR -> "a line or paragraph separator";
-            case Character.SPACE_SEPARATOR -> cp == ' ' ? null : "a space other than U+0020 (it looks like one and is another character)";
-            case Character.PRIVATE_USE, Character.UNASSIGNED, Character.SURROGATE -> "a private-use, unassigned or surrogate code point";
-            default -> defaultIgnorable(cp) ? "an invisible character (Unicode's Default_Ignorable_Code_Point)"
-                    : cp == 0x2800 ? "a blank-looking character (the empty braille pattern)" : null;
-        };
-    }
-
-    /**
-     * Unicode's Default_Ignorable_Code_Point (DerivedCoreProperties, Unicode 15) outside the
-     * format category, which {@link #hidden} names first: characters drawn as nothing.
-     */
-    private static boolean defaultIgnorable(int cp) {
-        return cp == 0x034F || cp == 0x115F || cp == 0x1160 || cp == 0x17B4 || cp == 0x17B5
-                || (cp >= 0x180B && cp <= 0x180F) || (cp >= 0x2060 && cp <= 0x206F) || cp == 0x3164
-                || (cp >= 0xFE00 && cp <= 0xFE0F) || cp == 0xFFA0 || (cp >= 0xFFF0 && cp <= 0xFFF8)
-                || (cp >= 0x1BCA0 && cp <= 0x1BCA3) || (cp >= 0x1D173 && cp <= 0x1D17A)
-                || (cp >= 0xE0000 && cp <= 0xE0FFF);
+        return ImageWriter.hiddenCharacter(cp);
     }
 
     /**

@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.io.InvalidObjectException;
 import java.io.ObjectInputStream;
 import java.util.Arrays;
-import java.util.Locale;
 import java.util.Objects;
 import java.util.StringJoiner;
 import java.util.function.Consumer;
@@ -60,8 +59,8 @@ public final class RenderSettings implements java.io.Serializable {
      * format's messages and documentation.
      */
     public static final long MAX_RAYS_PER_PIXEL = RayBudget.MAX_RAYS_PER_PIXEL;
-    /** The longest image name, in characters (file names have at most 255 bytes). */
-    public static final int MAX_IMAGE_NAME_LENGTH = 200;
+    /** The longest image name, in characters (file names have at most 255 bytes): {@code ImageWriter}'s rule. */
+    public static final int MAX_IMAGE_NAME_LENGTH = ImageWriter.MAX_FILE_NAME_LENGTH;
     /** The thread count when none is stated: all cores ({@link Camera.Builder#setMultithreading}'s -2). */
     private static final int ALL_CORES = -2;
 
@@ -371,7 +370,8 @@ public final class RenderSettings implements java.io.Serializable {
 
     /**
      * Checks that {@code name} names a file in images/ and nothing else: a scene file must not
-     * choose where on disk its image goes (only the command line's {@code -o} does).
+     * choose where on disk its image goes (only the command line's {@code -o} does). The rule is
+     * the image writer's, which names the files.
      *
      * @param name the image name, without ".png"
      * @return {@code name}
@@ -387,23 +387,7 @@ public final class RenderSettings implements java.io.Serializable {
      *                                  blank braille pattern), naming its code point and its kind
      */
     public static String requireImageName(String name) {
-        Objects.requireNonNull(name, "image name");
-        if (name.isBlank()) throw new IllegalArgumentException("the image name is blank");
-        if (name.length() > MAX_IMAGE_NAME_LENGTH)
-            throw new IllegalArgumentException("the image name has " + name.length() + " characters, more than the limit of "
-                    + MAX_IMAGE_NAME_LENGTH);
-        name.codePoints().filter(cp -> Messages.hidden(cp) != null).findFirst().ifPresent(cp -> {
-            throw new IllegalArgumentException(String.format(Locale.ROOT, "the image name contains U+%04X, %s (the file"
-                    + " name would display as something else, or not at all)", cp, Messages.hidden(cp)));
-        });
-        for (int i = 0; i < name.length(); ++i) {
-            char c = name.charAt(i);
-            if (c == '/' || c == '\\' || c == ':')
-                throw new IllegalArgumentException("the image name '" + name + "' is a path, not a name (it contains '" + c + "')");
-        }
-        if (name.contains(".."))
-            throw new IllegalArgumentException("the image name '" + name + "' contains '..' (a name, not a path, is expected)");
-        return name;
+        return ImageWriter.requireFileName(name);
     }
 
     /** Each side at least 1 and at most {@link #MAX_PIXELS} pixels in all, naming the size. */
