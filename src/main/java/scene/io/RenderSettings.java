@@ -3,10 +3,8 @@ package scene.io;
 import java.io.IOException;
 import java.io.InvalidObjectException;
 import java.io.ObjectInputStream;
-import java.util.Arrays;
 import java.util.Objects;
 import java.util.StringJoiner;
-import java.util.function.Consumer;
 
 import primitives.Color;
 import renderer.AntiAliasing;
@@ -42,7 +40,7 @@ import scene.Scene;
  * @serial exclude
  */
 public final class RenderSettings implements java.io.Serializable {
-    private static final long serialVersionUID = 2L;
+    private static final long serialVersionUID = 3L;
 
     /** The image side in pixels when no size is stated: the scene format's default. */
     public static final int DEFAULT_SIZE = 500;
@@ -64,55 +62,145 @@ public final class RenderSettings implements java.io.Serializable {
     /** The thread count when none is stated: all cores ({@link Camera.Builder#setMultithreading}'s -2). */
     private static final int ALL_CORES = -2;
 
-    // Each field is null when the specification does not state it.
-    // The image: its name (images/<name>.png), size in pixels (stated together) and grid.
-    private String imageName;
-    private Integer width, height;
-    /** A grid line every this many pixels; 0: no grid. */
-    private Integer gridInterval;
-    private Color gridColor;
-    // The camera's sampling (Camera.Builder's setters) and execution.
-    private AntiAliasing antiAliasing;
-    /** RANDOM's grid, columns × rows (stated together). */
-    private Integer gridColumns, gridRows;
-    private Integer adaptiveDepth;
-    private Double adaptiveThreshold;
-    /** The thin lens, stated together: focal distance 0 is the pinhole camera. */
-    private Double focalDistance, aperture;
-    private Integer lensSamples;
-    private Long seed;
-    private Integer threads;
-    // The tracer's extensions (RayTracerBasic's setters).
-    private Boolean bvh;
-    private Integer beamSize, shadowSamples;
+    /** The specification that states nothing. */
+    private static final RenderSettings EMPTY = new RenderSettings(Image.NONE, Grid.NONE, AntiAliasingSpec.NONE,
+            Lens.NONE, Tracer.NONE, null, null);
 
-    private RenderSettings() {
+    // Each part, and each of its components, is null when the specification does not state it.
+    private final Image image;
+    private final Grid grid;
+    private final AntiAliasingSpec antiAliasing;
+    private final Lens lens;
+    private final Tracer tracer;
+    /** The thread count ({@code Camera.Builder.setMultithreading}'s). */
+    private final Integer threads;
+    /** The seed of every random number of the render. */
+    private final Long seed;
+
+    private RenderSettings(Image image, Grid grid, AntiAliasingSpec antiAliasing, Lens lens, Tracer tracer,
+                           Integer threads, Long seed) {
+        this.image = image;
+        this.grid = grid;
+        this.antiAliasing = antiAliasing;
+        this.lens = lens;
+        this.tracer = tracer;
+        this.threads = threads;
+        this.seed = seed;
     }
 
-    private RenderSettings(RenderSettings s) {
-        imageName = s.imageName;
-        width = s.width;
-        height = s.height;
-        gridInterval = s.gridInterval;
-        gridColor = s.gridColor;
-        antiAliasing = s.antiAliasing;
-        gridColumns = s.gridColumns;
-        gridRows = s.gridRows;
-        adaptiveDepth = s.adaptiveDepth;
-        adaptiveThreshold = s.adaptiveThreshold;
-        focalDistance = s.focalDistance;
-        aperture = s.aperture;
-        lensSamples = s.lensSamples;
-        seed = s.seed;
-        threads = s.threads;
-        bvh = s.bvh;
-        beamSize = s.beamSize;
-        shadowSamples = s.shadowSamples;
+    /**
+     * The image: its name (images/&lt;name&gt;.png) and its size in pixels (stated together),
+     * each checked when stated.
+     */
+    private record Image(String name, Integer width, Integer height) implements java.io.Serializable {
+        static final Image NONE = new Image(null, null, null);
+
+        Image {
+            if (name != null) requireImageName(name);
+            if ((width == null) != (height == null)) throw new IllegalArgumentException("width and height are stated together");
+            if (width != null) requireSize(width, height);
+        }
+
+        Image then(Image later) {
+            return new Image(or(later.name, name), later.width != null ? later.width : width,
+                    later.width != null ? later.height : height);
+        }
+    }
+
+    /** The grid drawn over the image: a line every {@code interval} pixels (0: none), in {@code color}. */
+    private record Grid(Integer interval, Color color) implements java.io.Serializable {
+        static final Grid NONE = new Grid(null, null);
+
+        Grid then(Grid later) {
+            return new Grid(or(later.interval, interval), or(later.color, color));
+        }
+    }
+
+    /**
+     * The sampling as {@code Camera.Builder}'s setters take it: the mode, RANDOM's grid (columns ×
+     * rows, stated together) and ADAPTIVE's depth and threshold.
+     */
+    private record AntiAliasingSpec(AntiAliasing mode, Integer columns, Integer rows, Integer depth, Double threshold)
+            implements java.io.Serializable {
+        static final AntiAliasingSpec NONE = new AntiAliasingSpec(null, null, null, null, null);
+
+        AntiAliasingSpec then(AntiAliasingSpec later) {
+            return new AntiAliasingSpec(or(later.mode, mode), later.columns != null ? later.columns : columns,
+                    later.columns != null ? later.rows : rows, or(later.depth, depth), or(later.threshold, threshold));
+        }
+
+        /** Replays the stated values onto {@code camera}, each through its own setter. */
+        void applyTo(Camera.Builder camera) {
+            if (mode != null) camera.setAntiAliasing(mode);
+            if (columns != null) camera.setAntiAliasingGrid(columns, rows);
+            if (depth != null || threshold != null) {
+                // The builder takes the two together: a specification stating one gets the library's other.
+                Sampling.Adaptive library = Sampling.DEFAULT.adaptive();
+                camera.setAdaptive(depth != null ? depth : library.depth(), threshold != null ? threshold : library.threshold());
+            }
+        }
+
+        /** The stated values over {@code s}, each part checked by the library's rule. */
+        Sampling over(Sampling s) {
+            if (mode != null) s = s.withAntiAliasing(mode);
+            if (columns != null) s = s.withGrid(columns, rows);
+            if (depth != null || threshold != null)
+                s = s.withAdaptive(depth != null ? depth : s.adaptive().depth(),
+                        threshold != null ? threshold : s.adaptive().threshold());
+            return s;
+        }
+    }
+
+    /**
+     * The thin lens, its focal distance and aperture stated together (focal distance 0: the
+     * pinhole camera, whatever the aperture), and its samples per pixel.
+     */
+    private record Lens(Double focalDistance, Double aperture, Integer samples) implements java.io.Serializable {
+        static final Lens NONE = new Lens(null, null, null);
+
+        Lens then(Lens later) {
+            return new Lens(later.focalDistance != null ? later.focalDistance : focalDistance,
+                    later.focalDistance != null ? later.aperture : aperture, or(later.samples, samples));
+        }
+
+        /** Replays the stated values onto {@code camera}, each through its own setter. */
+        void applyTo(Camera.Builder camera) {
+            // A stated pinhole is the builder's aperture 0, which is the pinhole whatever the focal
+            // distance: it undoes a lens set on the builder before.
+            if (focalDistance != null) {
+                if (focalDistance == 0) camera.setDepthOfField(1, 0);
+                else camera.setDepthOfField(focalDistance, aperture);
+            }
+            if (samples != null) camera.setDepthOfFieldSamples(samples);
+        }
+
+        /** @return the stated lens by the library's rule: the pinhole when none is stated or its focal distance is 0 */
+        View.Lens lens() {
+            return focalDistance == null || focalDistance == 0 ? View.Lens.PINHOLE : View.Lens.thin(focalDistance, aperture);
+        }
+    }
+
+    /** The tracer's extensions, as {@link RayTracerBasic}'s setters take them. */
+    private record Tracer(Boolean bvh, Integer beamSize, Integer shadowSamples) implements java.io.Serializable {
+        static final Tracer NONE = new Tracer(null, null, null);
+
+        Tracer then(Tracer later) {
+            return new Tracer(or(later.bvh, bvh), or(later.beamSize, beamSize), or(later.shadowSamples, shadowSamples));
+        }
+
+        /** @return a new tracer for {@code scene} with the stated extensions, each through its own setter */
+        RayTracerBasic newTracer(Scene scene) {
+            RayTracerBasic tracer = new RayTracerBasic(scene);
+            if (bvh != null) tracer.setBvh(bvh);
+            if (beamSize != null) tracer.setBeamSize(beamSize);
+            if (shadowSamples != null) tracer.setShadowSamples(shadowSamples);
+            return tracer;
+        }
     }
 
     /** @return a specification that states nothing (a command line without options) */
     public static RenderSettings empty() {
-        return new RenderSettings();
+        return EMPTY;
     }
 
     /**
@@ -126,9 +214,7 @@ public final class RenderSettings implements java.io.Serializable {
      *                                  {@link #requireImageName(String)})
      */
     public static RenderSettings defaults(String imageName) {
-        RenderSettings s = new RenderSettings();
-        s.imageName = requireImageName(imageName);
-        return s;
+        return EMPTY.with(new Image(requireImageName(imageName), null, null));
     }
 
     /**
@@ -140,8 +226,8 @@ public final class RenderSettings implements java.io.Serializable {
      *                                  range, naming it
      */
     public RenderSettings withImage(String name, int width, int height) {
-        requireImageName(name);
-        return withImageSize(width, height).edit(s -> s.imageName = name);
+        Objects.requireNonNull(name, "image name");
+        return with(new Image(name, width, height));
     }
 
     /**
@@ -151,11 +237,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @throws IllegalArgumentException for a size out of range, naming it
      */
     public RenderSettings withImageSize(int width, int height) {
-        requireSize(width, height);
-        return edit(s -> {
-            s.width = width;
-            s.height = height;
-        });
+        return with(new Image(image.name, width, height));
     }
 
     /**
@@ -165,10 +247,7 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings withGrid(int interval, Color color) {
         Objects.requireNonNull(color, "grid colour");
-        return edit(s -> {
-            s.gridInterval = interval;
-            s.gridColor = color;
-        });
+        return with(new Grid(interval, color));
     }
 
     /**
@@ -178,7 +257,8 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings withAntiAliasing(AntiAliasing mode) {
         Objects.requireNonNull(mode, "anti-aliasing mode");
-        return edit(s -> s.antiAliasing = mode);
+        AntiAliasingSpec a = antiAliasing;
+        return with(new AntiAliasingSpec(mode, a.columns, a.rows, a.depth, a.threshold));
     }
 
     /**
@@ -187,10 +267,8 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with RANDOM's grid stated (whatever the mode, as the builder keeps it)
      */
     public RenderSettings withAntiAliasingGrid(int columns, int rows) {
-        return edit(s -> {
-            s.gridColumns = columns;
-            s.gridRows = rows;
-        });
+        AntiAliasingSpec a = antiAliasing;
+        return with(new AntiAliasingSpec(a.mode, columns, rows, a.depth, a.threshold));
     }
 
     /**
@@ -198,7 +276,8 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with ADAPTIVE's depth stated
      */
     public RenderSettings withAdaptiveDepth(int depth) {
-        return edit(s -> s.adaptiveDepth = depth);
+        AntiAliasingSpec a = antiAliasing;
+        return with(new AntiAliasingSpec(a.mode, a.columns, a.rows, depth, a.threshold));
     }
 
     /**
@@ -206,7 +285,8 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with ADAPTIVE's threshold stated
      */
     public RenderSettings withAdaptiveThreshold(double threshold) {
-        return edit(s -> s.adaptiveThreshold = threshold);
+        AntiAliasingSpec a = antiAliasing;
+        return with(new AntiAliasingSpec(a.mode, a.columns, a.rows, a.depth, threshold));
     }
 
     /**
@@ -229,10 +309,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the lens stated
      */
     public RenderSettings withDepthOfField(double focalDistance, double aperture) {
-        return edit(s -> {
-            s.focalDistance = focalDistance;
-            s.aperture = aperture;
-        });
+        return with(new Lens(focalDistance, aperture, lens.samples));
     }
 
     /**
@@ -240,7 +317,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the lens samples stated
      */
     public RenderSettings withDepthOfFieldSamples(int samples) {
-        return edit(s -> s.lensSamples = samples);
+        return with(new Lens(lens.focalDistance, lens.aperture, samples));
     }
 
     /**
@@ -258,7 +335,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the thread count stated
      */
     public RenderSettings withThreads(int threads) {
-        return edit(s -> s.threads = threads);
+        return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
     }
 
     /**
@@ -266,7 +343,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the seed stated
      */
     public RenderSettings withSeed(long seed) {
-        return edit(s -> s.seed = seed);
+        return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
     }
 
     /**
@@ -274,7 +351,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the choice stated
      */
     public RenderSettings withBvh(boolean on) {
-        return edit(s -> s.bvh = on);
+        return with(new Tracer(on, tracer.beamSize, tracer.shadowSamples));
     }
 
     /**
@@ -282,7 +359,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the beam size stated
      */
     public RenderSettings withBeamSize(int rays) {
-        return edit(s -> s.beamSize = rays);
+        return with(new Tracer(tracer.bvh, rays, tracer.shadowSamples));
     }
 
     /**
@@ -290,7 +367,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the shadow samples stated
      */
     public RenderSettings withShadowSamples(int samples) {
-        return edit(s -> s.shadowSamples = samples);
+        return with(new Tracer(tracer.bvh, tracer.beamSize, samples));
     }
 
     /**
@@ -311,32 +388,29 @@ public final class RenderSettings implements java.io.Serializable {
      * @return the two as one
      */
     public RenderSettings then(RenderSettings later) {
-        RenderSettings s = new RenderSettings(this);
-        s.imageName = or(later.imageName, imageName);
-        if (later.width != null) {
-            s.width = later.width;
-            s.height = later.height;
-        }
-        s.gridInterval = or(later.gridInterval, gridInterval);
-        s.gridColor = or(later.gridColor, gridColor);
-        s.antiAliasing = or(later.antiAliasing, antiAliasing);
-        if (later.gridColumns != null) {
-            s.gridColumns = later.gridColumns;
-            s.gridRows = later.gridRows;
-        }
-        s.adaptiveDepth = or(later.adaptiveDepth, adaptiveDepth);
-        s.adaptiveThreshold = or(later.adaptiveThreshold, adaptiveThreshold);
-        if (later.focalDistance != null) {
-            s.focalDistance = later.focalDistance;
-            s.aperture = later.aperture;
-        }
-        s.lensSamples = or(later.lensSamples, lensSamples);
-        s.seed = or(later.seed, seed);
-        s.threads = or(later.threads, threads);
-        s.bvh = or(later.bvh, bvh);
-        s.beamSize = or(later.beamSize, beamSize);
-        s.shadowSamples = or(later.shadowSamples, shadowSamples);
-        return s;
+        return new RenderSettings(image.then(later.image), grid.then(later.grid), antiAliasing.then(later.antiAliasing),
+                lens.then(later.lens), tracer.then(later.tracer), or(later.threads, threads), or(later.seed, seed));
+    }
+
+    /** This specification with one part replaced. */
+    private RenderSettings with(Image image) {
+        return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
+    }
+
+    private RenderSettings with(Grid grid) {
+        return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
+    }
+
+    private RenderSettings with(AntiAliasingSpec antiAliasing) {
+        return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
+    }
+
+    private RenderSettings with(Lens lens) {
+        return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
+    }
+
+    private RenderSettings with(Tracer tracer) {
+        return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
     }
 
     private static <T> T or(T stated, T otherwise) {
@@ -345,27 +419,27 @@ public final class RenderSettings implements java.io.Serializable {
 
     /** @return the image's name (images/&lt;name&gt;.png); null when not stated */
     public String imageName() {
-        return imageName;
+        return image.name;
     }
 
     /** @return the image width in pixels: as stated, else {@value #DEFAULT_SIZE} */
     public int width() {
-        return width != null ? width : DEFAULT_SIZE;
+        return image.width != null ? image.width : DEFAULT_SIZE;
     }
 
     /** @return the image height in pixels: as stated, else {@value #DEFAULT_SIZE} */
     public int height() {
-        return height != null ? height : DEFAULT_SIZE;
+        return image.height != null ? image.height : DEFAULT_SIZE;
     }
 
     /** @return a grid line every this many pixels; 0 (not stated): no grid */
     public int gridInterval() {
-        return gridInterval != null ? gridInterval : 0;
+        return grid.interval != null ? grid.interval : 0;
     }
 
     /** @return the grid lines' colour: as stated, else {@link #DEFAULT_GRID_COLOR} */
     public Color gridColor() {
-        return gridColor != null ? gridColor : DEFAULT_GRID_COLOR;
+        return grid.color != null ? grid.color : DEFAULT_GRID_COLOR;
     }
 
     /**
@@ -419,7 +493,7 @@ public final class RenderSettings implements java.io.Serializable {
      *         name, an unnamed one (the 2024&ndash;25 form, named when written)
      */
     public ImageWriter newImageWriter() {
-        return imageName != null ? new ImageWriter(imageName, width(), height()) : new ImageWriter(width(), height());
+        return image.name != null ? new ImageWriter(image.name, width(), height()) : new ImageWriter(width(), height());
     }
 
     /**
@@ -438,26 +512,9 @@ public final class RenderSettings implements java.io.Serializable {
      * @throws IllegalArgumentException for a stated value the camera or the tracer refuses
      */
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
-        RayTracerBasic tracer = new RayTracerBasic(scene);
-        if (bvh != null) tracer.setBvh(bvh);
-        if (beamSize != null) tracer.setBeamSize(beamSize);
-        if (shadowSamples != null) tracer.setShadowSamples(shadowSamples);
-        camera.setImageWriter(image).setRayTracer(tracer);
-        if (antiAliasing != null) camera.setAntiAliasing(antiAliasing);
-        if (gridColumns != null) camera.setAntiAliasingGrid(gridColumns, gridRows);
-        if (adaptiveDepth != null || adaptiveThreshold != null) {
-            // The builder takes the two together: a specification stating one gets the library's other.
-            Sampling.Adaptive library = Sampling.DEFAULT.adaptive();
-            camera.setAdaptive(adaptiveDepth != null ? adaptiveDepth : library.depth(),
-                    adaptiveThreshold != null ? adaptiveThreshold : library.threshold());
-        }
-        // A stated pinhole (focal distance 0, whatever the aperture) is the builder's aperture 0,
-        // which is the pinhole whatever the focal distance: it undoes a lens set on the builder before.
-        if (focalDistance != null) {
-            if (focalDistance == 0) camera.setDepthOfField(1, 0);
-            else camera.setDepthOfField(focalDistance, aperture);
-        }
-        if (lensSamples != null) camera.setDepthOfFieldSamples(lensSamples);
+        camera.setImageWriter(image).setRayTracer(tracer.newTracer(scene));
+        antiAliasing.applyTo(camera);
+        lens.applyTo(camera);
         if (seed != null) camera.setSeed(seed);
         return camera.setMultithreading(threads != null ? threads : ALL_CORES);
     }
@@ -488,30 +545,13 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings requireRayBudget(Scene scene) {
         if (threads != null) Execution.requireThreads(threads);
-        RayBudget.require(sampling(), !lens().isPinhole(), beamSize != null ? beamSize : RayTracerBasic.DEFAULT_BEAM_SIZE,
-                shadowSamples != null ? shadowSamples : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, scene.lights);
+        Sampling sampling = antiAliasing.over(Sampling.DEFAULT);
+        if (lens.samples != null) sampling = sampling.withLensSamples(lens.samples);
+        if (seed != null) sampling = sampling.withSeed(seed);
+        RayBudget.require(sampling, !lens.lens().isPinhole(),
+                tracer.beamSize != null ? tracer.beamSize : RayTracerBasic.DEFAULT_BEAM_SIZE,
+                tracer.shadowSamples != null ? tracer.shadowSamples : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, scene.lights);
         return this;
-    }
-
-    /** The stated lens, checked by the library's rule: the pinhole when none is stated or its focal distance is 0. */
-    private View.Lens lens() {
-        return focalDistance == null || focalDistance == 0 ? View.Lens.PINHOLE : View.Lens.thin(focalDistance, aperture);
-    }
-
-    /**
-     * The stated sampling over the library's, each part checked by the library's rule. ADAPTIVE's
-     * depth and threshold are one value there: a specification stating one gets the library's other.
-     */
-    private Sampling sampling() {
-        Sampling s = Sampling.DEFAULT;
-        if (antiAliasing != null) s = s.withAntiAliasing(antiAliasing);
-        if (gridColumns != null) s = s.withGrid(gridColumns, gridRows);
-        if (adaptiveDepth != null || adaptiveThreshold != null)
-            s = s.withAdaptive(adaptiveDepth != null ? adaptiveDepth : s.adaptive().depth(),
-                    adaptiveThreshold != null ? adaptiveThreshold : s.adaptive().threshold());
-        if (lensSamples != null) s = s.withLensSamples(lensSamples);
-        if (seed != null) s = s.withSeed(seed);
-        return s;
     }
 
     /**
@@ -523,55 +563,40 @@ public final class RenderSettings implements java.io.Serializable {
         if (gridInterval() > 0) camera.printGrid(gridInterval(), gridColor());
     }
 
-    /** A copy of this specification with the values {@code change} states. */
-    private RenderSettings edit(Consumer<RenderSettings> change) {
-        RenderSettings copy = new RenderSettings(this);
-        change.accept(copy);
-        return copy;
-    }
-
-    /** The checks of the {@code with…} methods, again for a copy that arrives serialized. */
+    /** The parts are checked as they are made; a copy that arrives serialized must have all of them. */
     private void readObject(ObjectInputStream in) throws IOException, ClassNotFoundException {
         in.defaultReadObject();
-        try {
-            if (imageName != null) requireImageName(imageName);
-            if ((width == null) != (height == null)) throw new IllegalArgumentException("width and height are stated together");
-            if (width != null) requireSize(width, height);
-        } catch (IllegalArgumentException | NullPointerException e) {
-            InvalidObjectException invalid = new InvalidObjectException("render settings: " + e.getMessage());
-            invalid.initCause(e);
-            throw invalid;
-        }
-    }
-
-    private Object[] values() {
-        return new Object[] { imageName, width, height, gridInterval, gridColor, antiAliasing, gridColumns, gridRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance, aperture, lensSamples, seed, threads, bvh, beamSize,
-                shadowSamples };
+        if (image == null || grid == null || antiAliasing == null || lens == null || tracer == null)
+            throw new InvalidObjectException("render settings: a part is missing");
     }
 
     /** Equal when both state the same values (a value stated as its default is still stated). */
     @Override
     public boolean equals(Object o) {
-        return o instanceof RenderSettings other && Arrays.equals(values(), other.values());
+        return o instanceof RenderSettings other && image.equals(other.image) && grid.equals(other.grid)
+                && antiAliasing.equals(other.antiAliasing) && lens.equals(other.lens) && tracer.equals(other.tracer)
+                && Objects.equals(threads, other.threads) && Objects.equals(seed, other.seed);
     }
 
     @Override
     public int hashCode() {
-        return Arrays.hashCode(values());
+        return Objects.hash(image, grid, antiAliasing, lens, tracer, threads, seed);
     }
 
     /** @return the stated values, by name: {@code RenderSettings[image=x 40x20, antiAliasing=RANDOM]} */
     @Override
     public String toString() {
         StringJoiner stated = new StringJoiner(", ", "RenderSettings[", "]");
-        if (imageName != null || width != null)
-            stated.add("image=" + (imageName != null ? imageName : "") + (width != null ? " " + width + "x" + height : ""));
+        if (image.name != null || image.width != null)
+            stated.add("image=" + (image.name != null ? image.name : "")
+                    + (image.width != null ? " " + image.width + "x" + image.height : ""));
         String[] names = { "gridInterval", "gridColor", "antiAliasing", "grid", "adaptiveDepth", "adaptiveThreshold",
                 "depthOfField", "lensSamples", "seed", "threads", "bvh", "beamSize", "shadowSamples" };
-        Object[] values = { gridInterval, gridColor, antiAliasing, gridColumns == null ? null : gridColumns + "x" + gridRows,
-                adaptiveDepth, adaptiveThreshold, focalDistance == null ? null : "focal " + focalDistance + " aperture " + aperture,
-                lensSamples, seed, threads, bvh, beamSize, shadowSamples };
+        AntiAliasingSpec a = antiAliasing;
+        Object[] values = { grid.interval, grid.color, a.mode, a.columns == null ? null : a.columns + "x" + a.rows,
+                a.depth, a.threshold, lens.focalDistance == null ? null
+                        : "focal " + lens.focalDistance + " aperture " + lens.aperture,
+                lens.samples, seed, threads, tracer.bvh, tracer.beamSize, tracer.shadowSamples };
         for (int i = 0; i < names.length; ++i)
             if (values[i] != null) stated.add(names[i] + "=" + values[i]);
         return stated.toString();
