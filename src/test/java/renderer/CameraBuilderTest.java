@@ -163,9 +163,10 @@ class CameraBuilderTest {
             Camera plain = builder.build();
             builder.setAntiAliasing(AntiAliasing.RANDOM, 3, 2).setDepthOfField(5, 0.5).setSeed(7);
             Camera fancy = builder.build();
-            assertThat(plain.describe()).startsWith("NONE").doesNotContain("DOF").endsWith("seed 0");
-            assertThat(fancy.describe()).startsWith("RANDOM 3x2").contains("DOF focal 5.0 aperture 0.5")
-                    .endsWith("seed 7");
+            assertThat(plain.sampling()).isEqualTo(Sampling.DEFAULT);
+            assertThat(plain.view().lens()).isEqualTo(View.Lens.PINHOLE);
+            assertThat(fancy.sampling()).isEqualTo(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.RANDOM).withGrid(3, 2).withSeed(7));
+            assertThat(fancy.view().lens()).isEqualTo(new View.Lens(0.5, 5));
         }
     }
 
@@ -204,8 +205,8 @@ class CameraBuilderTest {
         @ValueSource(ints = {1, 6})
         @DisplayName("adaptive depths 1 and 6 are accepted")
         void adaptiveDepthBounds(int depth) {
-            assertThat(complete().setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(depth, 0).build().describe())
-                    .contains("ADAPTIVE depth " + depth);
+            assertThat(complete().setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(depth, 0).build().sampling().adaptive())
+                    .isEqualTo(new Sampling.Adaptive(depth, 0));
         }
 
         @ParameterizedTest(name = "threshold {0}")
