@@ -164,9 +164,9 @@ class CameraBuilderTest {
             builder.setAntiAliasing(AntiAliasing.RANDOM, 3, 2).setDepthOfField(5, 0.5).setSeed(7);
             Camera fancy = builder.build();
             assertThat(plain.sampling()).isEqualTo(Sampling.DEFAULT);
-            assertThat(plain.view().lens()).isEqualTo(View.Lens.PINHOLE);
+            assertThat(plain.view().lens()).isEqualTo(renderer.View.Lens.PINHOLE);
             assertThat(fancy.sampling()).isEqualTo(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.RANDOM).withGrid(3, 2).withSeed(7));
-            assertThat(fancy.view().lens()).isEqualTo(new View.Lens(0.5, 5));
+            assertThat(fancy.view().lens()).isEqualTo(new renderer.View.Lens(0.5, 5));
         }
     }
 
