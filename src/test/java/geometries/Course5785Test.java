@@ -406,26 +406,10 @@ class Course5785Test {
 
     @Nested
     @DisplayName("a user's own geometry (5785 hook)")
-    class UserGeometryTest {
-        private final Ray through = new Ray(new Point(0, 0, 50), new Vector(0, 0, -1));
-
-        @Test
-        @DisplayName("every year's query finds it")
-        void everyQueryFindsIt() {
-            Ball ball = new Ball();
-            assertThat(ball.calculateIntersections(through)).containsExactlyInAnyOrder(
-                    new Intersection(ball, new Point(0, 0, 10)), new Intersection(ball, new Point(0, 0, -10)));
-            assertThat(ball.findGeoIntersections(through, 45)).containsExactly(
-                    new Intersectable.GeoPoint(ball, new Point(0, 0, 10)));
-            assertThat(ball.calcIntersections(through)).hasSize(2);
-            assertThat(new Geometries(ball).calculateIntersections(through, 30)).isNull();
-            assertThat(ball.findIntersections(new Ray(new Point(0, 0, 50), new Vector(0, 0, 1)))).isNull();
-        }
-
-        @Test
-        @DisplayName("the tracer renders it like the library's sphere, beside the BVH, with its shadow")
-        void rendered() {
-            UserGeometryScenes.assertRendersLikeTheLibrarySphere(new Ball());
+    class UserGeometryTest implements UserShapeContract {
+        @Override
+        public Geometry newShape() {
+            return new Ball();
         }
 
         @Test

@@ -279,24 +279,10 @@ class Course5786Test {
 
     @Nested
     @DisplayName("a user's own geometry (5786 hook)")
-    class UserGeometryTest {
-        private final Ray through = new Ray(new Point(0, 0, 50), new Vector(0, 0, -1));
-
-        @Test
-        @DisplayName("every year's query finds it")
-        void everyQueryFindsIt() {
-            Ball ball = new Ball();
-            assertThat(ball.calcIntersections(through)).containsExactlyInAnyOrder(
-                    new Intersection(ball, new Point(0, 0, 10)), new Intersection(ball, new Point(0, 0, -10)));
-            assertThat(ball.calculateIntersections(through, 45)).containsExactly(new Intersection(ball, new Point(0, 0, 10)));
-            assertThat(ball.findGeoIntersections(through)).hasSize(2);
-            assertThat(new Geometries(ball, new Sphere(new Point(0, 0, -100), 1)).calcIntersections(through)).hasSize(4);
-        }
-
-        @Test
-        @DisplayName("the tracer renders it like the library's sphere, beside the BVH, with its shadow")
-        void rendered() {
-            UserGeometryScenes.assertRendersLikeTheLibrarySphere(new Ball());
+    class UserGeometryTest implements UserShapeContract {
+        @Override
+        public Geometry newShape() {
+            return new Ball();
         }
     }
 }
