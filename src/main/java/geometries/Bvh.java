@@ -142,7 +142,7 @@ public final class Bvh extends Intersectable {
         // A root that is a leaf has no children to test together.
         boolean wideNodes = walk != null && nodeCount > 1;
         this.walk = wideNodes ? walk : null;
-        wide = wideNodes ? WideNodes.collapse(node, nodeCount) : null;
+        wide = wideNodes ? WideNodes.collapse(node, nodeCount, walk.width()) : null;
     }
 
     /**
@@ -257,7 +257,7 @@ public final class Bvh extends Intersectable {
         // A walk already in progress on this record (this one's caller, through a user's shape
         // that walks a tree of its own with the record) owns the record's stack: this one then
         // takes arrays of its own. Rare (only user shapes do it), so the common walk allocates nothing.
-        int size = wide == null ? depth : (WideNodes.WIDTH - 1) * wide.depth + 1;
+        int size = wide == null ? depth : wide.stackSize();
         boolean nested = hit.walking;
         int[] stack;
         double[] stackT;
@@ -386,7 +386,7 @@ public final class Bvh extends Intersectable {
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
         if (wide != null) {
             if (entry(0, ox, oy, oz, ix, iy, iz, limit) == Double.POSITIVE_INFINITY) return true;
-            int size = (WideNodes.WIDTH - 1) * wide.depth + 1;
+            int size = wide.stackSize();
             // As the closest-hit walk's stack: a walk in progress on this record keeps its own.
             if (query.walking) return walk.visitHits(this, wide.node, query, limit, maxDistance, visitor, new int[size]);
             if (query.stack.length < size) {

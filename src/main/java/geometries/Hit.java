@@ -60,8 +60,8 @@ public final class Hit {
      */
     int order = -1;
     /** The vector walk's scratch: the entry distances of a wide node's children, and their order. */
-    final double[] lanes = new double[WideNodes.WIDTH];
-    final int[] laneOrder = new int[WideNodes.WIDTH];
+    final double[] lanes = new double[WideNodes.MAX_WIDTH];
+    final int[] laneOrder = new int[WideNodes.MAX_WIDTH];
 
     /**
      * Clears the record and sets the query's upper bound on the distance; the ray stays.

@@ -6,7 +6,6 @@ import static geometries.WideNodes.MAX_Z;
 import static geometries.WideNodes.MIN_X;
 import static geometries.WideNodes.MIN_Y;
 import static geometries.WideNodes.MIN_Z;
-import static geometries.WideNodes.WIDTH;
 
 import jdk.incubator.vector.DoubleVector;
 import jdk.incubator.vector.FloatVector;
@@ -15,8 +14,10 @@ import jdk.incubator.vector.VectorOperators;
 import jdk.incubator.vector.VectorSpecies;
 
 /**
- * The walks of a {@link Bvh}'s {@link WideNodes} with the Vector API: the four children's boxes
- * of a node tested in one 256-bit step. The only class that names {@code jdk.incubator.vector};
+ * The walks of a {@link Bvh}'s {@link WideNodes} with the Vector API: all children's boxes of a
+ * node tested in one vector step, four children in 256-bit vectors, eight in 512-bit ones (where
+ * the CPU has them and the JDK compiles their masks: measured on JDK 25, not on 17, whose 512-bit
+ * masks are built as objects). The only class that names {@code jdk.incubator.vector};
  * {@link Vectorization} loads it, by name, only when that module is readable, so that a JVM
  * without it never links this class.
  *
@@ -28,9 +29,19 @@ import jdk.incubator.vector.VectorSpecies;
  * on the order of the walk ({@link Bvh}'s tie rule), so both walks return the same hit.
  */
 final class VectorWalk implements WideWalk {
-    private static final VectorSpecies<Float> FLOATS = FloatVector.SPECIES_128;
-    private static final VectorSpecies<Double> DOUBLES = DoubleVector.SPECIES_256;
+    /** The children's bounds as doubles: one vector per bound, a lane per child. Constant to the compiler. */
+    private static final VectorSpecies<Double> DOUBLES = Runtime.version().feature() >= 25
+            && DoubleVector.SPECIES_PREFERRED.vectorBitSize() >= 512 ? DoubleVector.SPECIES_512 : DoubleVector.SPECIES_256;
+    /** The same bounds as stored, floats: half the vector. */
+    private static final VectorSpecies<Float> FLOATS = DOUBLES == DoubleVector.SPECIES_512 ? FloatVector.SPECIES_256
+            : FloatVector.SPECIES_128;
+    /** Children per wide node. */
+    private static final int WIDTH = DOUBLES.length();
+    private static final int SHIFT = Integer.numberOfTrailingZeros(WIDTH);
     private static final DoubleVector ZERO = DoubleVector.zero(DOUBLES);
+    private static final DoubleVector INFINITY = DoubleVector.broadcast(DOUBLES, Double.POSITIVE_INFINITY);
+    /** Whether this JDK compiles {@code VectorMask.toLong} to one instruction (from JDK 18 on). */
+    private static final boolean MASK_TO_BITS = Runtime.version().feature() >= 18;
 
     /**
      * The walk for this machine: public for {@link Vectorization}'s reflective construction only.
@@ -55,6 +66,11 @@ final class VectorWalk implements WideWalk {
     }
 
     @Override
+    public int width() {
+        return WIDTH;
+    }
+
+    @Override
     public String description() {
         return WIDTH + "-wide vector walk (" + DOUBLES.vectorBitSize() + "-bit, jdk.incubator.vector)";
     }
@@ -70,40 +86,54 @@ final class VectorWalk implements WideWalk {
      *
      * @return the children hit, one bit per lane
      */
-    private static long test(float[] nd, int w, DoubleVector ox, DoubleVector oy, DoubleVector oz, DoubleVector ix,
-                             DoubleVector iy, DoubleVector iz, double limit, double[] entries) {
-        int at = WideNodes.at(w);
+    private static long test(float[] nd, int w, double rx, double ry, double rz, double rix, double riy, double riz,
+                             double limit, double[] entries) {
+        // The ray comes in as doubles and is broadcast here, per node (one instruction each):
+        // vectors passed between methods that the compiler does not inline are boxed, 0.5 kB a ray.
+        DoubleVector ox = DoubleVector.broadcast(DOUBLES, rx), oy = DoubleVector.broadcast(DOUBLES, ry),
+                oz = DoubleVector.broadcast(DOUBLES, rz);
+        DoubleVector ix = DoubleVector.broadcast(DOUBLES, rix), iy = DoubleVector.broadcast(DOUBLES, riy),
+                iz = DoubleVector.broadcast(DOUBLES, riz);
+        int at = WideNodes.at(w, WIDTH);
         DoubleVector t0 = ZERO, t1 = DoubleVector.broadcast(DOUBLES, limit);
-        DoubleVector a = bound(nd, at + MIN_X).sub(ox).mul(ix), b = bound(nd, at + MAX_X).sub(ox).mul(ix);
+        DoubleVector a = bound(nd, WideNodes.bound(at, MIN_X, WIDTH)).sub(ox).mul(ix), b = bound(nd, WideNodes.bound(at, MAX_X, WIDTH)).sub(ox).mul(ix);
         VectorMask<Double> swap = a.compare(VectorOperators.GT, b);
         DoubleVector near = a.blend(b, swap), far = b.blend(a, swap);
         t0 = t0.blend(near, near.compare(VectorOperators.GT, t0));
         t1 = t1.blend(far, far.compare(VectorOperators.LT, t1));
-        a = bound(nd, at + MIN_Y).sub(oy).mul(iy);
-        b = bound(nd, at + MAX_Y).sub(oy).mul(iy);
+        a = bound(nd, WideNodes.bound(at, MIN_Y, WIDTH)).sub(oy).mul(iy);
+        b = bound(nd, WideNodes.bound(at, MAX_Y, WIDTH)).sub(oy).mul(iy);
         swap = a.compare(VectorOperators.GT, b);
         near = a.blend(b, swap);
         far = b.blend(a, swap);
         t0 = t0.blend(near, near.compare(VectorOperators.GT, t0));
         t1 = t1.blend(far, far.compare(VectorOperators.LT, t1));
-        a = bound(nd, at + MIN_Z).sub(oz).mul(iz);
-        b = bound(nd, at + MAX_Z).sub(oz).mul(iz);
+        a = bound(nd, WideNodes.bound(at, MIN_Z, WIDTH)).sub(oz).mul(iz);
+        b = bound(nd, WideNodes.bound(at, MAX_Z, WIDTH)).sub(oz).mul(iz);
         swap = a.compare(VectorOperators.GT, b);
         near = a.blend(b, swap);
         far = b.blend(a, swap);
         t0 = t0.blend(near, near.compare(VectorOperators.GT, t0));
         t1 = t1.blend(far, far.compare(VectorOperators.LT, t1));
-        t0.intoArray(entries, 0);
-        return t0.compare(VectorOperators.LE, t1).toLong();
+        VectorMask<Double> hit = t0.compare(VectorOperators.LE, t1);
+        if (MASK_TO_BITS) {
+            long bits = hit.toLong();
+            // The distances matter only to order two or more children.
+            if ((bits & (bits - 1)) != 0) t0.intoArray(entries, 0);
+            return bits;
+        }
+        // JDK 17 compiles no mask-to-bits instruction (the mask would be built as an object, 0.1 kB
+        // a ray): the missed children's entries are made +∞ instead and the bits read back.
+        t0.blend(INFINITY, hit.not()).intoArray(entries, 0);
+        long bits = 0;
+        for (int j = 0; j < WIDTH; ++j) bits |= (entries[j] < Double.POSITIVE_INFINITY ? 1L : 0L) << j;
+        return bits;
     }
 
     @Override
     public boolean closestHit(Bvh tree, float[] nd, Hit hit, int[] stack, double[] stackT) {
-        DoubleVector ox = DoubleVector.broadcast(DOUBLES, hit.ox), oy = DoubleVector.broadcast(DOUBLES, hit.oy),
-                oz = DoubleVector.broadcast(DOUBLES, hit.oz);
-        DoubleVector ix = DoubleVector.broadcast(DOUBLES, BoundingBox.inverse(hit.dx)),
-                iy = DoubleVector.broadcast(DOUBLES, BoundingBox.inverse(hit.dy)),
-                iz = DoubleVector.broadcast(DOUBLES, BoundingBox.inverse(hit.dz));
+        double ox = hit.ox, oy = hit.oy, oz = hit.oz;
+        double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
         double[] entries = hit.lanes;
         int[] lanes = hit.laneOrder;
         boolean found = false;
@@ -111,12 +141,15 @@ final class VectorWalk implements WideWalk {
         while (true) {
             long bits = test(nd, w, ox, oy, oz, ix, iy, iz, Bvh.limit(hit.t), entries);
             int item = -1;
-            if (bits != 0) {
+            if ((bits & (bits - 1)) == 0) {
+                // None or one child hit: nothing to order.
+                if (bits != 0) item = w * WIDTH + Long.numberOfTrailingZeros(bits);
+            } else {
                 // The children hit, nearest first (equal entries in lane order): an insertion
                 // sort of at most four. The nearest is visited now, the others pushed far first.
                 int hits = 0;
-                for (int j = 0; j < WIDTH; ++j) {
-                    if ((bits & (1L << j)) == 0) continue;
+                for (long rest = bits; rest != 0; rest &= rest - 1) {
+                    int j = Long.numberOfTrailingZeros(rest);
                     double e = entries[j];
                     int i = hits++;
                     while (i > 0 && entries[lanes[i - 1]] > e) {
@@ -139,7 +172,7 @@ final class VectorWalk implements WideWalk {
                     } while (!(stackT[top] <= Bvh.limit(hit.t)));
                     item = stack[top];
                 }
-                int count = WideNodes.count(nd, item), link = WideNodes.link(nd, item);
+                int count = WideNodes.count(nd, item, SHIFT), link = WideNodes.link(nd, item, SHIFT);
                 if (count == 0) {
                     w = link;
                     break;
@@ -153,23 +186,20 @@ final class VectorWalk implements WideWalk {
     @Override
     public boolean visitHits(Bvh tree, float[] nd, Hit query, double limit, double maxDistance, HitVisitor visitor,
                              int[] stack) {
-        DoubleVector ox = DoubleVector.broadcast(DOUBLES, query.ox), oy = DoubleVector.broadcast(DOUBLES, query.oy),
-                oz = DoubleVector.broadcast(DOUBLES, query.oz);
-        DoubleVector ix = DoubleVector.broadcast(DOUBLES, BoundingBox.inverse(query.dx)),
-                iy = DoubleVector.broadcast(DOUBLES, BoundingBox.inverse(query.dy)),
-                iz = DoubleVector.broadcast(DOUBLES, BoundingBox.inverse(query.dz));
+        double ox = query.ox, oy = query.oy, oz = query.oz;
+        double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
         double[] entries = query.lanes;
         double bound = Bvh.limit(limit);
         int top = 0, w = 0;
         while (true) {
             long bits = test(nd, w, ox, oy, oz, ix, iy, iz, bound, entries);
             // In lane order, as the scalar walk meets them: pushed last first.
-            for (int j = WIDTH - 1; j >= 0; --j)
-                if ((bits & (1L << j)) != 0) stack[top++] = w * WIDTH + j;
+            for (long rest = Long.reverse(bits); rest != 0; rest &= rest - 1)
+                stack[top++] = w * WIDTH + 63 - Long.numberOfTrailingZeros(rest);
             while (true) {
                 if (top == 0) return true;
                 int item = stack[--top];
-                int count = WideNodes.count(nd, item), link = WideNodes.link(nd, item);
+                int count = WideNodes.count(nd, item, SHIFT), link = WideNodes.link(nd, item, SHIFT);
                 if (count == 0) {
                     w = link;
                     break;

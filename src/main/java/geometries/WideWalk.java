@@ -7,6 +7,9 @@ package geometries;
  * needs {@code jdk.incubator.vector}.
  */
 interface WideWalk {
+    /** @return children per wide node, as this walk reads them */
+    int width();
+
     /** @return what runs, for the render summary: the width, the vector size and the module */
     String description();
 
@@ -14,7 +17,7 @@ interface WideWalk {
      * The closest hit below {@code hit}'s bound among the primitives under the wide root (whose
      * box the caller has tested), by the tree's tie rule.
      *
-     * @param stack  room for (WIDTH − 1) · depth + 1 children, owned by this walk
+     * @param stack  room for {@link WideNodes#stackSize()} children, owned by this walk
      * @param stackT their entry distances
      * @return whether a primitive was hit (the record then holds it)
      */
@@ -25,7 +28,7 @@ interface WideWalk {
      * walk's order (the tree's leaf order).
      *
      * @param limit the distance up to which boxes are entered (a little past maxDistance)
-     * @param stack room for (WIDTH − 1) · depth + 1 children, owned by this walk
+     * @param stack room for {@link WideNodes#stackSize()} children, owned by this walk
      * @return false when the visitor stopped the walk
      */
     boolean visitHits(Bvh tree, float[] node, Hit query, double limit, double maxDistance, HitVisitor visitor, int[] stack);
