@@ -52,8 +52,7 @@ final class VectorWalk implements WideWalk {
     public VectorWalk() {
         int bits = DoubleVector.SPECIES_PREFERRED.vectorBitSize();
         if (bits < DOUBLES.vectorBitSize())
-            throw new UnsupportedOperationException("scalar walk: this CPU's vectors hold " + bits
-                    + " bits, the vector walk needs " + DOUBLES.vectorBitSize() + " (AVX2)");
+            throw new UnsupportedOperationException(bits + "-bit vectors");
     }
 
     /** The walk on any CPU, emulated where the vectors are narrower (the same answers): for the tests. */
@@ -72,7 +71,7 @@ final class VectorWalk implements WideWalk {
 
     @Override
     public String description() {
-        return WIDTH + "-wide vector walk (" + DOUBLES.vectorBitSize() + "-bit, jdk.incubator.vector)";
+        return WIDTH + "-wide vector walk";
     }
 
     /** The bound {@code at} of the four children, widened to doubles. */

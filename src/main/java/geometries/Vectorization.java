@@ -29,19 +29,19 @@ final class Vectorization {
         if ("false".equalsIgnoreCase(System.getProperty(PROPERTY))) {
             why = "-D" + PROPERTY + "=false";
         } else if (ModuleLayer.boot().findModule(MODULE).isEmpty()) {
-            why = "add --add-modules " + MODULE + " to the JVM's options for the vector walk";
+            why = "no " + MODULE;
         } else {
             try {
                 walk = (WideWalk) Class.forName("geometries.VectorWalk").getConstructor().newInstance();
                 why = null;
             } catch (InvocationTargetException e) {
-                why = e.getCause().getMessage(); // the walk's own reason (a CPU without 256-bit vectors)
+                why = e.getCause().getMessage(); // the walk's own reason: a CPU without 256-bit vectors
             } catch (ReflectiveOperationException | LinkageError e) {
                 why = "the vector walk did not load: " + e;
             }
         }
         WALK = walk;
-        DESCRIPTION = walk != null ? walk.description() : why.startsWith("scalar walk") ? why : "scalar walk (" + why + ")";
+        DESCRIPTION = walk != null ? walk.description() : "scalar walk (" + why + ")";
     }
 
     private Vectorization() {
