@@ -207,7 +207,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.build:
         subprocess.run(["mvn", "-q", "package", "-DskipTests"], cwd=ROOT, check=True)
     scene_xml, scene_sc = args.scene_xml.resolve(), args.scene_sc.resolve()
-    templates = ([("./raytracer", str(ROOT / "raytracer"))] if args.launcher else []) \
+    templates = ([("./raytracer", shlex.quote(str(ROOT / "raytracer")))] if args.launcher else []) \
         + ([("java -jar target/raytracer.jar", f"{shlex.quote(java())} -jar target/raytracer.jar")] if args.jar else []) \
         + [(t, t) for t in args.command]
     if not templates:
