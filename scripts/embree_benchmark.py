@@ -13,6 +13,11 @@ Run from the project root after `mvn -q -Pbench compile` (the script does it unl
     .venv/bin/python scripts/embree_benchmark.py                 # every mesh, 5 passes
     .venv/bin/python scripts/embree_benchmark.py --meshes teapot,sphere-1e4 --passes 3
 
+Each library row runs once per walk (--walks): the scalar walk of binary nodes
+(-Draytracer.simd=false) and the vector walk of wide nodes (--add-modules jdk.incubator.vector);
+the vector walk's distances must equal the scalar walk's for every ray (column "= scalar"), as
+must its hits and misses.
+
 One thread: Embree's process is pinned to one core (taskset -c 0), so its builder (TBB) gets one
 thread; the library builds and traces on one thread by itself (Bvh.build(scene, 1), one worker),
 its JVM left free to compile on the other core. Two threads: both cores, the library's trace on
@@ -129,17 +134,25 @@ def embree(vertices, faces, origins, dirs, passes: int) -> dict:
     return {"build_s": statistics.median(builds), "median_trace_s": statistics.median(times), "t": t}
 
 
-def library(mesh_file: Path, rays_file: Path, threads: int, passes: int, classpath: str) -> dict:
-    out = mesh_file.with_suffix(f".lib{threads}.t")
+WALK_OPTIONS = {"scalar": ["-Draytracer.simd=false"], "vector": ["--add-modules", "jdk.incubator.vector"]}
+
+
+def library(mesh_file: Path, rays_file: Path, threads: int, passes: int, classpath: str, walk: str, java: str) -> dict:
+    out = mesh_file.with_suffix(f".lib{threads}.{walk}.t")
     # Not pinned: the library's build and trace use exactly `threads` threads by themselves, and
     # pinning the JVM to one core would put its JIT compiler and GC threads on the tracing core
     # (passes then varied 3x within one process).
-    command = ["java", "-Xmx8g", "-cp", classpath, "bench.MeshRays",
+    command = [java, "-Xmx8g", *WALK_OPTIONS[walk], "-cp", classpath, "bench.MeshRays",
                str(mesh_file), str(rays_file), str(threads), str(passes), str(out)]
     line = subprocess.run(command, check=True, capture_output=True, text=True).stdout.strip().splitlines()[-1]
     result = json.loads(line)
     result["t"] = np.fromfile(out, dtype="<f8")
     return result
+
+
+def same_distances(a: np.ndarray, b: np.ndarray) -> bool:
+    """Whether two walks give every ray the same distance to the bit (NaN, a miss, equal to NaN)."""
+    return a.shape == b.shape and bool(np.all((a == b) | (np.isnan(a) & np.isnan(b))))
 
 
 def run_embree_pinned(name: str, cpus: str, passes: int) -> dict:
@@ -180,6 +193,8 @@ def main() -> int:
                         + " (default " + DEFAULT_MESHES + ")")
     parser.add_argument("--passes", type=int, default=5, help="timed passes over all rays (median reported)")
     parser.add_argument("--no-build", action="store_true", help="skip `mvn -q -Pbench compile`")
+    parser.add_argument("--java", default="java", help="the java command the library runs on (default: java on the PATH)")
+    parser.add_argument("--walks", default="scalar,vector", help="the library's walks to run: scalar, vector (default both)")
     parser.add_argument("--out", type=Path, default=OUT / "table.md", help="where the Markdown table goes")
     parser.add_argument("--embree-child", help=argparse.SUPPRESS)
     args = parser.parse_args()
@@ -203,21 +218,31 @@ def main() -> int:
                                check=True, capture_output=True, text=True).stdout.strip()
     classpath = "target/bench/classes" + os.pathsep + classpath
 
-    rows = ["| mesh | triangles | threads | Embree Mrays/s | library Mrays/s | library ÷ Embree time | same hit/miss | max rel. Δt | Embree build s | library build s |",
-            "|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|"]
+    walks = args.walks.split(",")
+    if not walks or any(w not in WALK_OPTIONS for w in walks):
+        print(f"error: --walks takes scalar and/or vector, got {args.walks!r}", file=sys.stderr)
+        return 2
+    rows = ["| mesh | triangles | threads | walk | Embree Mrays/s | library Mrays/s | library ÷ Embree time | same hit/miss | max rel. Δt | = scalar | Embree build s | library build s | build ÷ Embree |",
+            "|---|--:|--:|---|--:|--:|--:|--:|--:|---|--:|--:|--:|"]
     for name in args.meshes.split(","):
         mesh_file, rays_file, vertices, faces, origins, dirs = files(name)
         for threads, cpus in ((1, "0"), (2, "0,1")):
             emb = run_embree_pinned(name, cpus, args.passes)
-            lib = library(mesh_file, rays_file, threads, args.passes, classpath)
-            same, rel = agreement(lib["t"], emb["t"])
-            n = len(dirs)
-            # embreex traces on the calling thread: its two-core row gives the build only.
-            emb_rate = f"{n / emb['median_trace_s'] / 1e6:.2f}" if threads == 1 else "–"
-            ratio = f"{lib['median_trace_s'] / emb['median_trace_s']:.2f}" if threads == 1 else "–"
-            rows.append(f"| {name} | {len(faces)} | {threads} | {emb_rate} | {n / lib['median_trace_s'] / 1e6:.2f} | "
-                        f"{ratio} | {same * 100:.3f} % | {rel:.1e} | {emb['build_s']:.3f} | {lib['build_s']:.3f} |")
-            print(rows[-1], flush=True)
+            scalar_t = None
+            for walk in walks:
+                lib = library(mesh_file, rays_file, threads, args.passes, classpath, walk, args.java)
+                same, rel = agreement(lib["t"], emb["t"])
+                if walk == "scalar":
+                    scalar_t = lib["t"]
+                equal = "–" if walk == "scalar" or scalar_t is None else ("yes" if same_distances(lib["t"], scalar_t) else "**NO**")
+                n = len(dirs)
+                # embreex traces on the calling thread: its two-core row gives the build only.
+                emb_rate = f"{n / emb['median_trace_s'] / 1e6:.2f}" if threads == 1 else "–"
+                ratio = f"{lib['median_trace_s'] / emb['median_trace_s']:.2f}" if threads == 1 else "–"
+                build_ratio = f"{lib['build_s'] / emb['build_s']:.2f}" if threads == 1 else "–"
+                rows.append(f"| {name} | {len(faces)} | {threads} | {walk} | {emb_rate} | {n / lib['median_trace_s'] / 1e6:.2f} | "
+                            f"{ratio} | {same * 100:.3f} % | {rel:.1e} | {equal} | {emb['build_s']:.3f} | {lib['build_s']:.3f} | {build_ratio} |")
+                print(rows[-1], flush=True)
     table = "\n".join(rows) + "\n"
     args.out.write_text(table)
     print(f"\n{table}\n(written to {args.out})")

@@ -55,24 +55,51 @@ def test_an_archive_that_does_not_fit_is_ignored_without_a_word(tmp_path):
 
 @needs_jar
 def test_the_users_options_come_after_the_launchers(tmp_path):
-    # -XX:+PrintCommandLineFlags lists the options the JVM runs with; the user's TieredStopAtLevel=4
-    # must be the one in force, over the launcher's C1-only default.
+    # -XX:+PrintCommandLineFlags lists the options the JVM runs with; the user's TieredStopAtLevel=1
+    # must be in force over the launcher's default (both compilers).
     done = run(project(tmp_path, with_jar=True), "--version",
-               env={"RAYTRACER_JAVA_OPTS": "-XX:+PrintCommandLineFlags -XX:TieredStopAtLevel=4"})
+               env={"RAYTRACER_JAVA_OPTS": "-XX:+PrintCommandLineFlags -XX:TieredStopAtLevel=1"})
     assert done.returncode == 0, done.stderr
-    assert "-XX:TieredStopAtLevel=4" in done.stdout
-    assert "-XX:TieredStopAtLevel=1" not in done.stdout
+    assert "-XX:TieredStopAtLevel=1" in done.stdout
 
 
-def fake_jdk(tmp_path: Path, version: str) -> Path:
-    """A JAVA_HOME whose release file names `version` and whose java prints its arguments, one a line."""
+@needs_jar
+def test_a_render_prints_no_incubator_warning_and_takes_the_vector_walk(tmp_path):
+    folder = project(tmp_path, with_jar=True)
+    done = run(folder, str(ROOT / "scenes" / "two-colors.xml"), "--width=40", f"--output={tmp_path / 'x.png'}")
+    assert done.returncode == 0, done.stderr
+    assert "incubator" not in done.stderr
+    assert "-wide vector walk" in done.stdout or "scalar walk (" in done.stdout
+
+
+def fake_jdk(tmp_path: Path, version: str, modules: str = "java.base") -> Path:
+    """A JAVA_HOME whose release file names `version` and `modules`, and whose java prints its
+    arguments, one a line, after the JVM's incubator warning on standard error."""
     home = tmp_path / f"jdk-{version}"
     (home / "bin").mkdir(parents=True)
-    (home / "release").write_text(f'IMPLEMENTOR="test"\nJAVA_VERSION="{version}"\n')
+    (home / "release").write_text(f'IMPLEMENTOR="test"\nJAVA_VERSION="{version}"\nMODULES="{modules}"\n')
     java = home / "bin" / "java"
-    java.write_text('#!/bin/sh\nfor a in "$@"; do echo "$a"; done\n')
+    java.write_text('#!/bin/sh\n'
+                    'case " $* " in *" jdk.incubator.vector "*) echo "WARNING: Using incubator modules: jdk.incubator.vector" >&2;; esac\n'
+                    'echo "the JVM\'s own line" >&2\n'
+                    'for a in "$@"; do echo "$a"; done\n'
+                    'exit 3\n')
     java.chmod(0o755)
     return home
+
+
+@pytest.mark.parametrize("modules, vector", [("java.base jdk.incubator.vector java.desktop", True),
+                                             ("java.base jdk.incubator.vector", True),
+                                             ("java.base java.desktop", False)])
+def test_the_vector_module_is_added_where_the_jdk_has_it_and_its_warning_dropped(tmp_path, modules, vector):
+    (tmp_path / "project").mkdir()
+    folder = project(tmp_path / "project", with_jar=False)
+    (folder / "target").mkdir()
+    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    done = run(folder, "scene.xml", env={"JAVA_HOME": str(fake_jdk(tmp_path, "17.0.12", modules))})
+    assert done.returncode == 3  # the JVM's own exit status
+    assert ("jdk.incubator.vector" in done.stdout.splitlines()) == vector
+    assert done.stderr == "the JVM's own line\n"  # the warning, and only it, dropped
 
 
 @pytest.mark.parametrize("version, uses_cache", [("25.0.1", True), ("24", True), ("21.0.5", False), ("17.0.12", False)])
@@ -84,7 +111,7 @@ def test_the_ahead_of_time_cache_is_used_on_jdk_24_and_later_only(tmp_path, vers
     for name in ("raytracer.jar", "raytracer.jsa", "raytracer.aot"):
         (folder / "target" / name).write_bytes(b"")
     done = run(folder, "scene.xml", env={"JAVA_HOME": str(fake_jdk(tmp_path, version)), "RAYTRACER_JAVA_OPTS": "-Dmine=1"})
-    assert done.returncode == 0, done.stderr
+    assert done.returncode == 3, done.stderr
     args = done.stdout.splitlines()
     assert args[-3:] == ["-jar", str(folder / "target" / "raytracer.jar"), "scene.xml"]
     assert args[-4] == "-Dmine=1"  # the user's options last before the jar
@@ -94,4 +121,4 @@ def test_the_ahead_of_time_cache_is_used_on_jdk_24_and_later_only(tmp_path, vers
     else:
         assert not any(a.startswith("-XX:AOTCache") for a in args)
         assert f"-XX:SharedArchiveFile={folder / 'target' / 'raytracer.jsa'}" in args
-    assert "-XX:TieredStopAtLevel=1" in args and "-XX:+UseSerialGC" in args
+    assert "-XX:+UseSerialGC" in args and not any(a.startswith("-XX:TieredStopAtLevel") for a in args)

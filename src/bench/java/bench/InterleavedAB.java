@@ -132,7 +132,12 @@ public final class InterleavedAB {
     private static Map<String, List<double[]>> child(String a, String b, int pairs, String[] benchArgs)
             throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xmx8g", "-cp", System.getProperty("java.class.path"), InterleavedAB.class.getName(),
+                "-Xmx8g"));
+        // The children read the vector module when this JVM does: an A/B with and without the
+        // BVH's vector walk is this command run with and without --add-modules jdk.incubator.vector.
+        if (ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent())
+            command.addAll(List.of("--add-modules", "jdk.incubator.vector"));
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), InterleavedAB.class.getName(),
                 "--a", a, "--b", b, "--pairs", Integer.toString(pairs), "--raw", "--"));
         command.addAll(Arrays.asList(benchArgs));
         Process process = new ProcessBuilder(command).redirectError(ProcessBuilder.Redirect.DISCARD).start();

@@ -45,6 +45,10 @@ public final class Bvh extends Intersectable {
     private final BoundingBox rootBox;
     private final int nodeCount;
     private final int depth;
+    /** The wide walk of this tree, or null: then the binary nodes are walked in scalar code. */
+    private final WideWalk walk;
+    /** The wide nodes the {@link #walk} reads, or null (no walk, or a root that is a leaf). */
+    private final WideNodes wide;
 
     /**
      * The tree of {@code geometries} as they are now, for a render: the tree an earlier call
@@ -64,7 +68,7 @@ public final class Bvh extends Intersectable {
         Intersectable[] now = collected.toArray(new Intersectable[0]);
         Bvh kept = geometries.keptTree();
         if (kept != null && kept.indexes(now)) return kept;
-        Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, true);
+        Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, true, Vectorization.WALK);
         for (Intersectable leaf : now)
             if (!(leaf instanceof Geometry g && g.isLibraryShape())) return tree;
         geometries.keepTree(tree);
@@ -108,14 +112,22 @@ public final class Bvh extends Intersectable {
      * when {@code pairs} (else every node with bins; for the tests that both searches agree).
      */
     static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs) {
+        return build(geometries, parallelism, forkAbove, pairs, Vectorization.WALK);
+    }
+
+    /**
+     * As {@link #build(Geometries, int, int, boolean)}, walked by {@code walk} (null: the scalar
+     * walk), whatever this JVM's {@link Vectorization} chose: for the tests that both walks agree.
+     */
+    static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs, WideWalk walk) {
         if (parallelism < 1) throw new IllegalArgumentException("parallelism must be at least 1, got " + parallelism);
         List<Intersectable> collected = new ArrayList<>();
         geometries.collectLeaves(collected);
-        return new Bvh(collected.toArray(new Intersectable[0]), parallelism, Math.max(1, forkAbove), pairs);
+        return new Bvh(collected.toArray(new Intersectable[0]), parallelism, Math.max(1, forkAbove), pairs, walk);
     }
 
-    /** Indexes {@code all}, a scene's leaves (this tree keeps the array). */
-    private Bvh(Intersectable[] all, int parallelism, int forkAbove, boolean pairs) {
+    /** Indexes {@code all}, a scene's leaves (this tree keeps the array), to be walked by {@code walk} (null: scalar). */
+    private Bvh(Intersectable[] all, int parallelism, int forkAbove, boolean pairs, WideWalk walk) {
         leaves = all;
         BvhBuilder built = BvhBuilder.index(all, parallelism, forkAbove, pairs);
         unbounded = built.unbounded;
@@ -127,6 +139,31 @@ public final class Bvh extends Intersectable {
         nodeCount = built.nodes;
         rootBox = built.rootBox;
         depth = built.maxDepth + 1;
+        // A root that is a leaf has no children to test together.
+        boolean wideNodes = walk != null && nodeCount > 1;
+        this.walk = wideNodes ? walk : null;
+        wide = wideNodes ? WideNodes.collapse(node, nodeCount, walk.width()) : null;
+    }
+
+    /**
+     * One line for a render's summary: which walk this JVM's trees use, the vector walk of wide
+     * nodes or the scalar one, and for the scalar one why ({@code jdk.incubator.vector} not
+     * readable, {@code -Draytracer.simd=false}, a CPU without 256-bit vectors).
+     *
+     * @return the walk, in words
+     */
+    public static String walkDescription() {
+        return Vectorization.DESCRIPTION;
+    }
+
+    /**
+     * The bound a box's entry is compared with, for a hit bound {@code t}: {@code t} itself, or
+     * the largest finite double when nothing bounds the ray, so that a missed box, whose entry is
+     * +∞, never passes "entry ≤ bound". A box entered exactly at the bound is walked: it may hold
+     * a primitive hit at that very distance that wins by the tie rule ({@link #closestInLeaf}).
+     */
+    static double limit(double t) {
+        return t < Double.MAX_VALUE ? t : Double.MAX_VALUE;
     }
 
     /** @return whether this tree was built over exactly {@code now}: the same objects in the same order */
@@ -171,7 +208,8 @@ public final class Bvh extends Intersectable {
      * @return the tree's size in bytes, without the scene's own objects
      */
     public long indexBytes() {
-        return BvhNodes.bytes(nodeCount) + prim.length * 9L + packed.length * (long) Double.BYTES;
+        return BvhNodes.bytes(nodeCount) + (wide == null ? 0 : wide.bytes()) + prim.length * 9L
+                + packed.length * (long) Double.BYTES;
     }
 
     /** @return the number of unbounded geometries tested beside the tree */
@@ -199,88 +237,142 @@ public final class Bvh extends Intersectable {
     }
 
     /**
-     * The ordered walk: at an inner node both children's boxes are tested; the nearer one (by
-     * entry distance) is visited first and the other pushed with its entry distance, so that
-     * when popped it is skipped if a hit nearer than its box was found meanwhile.
+     * The closest hit: the unbounded leaves, then the tree's walk, the {@link #walk wide one}
+     * when this tree has one, else the binary one below.
+     *
+     * <p>The tie rule, which makes the answer independent of the order of the walk: of hits at
+     * the same distance, one found before the walk (an unbounded leaf, or by the caller) wins,
+     * then the primitive first in the tree's leaf order. Boxes entered exactly at the current
+     * hit's distance are therefore still walked ({@link #limit}).
      */
     @Override
     public boolean closestHit(Hit hit) {
         boolean found = false;
         for (Intersectable u : unbounded) found |= u.closestHit(hit);
+        hit.order = -1;
         if (nodeCount == 0) return found;
         double ox = hit.ox, oy = hit.oy, oz = hit.oz;
         double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
-        if (!(entry(0, ox, oy, oz, ix, iy, iz, hit.t) < hit.t)) return found;
+        if (!(entry(0, ox, oy, oz, ix, iy, iz, hit.t) <= limit(hit.t))) return found;
         // A walk already in progress on this record (this one's caller, through a user's shape
         // that walks a tree of its own with the record) owns the record's stack: this one then
         // takes arrays of its own. Rare (only user shapes do it), so the common walk allocates nothing.
+        int size = wide == null ? depth : wide.stackSize();
         boolean nested = hit.walking;
         int[] stack;
         double[] stackT;
         if (nested) {
-            stack = new int[depth];
-            stackT = new double[depth];
+            stack = new int[size];
+            stackT = new double[size];
         } else {
-            if (hit.stack.length < depth) {
-                hit.stack = new int[depth];
-                hit.stackT = new double[depth];
+            if (hit.stack.length < size) {
+                hit.stack = new int[size];
+                hit.stackT = new double[size];
             }
             stack = hit.stack;
             stackT = hit.stackT;
             hit.walking = true;
         }
         try {
-            float[] nd = node;
-            int top = 0;
-            int n = 0;
-            while (true) {
-                int rec = BvhNodes.at(n);
-                int count = BvhNodes.count(nd, rec);
-                if (count > 0) {
-                    for (int k = BvhNodes.first(nd, rec), end = k + count; k < end; ++k) {
-                        byte kd = kind[k];
-                        if (kd == OWN) {
-                            found |= owner[k].closestHit(prim[k], hit);
-                            continue;
-                        }
-                        int at = k * PACKED;
-                        double t = kd == SPHERE ? Sphere.distance(hit, packed[at], packed[at + 1], packed[at + 2], packed[at + 3])
-                                : Triangle.intersect(hit, packed, at);
-                        if (inRange(t, hit.t)) {
-                            hit.set(t, (Geometry) owner[k], prim[k]);
-                            found = true;
-                        }
-                    }
-                } else {
-                    int left = n + 1, right = BvhNodes.right(nd, rec);
-                    double tMax = hit.t;
-                    double tl = entry(left, ox, oy, oz, ix, iy, iz, tMax);
-                    double tr = entry(right, ox, oy, oz, ix, iy, iz, tMax);
-                    // One branch where there were four: a missed child's entry is +∞ (or tMax, never
-                    // below it), so "tl <= tr" picks the child to visit whichever were hit, and the
-                    // other is written to the stack always but kept (top moves) only when it was hit.
-                    // Which children are hit, and in which order, is a coin toss per node in a big
-                    // scene; selects cost less than the mispredictions (3–4 % at 2×10⁶ primitives).
-                    if (tl < tMax || tr < tMax) {
-                        boolean leftFirst = tl <= tr;
-                        int far = leftFirst ? right : left;
-                        double tf = leftFirst ? tr : tl;
-                        n = leftFirst ? left : right;
-                        stack[top] = far;
-                        stackT[top] = tf;
-                        top += tf < tMax ? 1 : 0;
-                        continue;
-                    }
-                }
-                do {
-                    if (top == 0) return found;
-                    --top;
-                } while (!(stackT[top] < hit.t));
-                n = stack[top];
-            }
+            return (wide != null ? walk.closestHit(this, wide.node, hit, stack, stackT)
+                    : binaryClosestHit(hit, stack, stackT, ox, oy, oz, ix, iy, iz)) | found;
         } finally {
             if (!nested) hit.walking = false;
         }
+    }
+
+    /**
+     * The ordered walk of the binary nodes below the root: at an inner node both children's
+     * boxes are tested; the nearer one (by entry distance) is visited first and the other pushed
+     * with its entry distance, so that when popped it is skipped if a hit nearer than its box was
+     * found meanwhile.
+     */
+    private boolean binaryClosestHit(Hit hit, int[] stack, double[] stackT, double ox, double oy, double oz,
+                                     double ix, double iy, double iz) {
+        boolean found = false;
+        float[] nd = node;
+        int top = 0;
+        int n = 0;
+        while (true) {
+            int rec = BvhNodes.at(n);
+            int count = BvhNodes.count(nd, rec);
+            if (count > 0) {
+                found |= closestInLeaf(BvhNodes.first(nd, rec), count, hit);
+            } else {
+                int left = n + 1, right = BvhNodes.right(nd, rec);
+                double tMax = limit(hit.t);
+                double tl = entry(left, ox, oy, oz, ix, iy, iz, tMax);
+                double tr = entry(right, ox, oy, oz, ix, iy, iz, tMax);
+                // One branch where there were four: a missed child's entry is +∞, above the
+                // finite tMax, so "tl <= tr" picks the child to visit whichever were hit, and the
+                // other is written to the stack always but kept (top moves) only when it was hit.
+                // Which children are hit, and in which order, is a coin toss per node in a big
+                // scene; selects cost less than the mispredictions (3–4 % at 2×10⁶ primitives).
+                if (tl <= tMax || tr <= tMax) {
+                    boolean leftFirst = tl <= tr;
+                    int far = leftFirst ? right : left;
+                    double tf = leftFirst ? tr : tl;
+                    n = leftFirst ? left : right;
+                    stack[top] = far;
+                    stackT[top] = tf;
+                    top += tf <= tMax ? 1 : 0;
+                    continue;
+                }
+            }
+            do {
+                if (top == 0) return found;
+                --top;
+            } while (!(stackT[top] <= limit(hit.t)));
+            n = stack[top];
+        }
+    }
+
+    /**
+     * Tests the leaf's primitives [first, first + count) for a hit nearer than {@code hit}'s, or
+     * as near and first in leaf order (the tie rule, {@link #closestHit(Hit)}).
+     */
+    boolean closestInLeaf(int first, int count, Hit hit) {
+        boolean found = false;
+        for (int k = first, end = first + count; k < end; ++k) {
+            byte kd = kind[k];
+            if (kd == OWN) {
+                found |= closestOwn(k, hit);
+                continue;
+            }
+            int at = k * PACKED;
+            double t = kd == SPHERE ? Sphere.distance(hit, packed[at], packed[at + 1], packed[at + 2], packed[at + 3])
+                    : Triangle.intersect(hit, packed, at);
+            if (inRange(t, hit.t) || t == hit.t && k < hit.order) {
+                hit.set(t, (Geometry) owner[k], prim[k]);
+                hit.order = k;
+                found = true;
+            }
+        }
+        return found;
+    }
+
+    /**
+     * Primitive {@code k} asked through its owner's own query, which takes only a strictly
+     * nearer hit: where the tie rule would let it win a tie (it comes before the current hit in
+     * leaf order), the bound is raised by one ulp for the call, and a hit beyond the old bound
+     * (exactly one ulp farther) is undone.
+     */
+    private boolean closestOwn(int k, Hit hit) {
+        if (!(k < hit.order)) {
+            if (!owner[k].closestHit(prim[k], hit)) return false;
+            hit.order = k;
+            return true;
+        }
+        double t = hit.t;
+        Geometry g = hit.geometry;
+        int p = hit.primitive;
+        hit.t = Math.nextUp(t);
+        if (owner[k].closestHit(prim[k], hit) && hit.t <= t) {
+            hit.order = k;
+            return true;
+        }
+        hit.set(t, g, p);
+        return false;
     }
 
     /** The stackless walk: order does not matter for an any-hit query, so skip links suffice. */
@@ -292,6 +384,22 @@ public final class Bvh extends Intersectable {
         double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
         // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
+        if (wide != null) {
+            if (entry(0, ox, oy, oz, ix, iy, iz, limit) == Double.POSITIVE_INFINITY) return true;
+            int size = wide.stackSize();
+            // As the closest-hit walk's stack: a walk in progress on this record keeps its own.
+            if (query.walking) return walk.visitHits(this, wide.node, query, limit, maxDistance, visitor, new int[size]);
+            if (query.stack.length < size) {
+                query.stack = new int[size];
+                query.stackT = new double[size];
+            }
+            query.walking = true;
+            try {
+                return walk.visitHits(this, wide.node, query, limit, maxDistance, visitor, query.stack);
+            } finally {
+                query.walking = false;
+            }
+        }
         float[] nd = node;
         int n = 0;
         while (n < nodeCount) {
@@ -301,22 +409,26 @@ public final class Bvh extends Intersectable {
                 n = BvhNodes.skip(count, n);
                 continue;
             }
-            if (count > 0) {
-                for (int k = BvhNodes.first(nd, rec), end = k + count; k < end; ++k) {
-                    byte kd = kind[k];
-                    int at = k * PACKED;
-                    if (kd == OWN) {
-                        if (!owner[k].visitHits(prim[k], query, maxDistance, visitor)) return false;
-                    } else if (kd == SPHERE) {
-                        if (!Sphere.visitHits((Geometry) owner[k], query, maxDistance, visitor,
-                                packed[at], packed[at + 1], packed[at + 2], packed[at + 3])) return false;
-                    } else {
-                        double t = Triangle.intersect(query, packed, at);
-                        if (within(t, maxDistance) && !visitor.visit((Geometry) owner[k], t)) return false;
-                    }
-                }
-            }
+            if (count > 0 && !visitInLeaf(BvhNodes.first(nd, rec), count, query, maxDistance, visitor)) return false;
             ++n; // into an inner node's left child, or past a leaf
+        }
+        return true;
+    }
+
+    /** Gives {@code visitor} each hit within {@code maxDistance} of the leaf's primitives [first, first + count). */
+    boolean visitInLeaf(int first, int count, Hit query, double maxDistance, HitVisitor visitor) {
+        for (int k = first, end = first + count; k < end; ++k) {
+            byte kd = kind[k];
+            int at = k * PACKED;
+            if (kd == OWN) {
+                if (!owner[k].visitHits(prim[k], query, maxDistance, visitor)) return false;
+            } else if (kd == SPHERE) {
+                if (!Sphere.visitHits((Geometry) owner[k], query, maxDistance, visitor,
+                        packed[at], packed[at + 1], packed[at + 2], packed[at + 3])) return false;
+            } else {
+                double t = Triangle.intersect(query, packed, at);
+                if (within(t, maxDistance) && !visitor.visit((Geometry) owner[k], t)) return false;
+            }
         }
         return true;
     }

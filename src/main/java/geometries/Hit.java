@@ -55,6 +55,15 @@ public final class Hit {
      * {@link #stack}.
      */
     boolean walking;
+    /**
+     * The leaf-order index, in the tree being walked, of the primitive {@link #geometry} is; −1
+     * when the hit was found before the walk (it then wins every tie): what a tree's tie rule
+     * compares ({@code Bvh.closestHit}).
+     */
+    int order = -1;
+    /** The vector walk's scratch: the entry distances of a wide node's children, and their order. */
+    final double[] lanes = new double[WideNodes.MAX_WIDTH];
+    final int[] laneOrder = new int[WideNodes.MAX_WIDTH];
 
     /**
      * Clears the record and sets the query's upper bound on the distance; the ray stays.
@@ -66,6 +75,7 @@ public final class Hit {
         t = tMax;
         geometry = null;
         primitive = 0;
+        order = -1;
         return this;
     }
 

@@ -197,7 +197,7 @@ public final class Camera {
         if (event != null) event.commit(name, scene, imageWriter, sampling.antiAliasing(), stats);
         renderListener.accept(this, stats);
         if (summary) execution.output().println("render " + name + " " + imageWriter.getNx() + "x"
-                + imageWriter.getNy() + " [" + describe() + "] of scene '" + scene + "': " + stats);
+                + imageWriter.getNy() + " [" + describe() + "] of scene '" + scene + "': " + stats + rayTracer.walk());
         return stats;
     }
 

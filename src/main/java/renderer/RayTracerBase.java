@@ -116,7 +116,12 @@ public abstract class RayTracerBase {
                 new Vector(ray.directionX(), ray.directionY(), ray.directionZ())));
     }
 
-    /** A short description of the tracer's settings for the render summary. */
+    /** @return how the tracer finds hits, after a comma, for the end of the summary line; "" when there is nothing to say */
+    String walk() {
+        return "";
+    }
+
+    /** @return the tracer's settings in words, for the render's summary line */
     String describe() {
         return getClass().getSimpleName();
     }

@@ -154,6 +154,12 @@ public class RayTracerBasic extends RayTracerBase {
         RayBudget.require(mode, cameraRays, beamSize, shadowSamples, scene.lights);
     }
 
+    /** @return which walk the BVH takes on this JVM (vector or scalar, {@link Bvh#walkDescription()}), after a comma; "" without the BVH */
+    @Override
+    String walk() {
+        return useBvh ? ", " + Bvh.walkDescription() : "";
+    }
+
     @Override
     String describe() {
         return "bvh " + (useBvh ? "on" : "off") + ", beam " + beamSize + ", shadow samples " + shadowSamples;

@@ -774,13 +774,13 @@ class BvhTest {
             Geometries polygons = new Geometries();
             for (int i = 0; i < 50; ++i)
                 polygons.add(new Polygon(new Point(i, 0, 0), new Point(i + 0.5, 0, 0), new Point(i + 0.5, 1, 0), new Point(i, 1, 0)));
-            Bvh own = Bvh.build(polygons);
+            Bvh own = Bvh.build(polygons, 1, 4096, true, null); // binary nodes only: the scalar walk
             assertThat(own.indexBytes()).isEqualTo(own.nodeCount() * 32L + 50 * 9L);
-            Bvh mesh = Bvh.build(new Geometries(gridMesh(20)));
+            Bvh mesh = Bvh.build(new Geometries(gridMesh(20)), 1, 4096, true, null);
             assertThat(mesh.indexBytes()).isEqualTo(mesh.nodeCount() * 32L + mesh.primitiveTotal() * (9L + 72));
             Geometries spheres = new Geometries();
             for (int i = 0; i < 50; ++i) spheres.add(new Sphere(new Point(i, 0, 0), 0.4));
-            Bvh packed = Bvh.build(spheres);
+            Bvh packed = Bvh.build(spheres, 1, 4096, true, null);
             assertThat(packed.indexBytes()).isEqualTo(packed.nodeCount() * 32L + 50 * (9L + 72));
         }
     }

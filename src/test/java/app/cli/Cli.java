@@ -74,9 +74,15 @@ final class Cli {
      * {@code dir}, its output to dir/stdout.txt and dir/stderr.txt.
      */
     static Process startJava(Path dir, String heap, String... args) throws IOException {
+        return startJava(dir, List.of(heap), args);
+    }
+
+    /** {@link #startJava(Path, String, String...)} with any options of the JVM's. */
+    static Process startJava(Path dir, List<String> jvmOptions, String... args) throws IOException {
         String classPath = location(RenderCommand.class) + File.pathSeparator + location(CommandLine.class);
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                heap, "-cp", classPath, MAIN_CLASS));
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString()));
+        command.addAll(jvmOptions);
+        command.addAll(List.of("-cp", classPath, MAIN_CLASS));
         command.addAll(List.of(args));
         return new ProcessBuilder(command).directory(dir.toFile())
                 .redirectOutput(dir.resolve("stdout.txt").toFile()).redirectError(dir.resolve("stderr.txt").toFile()).start();

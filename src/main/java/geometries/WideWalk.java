@@ -1,0 +1,35 @@
+package geometries;
+
+/**
+ * The walks of a {@link Bvh}'s {@link WideNodes}, as {@link Vectorization} provides them: the
+ * vector implementation when the JVM can run it, none otherwise (the tree then keeps its binary
+ * nodes and walks them in scalar code). An interface so that the tree never names the class that
+ * needs {@code jdk.incubator.vector}.
+ */
+interface WideWalk {
+    /** @return children per wide node, as this walk reads them */
+    int width();
+
+    /** @return what runs, for the render summary: the width, the vector size and the module */
+    String description();
+
+    /**
+     * The closest hit below {@code hit}'s bound among the primitives under the wide root (whose
+     * box the caller has tested), by the tree's tie rule.
+     *
+     * @param stack  room for {@link WideNodes#stackSize()} children, owned by this walk
+     * @param stackT their entry distances
+     * @return whether a primitive was hit (the record then holds it)
+     */
+    boolean closestHit(Bvh tree, float[] node, Hit hit, int[] stack, double[] stackT);
+
+    /**
+     * Every hit within {@code maxDistance} below the wide root, to {@code visitor}, in the scalar
+     * walk's order (the tree's leaf order).
+     *
+     * @param limit the distance up to which boxes are entered (a little past maxDistance)
+     * @param stack room for {@link WideNodes#stackSize()} children, owned by this walk
+     * @return false when the visitor stopped the walk
+     */
+    boolean visitHits(Bvh tree, float[] node, Hit query, double limit, double maxDistance, HitVisitor visitor, int[] stack);
+}

@@ -1,0 +1,210 @@
+package geometries;
+
+import static geometries.WideNodes.MAX_X;
+import static geometries.WideNodes.MAX_Y;
+import static geometries.WideNodes.MAX_Z;
+import static geometries.WideNodes.MIN_X;
+import static geometries.WideNodes.MIN_Y;
+import static geometries.WideNodes.MIN_Z;
+
+import jdk.incubator.vector.DoubleVector;
+import jdk.incubator.vector.FloatVector;
+import jdk.incubator.vector.VectorMask;
+import jdk.incubator.vector.VectorOperators;
+import jdk.incubator.vector.VectorSpecies;
+
+/**
+ * The walks of a {@link Bvh}'s {@link WideNodes} with the Vector API: all children's boxes of a
+ * node tested in one vector step, four children in 256-bit vectors, eight in 512-bit ones (where
+ * the CPU has them and the JDK compiles their masks: measured on JDK 25, not on 17, whose 512-bit
+ * masks are built as objects). The only class that names {@code jdk.incubator.vector};
+ * {@link Vectorization} loads it, by name, only when that module is readable, so that a JVM
+ * without it never links this class.
+ *
+ * <p>Each lane computes exactly what the scalar {@link BoundingBox#entry} computes for that
+ * child: the float bounds widened to double (exact), the same subtractions and products, and the
+ * same selects ({@code a > b ? b : a}, not {@code min}, so that a 0·∞ = NaN lands where the
+ * scalar test puts it). So every box is entered at the same distance, to the bit, and a walk
+ * misses nothing the scalar walk finds. Which of two equally distant hits wins does not depend
+ * on the order of the walk ({@link Bvh}'s tie rule), so both walks return the same hit.
+ */
+final class VectorWalk implements WideWalk {
+    /** The children's bounds as doubles: one vector per bound, a lane per child. Constant to the compiler. */
+    private static final VectorSpecies<Double> DOUBLES = Runtime.version().feature() >= 25
+            && DoubleVector.SPECIES_PREFERRED.vectorBitSize() >= 512 ? DoubleVector.SPECIES_512 : DoubleVector.SPECIES_256;
+    /** The same bounds as stored, floats: half the vector. */
+    private static final VectorSpecies<Float> FLOATS = DOUBLES == DoubleVector.SPECIES_512 ? FloatVector.SPECIES_256
+            : FloatVector.SPECIES_128;
+    /** Children per wide node. */
+    private static final int WIDTH = DOUBLES.length();
+    private static final int SHIFT = Integer.numberOfTrailingZeros(WIDTH);
+    private static final DoubleVector ZERO = DoubleVector.zero(DOUBLES);
+    private static final DoubleVector INFINITY = DoubleVector.broadcast(DOUBLES, Double.POSITIVE_INFINITY);
+    /** Whether this JDK compiles {@code VectorMask.toLong} to one instruction (from JDK 18 on). */
+    private static final boolean MASK_TO_BITS = Runtime.version().feature() >= 18;
+
+    /**
+     * The walk for this machine: public for {@link Vectorization}'s reflective construction only.
+     *
+     * @throws UnsupportedOperationException on a CPU whose vectors hold fewer than four doubles,
+     *                                       where the Vector API would emulate them, slower than the scalar walk
+     */
+    public VectorWalk() {
+        int bits = DoubleVector.SPECIES_PREFERRED.vectorBitSize();
+        if (bits < DOUBLES.vectorBitSize())
+            throw new UnsupportedOperationException(bits + "-bit vectors");
+    }
+
+    /** The walk on any CPU, emulated where the vectors are narrower (the same answers): for the tests. */
+    private VectorWalk(boolean anyCpu) {
+    }
+
+    /** @return the walk whatever the CPU's vectors, for the tests that it answers as the scalar walk */
+    static VectorWalk anyCpu() {
+        return new VectorWalk(true);
+    }
+
+    @Override
+    public int width() {
+        return WIDTH;
+    }
+
+    @Override
+    public String description() {
+        return WIDTH + "-wide vector walk";
+    }
+
+    /** The bound {@code at} of the four children, widened to doubles. */
+    private static DoubleVector bound(float[] nd, int at) {
+        return (DoubleVector) FloatVector.fromArray(FLOATS, nd, at).convertShape(VectorOperators.F2D, DOUBLES, 0);
+    }
+
+    /**
+     * The slab test of wide node {@code w}'s four children against the segment [0, limit]
+     * ({@code limit} finite): the entry distances into {@code entries}.
+     *
+     * @return the children hit, one bit per lane
+     */
+    private static long test(float[] nd, int w, double rx, double ry, double rz, double rix, double riy, double riz,
+                             double limit, double[] entries) {
+        // The ray comes in as doubles and is broadcast here, per node (one instruction each):
+        // vectors passed between methods that the compiler does not inline are boxed, 0.5 kB a ray.
+        DoubleVector ox = DoubleVector.broadcast(DOUBLES, rx), oy = DoubleVector.broadcast(DOUBLES, ry),
+                oz = DoubleVector.broadcast(DOUBLES, rz);
+        DoubleVector ix = DoubleVector.broadcast(DOUBLES, rix), iy = DoubleVector.broadcast(DOUBLES, riy),
+                iz = DoubleVector.broadcast(DOUBLES, riz);
+        int at = WideNodes.at(w, WIDTH);
+        DoubleVector t0 = ZERO, t1 = DoubleVector.broadcast(DOUBLES, limit);
+        DoubleVector a = bound(nd, WideNodes.bound(at, MIN_X, WIDTH)).sub(ox).mul(ix), b = bound(nd, WideNodes.bound(at, MAX_X, WIDTH)).sub(ox).mul(ix);
+        VectorMask<Double> swap = a.compare(VectorOperators.GT, b);
+        DoubleVector near = a.blend(b, swap), far = b.blend(a, swap);
+        t0 = t0.blend(near, near.compare(VectorOperators.GT, t0));
+        t1 = t1.blend(far, far.compare(VectorOperators.LT, t1));
+        a = bound(nd, WideNodes.bound(at, MIN_Y, WIDTH)).sub(oy).mul(iy);
+        b = bound(nd, WideNodes.bound(at, MAX_Y, WIDTH)).sub(oy).mul(iy);
+        swap = a.compare(VectorOperators.GT, b);
+        near = a.blend(b, swap);
+        far = b.blend(a, swap);
+        t0 = t0.blend(near, near.compare(VectorOperators.GT, t0));
+        t1 = t1.blend(far, far.compare(VectorOperators.LT, t1));
+        a = bound(nd, WideNodes.bound(at, MIN_Z, WIDTH)).sub(oz).mul(iz);
+        b = bound(nd, WideNodes.bound(at, MAX_Z, WIDTH)).sub(oz).mul(iz);
+        swap = a.compare(VectorOperators.GT, b);
+        near = a.blend(b, swap);
+        far = b.blend(a, swap);
+        t0 = t0.blend(near, near.compare(VectorOperators.GT, t0));
+        t1 = t1.blend(far, far.compare(VectorOperators.LT, t1));
+        VectorMask<Double> hit = t0.compare(VectorOperators.LE, t1);
+        if (MASK_TO_BITS) {
+            long bits = hit.toLong();
+            // The distances matter only to order two or more children.
+            if ((bits & (bits - 1)) != 0) t0.intoArray(entries, 0);
+            return bits;
+        }
+        // JDK 17 compiles no mask-to-bits instruction (the mask would be built as an object, 0.1 kB
+        // a ray): the missed children's entries are made +∞ instead and the bits read back.
+        t0.blend(INFINITY, hit.not()).intoArray(entries, 0);
+        long bits = 0;
+        for (int j = 0; j < WIDTH; ++j) bits |= (entries[j] < Double.POSITIVE_INFINITY ? 1L : 0L) << j;
+        return bits;
+    }
+
+    @Override
+    public boolean closestHit(Bvh tree, float[] nd, Hit hit, int[] stack, double[] stackT) {
+        double ox = hit.ox, oy = hit.oy, oz = hit.oz;
+        double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
+        double[] entries = hit.lanes;
+        int[] lanes = hit.laneOrder;
+        boolean found = false;
+        int top = 0, w = 0;
+        while (true) {
+            long bits = test(nd, w, ox, oy, oz, ix, iy, iz, Bvh.limit(hit.t), entries);
+            int item = -1;
+            if ((bits & (bits - 1)) == 0) {
+                // None or one child hit: nothing to order.
+                if (bits != 0) item = w * WIDTH + Long.numberOfTrailingZeros(bits);
+            } else {
+                // The children hit, nearest first (equal entries in lane order): an insertion
+                // sort of at most four. The nearest is visited now, the others pushed far first.
+                int hits = 0;
+                for (long rest = bits; rest != 0; rest &= rest - 1) {
+                    int j = Long.numberOfTrailingZeros(rest);
+                    double e = entries[j];
+                    int i = hits++;
+                    while (i > 0 && entries[lanes[i - 1]] > e) {
+                        lanes[i] = lanes[i - 1];
+                        --i;
+                    }
+                    lanes[i] = j;
+                }
+                for (int i = hits - 1; i > 0; --i) {
+                    stack[top] = w * WIDTH + lanes[i];
+                    stackT[top++] = entries[lanes[i]];
+                }
+                item = w * WIDTH + lanes[0];
+            }
+            while (true) {
+                if (item < 0) {
+                    do {
+                        if (top == 0) return found;
+                        --top;
+                    } while (!(stackT[top] <= Bvh.limit(hit.t)));
+                    item = stack[top];
+                }
+                int count = WideNodes.count(nd, item, SHIFT), link = WideNodes.link(nd, item, SHIFT);
+                if (count == 0) {
+                    w = link;
+                    break;
+                }
+                found |= tree.closestInLeaf(link, count, hit);
+                item = -1;
+            }
+        }
+    }
+
+    @Override
+    public boolean visitHits(Bvh tree, float[] nd, Hit query, double limit, double maxDistance, HitVisitor visitor,
+                             int[] stack) {
+        double ox = query.ox, oy = query.oy, oz = query.oz;
+        double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
+        double[] entries = query.lanes;
+        double bound = Bvh.limit(limit);
+        int top = 0, w = 0;
+        while (true) {
+            long bits = test(nd, w, ox, oy, oz, ix, iy, iz, bound, entries);
+            // In lane order, as the scalar walk meets them: pushed last first.
+            for (long rest = Long.reverse(bits); rest != 0; rest &= rest - 1)
+                stack[top++] = w * WIDTH + 63 - Long.numberOfTrailingZeros(rest);
+            while (true) {
+                if (top == 0) return true;
+                int item = stack[--top];
+                int count = WideNodes.count(nd, item, SHIFT), link = WideNodes.link(nd, item, SHIFT);
+                if (count == 0) {
+                    w = link;
+                    break;
+                }
+                if (!tree.visitInLeaf(link, count, query, maxDistance, visitor)) return false;
+            }
+        }
+    }
+}

@@ -1,0 +1,46 @@
+package geometries;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+/**
+ * Which walk a JVM gets, decided once per JVM (so each case is a JVM of its own): the vector walk
+ * only where {@code jdk.incubator.vector} is readable, the scalar walk otherwise, and
+ * {@code -Draytracer.simd=false} wins over the module.
+ */
+class VectorizationTest {
+    /** Prints this JVM's walk, for the cases below. */
+    public static void main(String[] args) {
+        System.out.println(Bvh.walkDescription());
+    }
+
+    @ParameterizedTest(name = "{0} → {1}")
+    @CsvSource(delimiter = '|', value = {
+            "''|scalar walk (no jdk.incubator.vector)",
+            "--add-modules jdk.incubator.vector|-wide vector walk",
+            "--add-modules jdk.incubator.vector -Draytracer.simd=false|scalar walk (-Draytracer.simd=false)",
+            "-Draytracer.simd=true|scalar walk (no jdk.incubator.vector)"})
+    void walkOfTheJvm(String options, String expected) throws IOException, InterruptedException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Xshare:off", "-cp", System.getProperty("java.class.path")));
+        for (String o : options.split(" ")) if (!o.isEmpty()) command.add(o);
+        command.add(VectorizationTest.class.getName());
+        Process p = new ProcessBuilder(command).redirectErrorStream(false).start();
+        p.getOutputStream().close();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
+        p.getErrorStream().readAllBytes();
+        assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
+        assertThat(p.exitValue()).isZero();
+        if (expected.startsWith("-wide")) assertThat(out).matches("[48]" + expected);
+        else assertThat(out).isEqualTo(expected);
+    }
+}

@@ -1,0 +1,158 @@
+package geometries;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Random;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
+import org.junit.jupiter.params.provider.MethodSource;
+
+import geometries.BvhTest.Scene;
+import geometries.Hits.Visit;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Vector;
+
+/**
+ * The vector walk of wide nodes ({@link VectorWalk}) against the scalar walk of binary nodes, on
+ * trees built alike: the same closest hit (the same geometry, primitive and distance to the bit)
+ * and the same any-hit visits in the same order, for every ray. So the choice of walk can change
+ * a render's speed, never its image. The test JVM reads {@code jdk.incubator.vector} (the pom's
+ * Surefire options); the vector walk is emulated where the CPU's vectors are narrower.
+ */
+@DisplayName("the vector walk answers exactly as the scalar walk")
+class WideWalkTest {
+    private static final int RAYS = 3000;
+
+    private static Bvh scalar(Geometries g) {
+        return Bvh.build(g, 1, 4096, true, null);
+    }
+
+    private static Bvh vector(Geometries g) {
+        assertThat(ModuleLayer.boot().findModule("jdk.incubator.vector"))
+                .as("the tests run with --add-modules jdk.incubator.vector (the pom's test.jvm.args)").isPresent();
+        return Bvh.build(g, 1, 4096, true, VectorWalk.anyCpu());
+    }
+
+    /** The scenes of the tree's own tests, with meshes, lattices and degenerate boxes. */
+    static Stream<Arguments> scenes() {
+        return Stream.concat(BvhTest.searchScenes(), Stream.of(
+                Arguments.of(new Scene("a 60×60 grid mesh", new Geometries(BvhTest.gridMesh(60)), new Point(30, 1, 30), 32)),
+                Arguments.of(ties())));
+    }
+
+    /**
+     * Every tie the rule must settle: each triangle of a 16×16 grid mesh twice (a mesh of the
+     * same triangles, then one Triangle object per triangle), so that every hit has an equal
+     * rival, and rays through the grid's vertices and edges, where neighbours tie too.
+     */
+    static Scene ties() {
+        TriangleMesh flat = BvhTest.gridMesh(16);
+        Geometries g = new Geometries(flat);
+        for (int i = 0; i < flat.triangleCount(); ++i) {
+            int[] v = flat.getTriangleIndices(i);
+            g.add(new Triangle(flat.getVertex(v[0]), flat.getVertex(v[1]), flat.getVertex(v[2])));
+        }
+        return new Scene("a grid mesh and the same triangles again", g, new Point(8, 1, 8), 9);
+    }
+
+    /** Random rays into the scene, and rays straight down through the lattice points and half-points. */
+    private static List<Ray> rays(Scene scene, long seed) {
+        List<Ray> rays = new ArrayList<>(RandomScenes.rays(new Random(seed), RAYS, scene.centre(), scene.half()));
+        Point c = scene.centre();
+        int h = (int) Math.ceil(scene.half());
+        for (int i = -2 * h; i <= 2 * h; ++i)
+            for (int j = -2 * h; j <= 2 * h; j += 3)
+                rays.add(new Ray(new Point(c.getX() + i / 2.0, c.getY() + 50, c.getZ() + j / 2.0), new Vector(0, -1, 0)));
+        return rays;
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    @DisplayName("the same closest hit for every ray: geometry, primitive and distance")
+    void sameClosestHits(Scene scene) {
+        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries());
+        Hit a = new Hit(), b = new Hit();
+        int hits = 0;
+        for (Ray ray : rays(scene, 11)) {
+            boolean fa = s.closestHit(a.setRay(ray).reset(Double.POSITIVE_INFINITY));
+            boolean fb = v.closestHit(b.setRay(ray).reset(Double.POSITIVE_INFINITY));
+            assertThat(fb).as("hit or miss for %s", ray).isEqualTo(fa);
+            if (!fa) continue;
+            ++hits;
+            assertThat(b.geometry).as("geometry for %s", ray).isSameAs(a.geometry);
+            assertThat(b.primitive).as("primitive for %s", ray).isEqualTo(a.primitive);
+            assertThat(Double.doubleToRawLongBits(b.t)).as("distance for %s", ray).isEqualTo(Double.doubleToRawLongBits(a.t));
+        }
+        assertThat(hits).as("rays that hit (the test must not be vacuous)").isGreaterThan(RAYS / 10);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("scenes")
+    @DisplayName("the same any-hit visits in the same order, within random distances")
+    void sameVisits(Scene scene) {
+        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries());
+        Random rnd = new Random(5);
+        int visits = 0;
+        for (Ray ray : rays(scene, 12)) {
+            double max = rnd.nextBoolean() ? Double.POSITIVE_INFINITY : 3 * scene.half() * rnd.nextDouble();
+            List<Visit> expected = Hits.visited(s, ray, max);
+            assertThat(Hits.visited(v, ray, max)).as("visits within %s for %s", max, ray).containsExactlyElementsOf(expected);
+            visits += expected.size();
+        }
+        assertThat(visits).as("visits (the test must not be vacuous)").isGreaterThan(RAYS / 20);
+    }
+
+    @Test
+    @DisplayName("the wide nodes cost 32 bytes a child, beside the binary ones")
+    void wideBytes() {
+        Geometries g = new Geometries(BvhTest.gridMesh(20));
+        long extra = vector(g).indexBytes() - scalar(g).indexBytes();
+        assertThat(extra).as("bytes of the wide nodes").isPositive();
+        assertThat(extra % (8 * VectorWalk.anyCpu().width() * Float.BYTES)).isZero();
+    }
+
+    @Nested
+    @DisplayName("the tie rule")
+    class TieRule {
+        @Test
+        @DisplayName("the scene of ties ties: every hit has a rival at the same distance (what the walks' agreement settles)")
+        void everyHitTies() {
+            Scene scene = ties();
+            Bvh s = scalar(scene.geometries());
+            Hit hit = new Hit();
+            int ties = 0;
+            for (Ray ray : rays(scene, 13)) {
+                if (!s.closestHit(hit.setRay(ray).reset(Double.POSITIVE_INFINITY))) continue;
+                // The triangle's twin, packed alike, is hit at the same distance to the bit.
+                List<Visit> all = Hits.visited(s, ray, hit.t);
+                long rivals = all.stream().filter(x -> x.t() == hit.t).count();
+                assertThat(rivals).as("hits at the winner's distance for %s", ray).isGreaterThanOrEqualTo(2);
+                ++ties;
+            }
+            assertThat(ties).isGreaterThan(RAYS / 10);
+        }
+
+        @Test
+        @DisplayName("a hit found before the walk wins a tie against the tree")
+        void earlierHitWins() {
+            Triangle t = new Triangle(new Point(0, 0, 0), new Point(4, 0, 0), new Point(0, 0, 4));
+            Triangle twin = new Triangle(new Point(0, 0, 0), new Point(4, 0, 0), new Point(0, 0, 4));
+            Geometries g = new Geometries(twin);
+            for (Bvh tree : List.of(scalar(g), vector(g))) {
+                Hit hit = new Hit().setRay(new Ray(new Point(1, 5, 1), new Vector(0, -1, 0)));
+                hit.reset(Double.POSITIVE_INFINITY);
+                assertThat(t.closestHit(hit)).isTrue();
+                assertThat(tree.closestHit(hit)).as("the tree finds nothing nearer").isFalse();
+                assertThat(hit.geometry).isSameAs(t);
+            }
+        }
+    }
+}
