@@ -94,6 +94,9 @@ final class VectorWalk implements WideWalk {
         DoubleVector ix = DoubleVector.broadcast(DOUBLES, rix), iy = DoubleVector.broadcast(DOUBLES, riy),
                 iz = DoubleVector.broadcast(DOUBLES, riz);
         int at = WideNodes.at(w, WIDTH);
+        // The three axes written out: split into per-axis methods, the walk ran 1.2-1.4x slower
+        // (measured; the compiler stopped inlining them part of the time, and vectors crossing
+        // a call that is not inlined are boxed).
         DoubleVector t0 = ZERO, t1 = DoubleVector.broadcast(DOUBLES, limit);
         DoubleVector a = bound(nd, WideNodes.bound(at, MIN_X, WIDTH)).sub(ox).mul(ix), b = bound(nd, WideNodes.bound(at, MAX_X, WIDTH)).sub(ox).mul(ix);
         VectorMask<Double> swap = a.compare(VectorOperators.GT, b);
