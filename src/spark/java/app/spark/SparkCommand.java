@@ -55,7 +55,7 @@ final class SparkCommand {
     /** As {@link #run(SparkRequest, PrintStream, PrintStream, PrintStream)}, with the tests' fault injection. */
     static int run(SparkRequest request, TileProbe probe, PrintStream progress, PrintStream out, PrintStream err) {
         long start = System.nanoTime();
-        QuietLog.unlessAsked(); // first: a bad input's exit must not be followed by Spark's shutdown lines
+        boolean quiet = QuietLog.unlessAsked(); // first: a bad input's exit must not be followed by Spark's shutdown lines
         List<SparkFrame> frames = new ArrayList<>();
         Map<Path, String> outputs = new HashMap<>();
         for (Path scene : request.scenes()) {
@@ -93,6 +93,7 @@ final class SparkCommand {
                     + "give a master URL such as --spark local[2], or " + SparkRunner.HOW_TO_RUN);
             return SparkEntry.BAD_INPUT;
         }
+        QuietLog.onExecutors(conf, quiet);
         String master = conf.get("spark.master");
         if (!runsInThisJvm(master) && !conf.contains("spark.jars")) {
             // Outside spark-submit nothing ships this program's classes to a cluster's executors,
