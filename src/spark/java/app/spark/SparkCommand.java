@@ -68,6 +68,14 @@ final class SparkCommand {
             } catch (IOException e) {
                 err.println(Messages.visible(Messages.cannotReadScene(scene, e)));
                 return SparkEntry.BAD_INPUT;
+            } catch (OutOfMemoryError e) { // a mesh that does not fit the driver's heap: the reader named it
+                String named = e.getMessage();
+                long max = Runtime.getRuntime().maxMemory();
+                err.println("raytracer: " + (named != null && named.startsWith("the OBJ file ") ? Messages.visible(named)
+                        : "not enough memory to read " + Messages.visible(scene.toString()) + " on the driver"
+                        + (max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB there")
+                        + " (give the driver more memory with spark-submit --driver-memory, or -Xmx for a local master)"));
+                return 1;
             }
             try {
                 frame = frame.withSettings(request.settings().apply(frame.settings()));

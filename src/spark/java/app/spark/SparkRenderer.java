@@ -446,7 +446,6 @@ public final class SparkRenderer {
         return groups;
     }
 
-    /** The first line of an exception's message (Spark's carry a stack trace), or its class. */
     /** @return the job's images and the memory they hold on the driver, as "11000x11000, 462 MB" */
     static String imageSizes(List<SparkFrame> frames) {
         long bytes = 0;
@@ -484,6 +483,7 @@ public final class SparkRenderer {
                 + " it smaller)";
     }
 
+    /** The first line of an exception's message (Spark's carry a stack trace), or its class. */
     static String firstLine(Throwable e) {
         String m = e.getMessage();
         if (m == null || m.isBlank()) return e.getClass().getSimpleName();
