@@ -140,6 +140,26 @@ class SparkSubmitTest {
     }
 
     /**
+     * The issue's case: an image that fits a 512 MB driver's heap (462 MB) but not beside its
+     * 29,584 tasks; before, Spark's "Task serialization failed: java.lang.OutOfMemoryError" with
+     * 64 frames, later our one line after about 11 s; now refused before the image is allocated.
+     */
+    @Test
+    @DisplayName("--driver-memory 512m, teapot 11000²: exit 1, one line naming the image, the tasks, the limit and --driver-memory")
+    void driverMemory() throws Exception {
+        Path png = dir.resolve("huge.png");
+        SparkInstallation.Run r = submit(master.url, List.of(), "--spark", "submit", "scenes/teapot.xml", "--width", "11000",
+                "--height", "11000", "-o", png.toString());
+        assertThat(r.exitCode()).as(String.join("\n", r.err())).isEqualTo(1);
+        assertThat(driverLines(r)).hasSize(1);
+        assertThat(driverLines(r).get(0)).matches("raytracer: failed on Spark: spark render teapot: the driver cannot hold the"
+                + " job: its images \\(11000x11000, 462 MB\\) and 29584 tasks \\(about 48 MB\\) need about 511 MB; Java may use"
+                + " at most \\d+ MB here, of which about \\d+ MB were free \\(give the driver more memory with spark-submit"
+                + " --driver-memory, or -Xmx for a local master; or render it smaller\\)");
+        assertThat(png).doesNotExist();
+    }
+
+    /**
      * Item 4 of issue 41: on 66cde8e, with 1ms (or 0s) the watch fired before the job was
      * submitted, and the job then waited for executors without end (spark-submit still running
      * after 5 minutes; the line came out only when the process was killed). Now the watch is armed

@@ -235,11 +235,13 @@ public final class SparkRenderer {
             broadcastBytes += f.frame().files().size();
         }
         String label = "spark render " + (frames.size() == 1 ? frames.get(0).settings().imageName() : frames.size() + " frames");
-        // Before anything starts: the results must pass Spark's limit, and the images fit the driver.
+        List<List<Tile>> groups = groups(tiles, partitions == 0 ? tiles.size() : Math.min(partitions, tiles.size()));
+        // Before anything starts: the results must pass Spark's limit, and the images and the
+        // job's tasks fit the driver.
         requireResultSize(label, frames, spark.sc().getConf().getSizeAsBytes(MAX_RESULT_SIZE, "1g"));
+        requireDriverMemory(label, frames, groups.size(), Runtime.getRuntime().maxMemory(), live(frames, groups.size()));
         Assembly assembly = new Assembly(allocate(label, frames), tiles.size());
         Progress progress = new Progress(label, tiles.size(), "tiles", progressStep, out);
-        List<List<Tile>> groups = groups(tiles, partitions == 0 ? tiles.size() : Math.min(partitions, tiles.size()));
         JobMonitor monitor = new JobMonitor("raytracer-" + UUID.randomUUID(),
                 groups.stream().mapToInt(List::size).toArray(), progress);
 
@@ -276,6 +278,63 @@ public final class SparkRenderer {
         throw new SparkRenderException(label + ": the job's results are " + (bytes + mb - 1) / mb + " MB of pixels, more than "
                 + MAX_RESULT_SIZE + " (" + limit / mb + " MB) lets the driver receive: raise it (spark-submit --conf "
                 + MAX_RESULT_SIZE + "=" + ((bytes + gb - 1) / gb + 1) + "g, or 0 for no limit) or render it smaller", null);
+    }
+
+    /**
+     * What the driver holds for each task of a job, measured: the task, its partition and tiles,
+     * its serialized form while it is sent, and what Spark keeps of it once done (its TaskInfo,
+     * the status store's record). Measured in local[1] with the UI on (as spark-submit has it),
+     * the heap after full collections while the job's last task ran, less the images: 4,886 KB at
+     * 2,500 tasks, 16,872 KB at 10,000, 36,907 KB at 22,500, that is 1,641 to 1,675 bytes a task
+     * and about 0.8 MB besides; the pixels add nothing beyond the images' 4 bytes (2,500 tasks of
+     * 64² pixels held 267 KB more than 2,500 of 16², 0.03 bytes a pixel). At the first task it is
+     * about 530 bytes a task: what Spark keeps of a finished task is most of it. BENCHMARKS.md,
+     * "Spark: the driver's memory per task", has the figures and how they were taken.
+     */
+    static final long BYTES_PER_TASK = 1700;
+    /** What a job holds on the driver besides its images and tasks (measured 0.8 MB, above), rounded up. */
+    static final long HEADROOM_BYTES = 1L << 20;
+
+    /** @return the bytes a job of {@code frames} in {@code tasks} tasks needs on the driver: its images, its tasks and the headroom */
+    static long driverBytesNeeded(List<SparkFrame> frames, int tasks) {
+        long bytes = HEADROOM_BYTES + tasks * BYTES_PER_TASK;
+        for (SparkFrame f : frames) bytes += ImageWriter.bytesNeeded(f.settings().width(), f.settings().height());
+        return bytes;
+    }
+
+    /**
+     * Refuses, before the images are allocated and any task exists, a job the driver cannot hold
+     * (a 462 MB image on a 512 MB driver: Spark's "Task serialization failed:
+     * java.lang.OutOfMemoryError" after the image was allocated, before).
+     *
+     * @param max  the driver's heap limit ({@link Runtime#maxMemory()}; {@link Long#MAX_VALUE}: none)
+     * @param live the bytes the driver holds already (Spark's own included)
+     * @throws SparkRenderException naming the images, the tasks, the memory needed, the limit, what
+     *                              was free and --driver-memory
+     */
+    static void requireDriverMemory(String label, List<SparkFrame> frames, int tasks, long max, long live) {
+        long needed = driverBytesNeeded(frames, tasks);
+        if (max == Long.MAX_VALUE || needed <= max - live) return;
+        long mb = 1 << 20;
+        throw new SparkRenderException(label + ": the driver cannot hold the job: its images (" + imageSizes(frames)
+                + ") and " + tasks + " task" + (tasks == 1 ? "" : "s") + " (about " + (tasks * BYTES_PER_TASK + mb - 1) / mb
+                + " MB) need about " + (needed + mb - 1) / mb + " MB; Java may use at most "
+                + max / mb + " MB here, of which about " + Math.max(0, max - live) / mb + " MB were free (give the driver"
+                + " more memory with spark-submit --driver-memory, or -Xmx for a local master; or render it smaller)", null);
+    }
+
+    /**
+     * The bytes the driver holds now, as far as a job needing {@link #driverBytesNeeded} must
+     * know: what is in use, and when that leaves too little, what is in use after one full
+     * collection (garbage counts as in use until then; a collection costs a fraction of a second,
+     * against a job that fails after the cluster rendered).
+     */
+    private static long live(List<SparkFrame> frames, int tasks) {
+        Runtime runtime = Runtime.getRuntime();
+        long used = runtime.totalMemory() - runtime.freeMemory();
+        if (runtime.maxMemory() == Long.MAX_VALUE || driverBytesNeeded(frames, tasks) <= runtime.maxMemory() - used) return used;
+        System.gc(); // only before refusing a job for lack of memory
+        return runtime.totalMemory() - runtime.freeMemory();
     }
 
     /**
