@@ -47,6 +47,12 @@ class DriverMemoryTest {
                 "64x64, 1 MB", 512 * MB)).startsWith("the driver ran out of memory during the job beside the job's images (64x64, 1 MB)");
         assertThat(SparkRenderer.driverOutOfMemory(new IllegalStateException("Task 0 failed 4 times"), "64x64, 1 MB", 512 * MB))
                 .isNull();
+        // an executor's own lack of memory, its trace in the job's message: the executors' option, not the driver's
+        assertThat(SparkRenderer.driverOutOfMemory(new RuntimeException("Job aborted due to stage failure: Task 3 in stage 0.0"
+                + " failed 4 times, most recent failure: Lost task 3.3 in stage 0.0 (TID 7) (127.0.0.1 executor 0):"
+                + " java.lang.OutOfMemoryError: Java heap space\n\tat app.spark.FrameSet.render"), "64x64, 1 MB", 512 * MB))
+                .isEqualTo("an executor ran out of memory rendering the job's tiles (give the executors more memory with"
+                        + " spark-submit --executor-memory, or -Xmx for a local master; or render it smaller)");
     }
 
     @Test

@@ -9,6 +9,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Objects;
 import java.util.UUID;
+import java.util.regex.Pattern;
 
 import org.apache.spark.TaskContext;
 import org.apache.spark.api.java.JavaRDD;
@@ -519,15 +520,20 @@ public final class SparkRenderer {
         return sizes + ", " + (bytes + mb - 1) / mb + " MB";
     }
 
+    /** How Spark's job failure names a task that failed on an executor. */
+    private static final Pattern TASK_FAILED = Pattern.compile("Lost task|failed \\d+ times?, most recent failure");
+
     /**
      * The one line for a job that failed because the driver ran out of memory (Spark reports it
      * as the job's failure, with the error's trace in its message: a task that could not be
-     * serialized beside the job's images, say), or null for another failure.
+     * serialized beside the job's images, say), or an executor did (a task that failed on it with
+     * the error), or null for another failure.
      *
      * @param e      the job's failure
      * @param images {@link #imageSizes}
      * @param max    the driver's heap limit ({@link Runtime#maxMemory()})
-     * @return the reason, naming the images, the limit and --driver-memory; null when the failure was not a lack of memory
+     * @return the reason, naming the images, the limit and --driver-memory (an executor's:
+     *         --executor-memory); null when the failure was not a lack of memory
      */
     static String driverOutOfMemory(Throwable e, String images, long max) {
         boolean oom = false;
@@ -535,6 +541,11 @@ public final class SparkRenderer {
             oom = t instanceof OutOfMemoryError || (t.getMessage() != null && t.getMessage().contains("java.lang.OutOfMemoryError"));
         if (!oom) return null;
         String message = e.getMessage() == null ? "" : e.getMessage();
+        // A task that failed on an executor carries the executor's error in the job's message
+        // too: that lack of memory was the executor's, and the driver's memory would not help.
+        if (!message.contains("Task serialization failed") && TASK_FAILED.matcher(message).find())
+            return "an executor ran out of memory rendering the job's tiles (give the executors more memory with"
+                    + " spark-submit --executor-memory, or -Xmx for a local master; or render it smaller)";
         return "the driver ran out of memory " + (message.contains("Task serialization failed") ? "serializing the job's tasks"
                 : "during the job") + " beside the job's images (" + images + ")"
                 + (max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB there")
