@@ -8,7 +8,9 @@
 #
 # Needs target/raytracer.jar of a build with Spark (mvn -Pspark package) and JDK 17 or 21. Prints one
 # line per case: its exit code, stdout and stderr line counts, and stderr's lines other than that
-# warning; exits 1 when a case prints more on stderr than its own line.
+# warning, and for the render the executor's stderr file; exits 1 when a case prints more on stderr
+# than its own line, or that file holds more than the worker's header and the warning.
+# app.spark.SparkSubmitTest checks the same in mvn verify (RAYTRACER_SPARK_HOME; README, "Spark").
 set -euo pipefail
 cd "$(dirname "$0")/.."
 venv=${1:-/tmp/raytracer-pyspark}
@@ -41,6 +43,13 @@ run() { # NAME EXPECTED_EXIT ARGS...
 }
 run "teapot 100 tiles" 0 --class app.cli.Main target/raytracer.jar --spark submit scenes/teapot.xml \
     --width 640 --height 640 -o "$work/teapot.png"
+# The executor's own stderr, a file the worker keeps: its 3-line header (the command, a rule, a
+# blank line) and the JVM's warning, no line of Spark's (371 lines before the executors were quiet).
+for f in "$work"/work/*/*/stderr; do
+    extra=$(tail -n +4 "$f" | grep -vc '^WARNING: Using incubator modules' || true)
+    echo "    executor ${f#"$work"/work/}: $(wc -l < "$f") lines, $extra beyond the worker's header and the JVM's warning"
+    if [ "$extra" -gt 0 ]; then status=1; fi
+done
 run "bad executorTimeout" 2 --conf spark.raytracer.executorTimeout=abc --class app.cli.Main target/raytracer.jar \
     --spark submit scenes/teapot.xml -o "$work/x.png"
 kill $worker; wait $worker 2>/dev/null || true

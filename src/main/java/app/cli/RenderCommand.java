@@ -226,8 +226,11 @@ public final class RenderCommand implements Callable<Integer> {
             err.println(Messages.visible(Messages.cannotReadScene(scene, e)));
             return BAD_INPUT;
         } catch (OutOfMemoryError e) {
-            // Meshes within the size limits can still outgrow a small heap: one line, at once.
-            err.println(NAME + ": not enough memory to load " + scene + maxMemory() + " (give Java more memory with -Xmx)");
+            // Meshes within the size limits can still outgrow a small heap: one line, at once; the
+            // OBJ reader's names the file, its size and the triangles read.
+            err.println(named(e) ? NAME + ": " + Messages.visible(e.getMessage())
+                    : NAME + ": not enough memory to load " + Messages.visible(String.valueOf(scene)) + maxMemory()
+                    + " (give Java more memory with -Xmx)");
             return FAILURE;
         }
         RenderSettings settings = override(job.settings());
@@ -412,20 +415,28 @@ public final class RenderCommand implements Callable<Integer> {
                 + " (render it smaller with --width or --height, or give Java more memory with -Xmx)";
     }
 
-    /** "; Java may use at most N MB here", or nothing when the JVM states no limit. */
     /**
      * The one line for an {@code OutOfMemoryError} while rendering or writing: the library's own
      * message when it named what needed the memory (the BVH, an image), else what was being done,
      * the limit and the option that raises it.
      */
     static String outOfMemory(OutOfMemoryError e, String doing) {
-        String message = e.getMessage();
-        if (message != null && (message.startsWith("the BVH ") || message.startsWith("image ")))
-            return NAME + ": " + Messages.visible(message);
+        if (named(e)) return NAME + ": " + Messages.visible(e.getMessage());
         return NAME + ": not enough memory to " + Messages.visible(doing) + maxMemory()
                 + " (give Java more memory with -Xmx, or render it smaller)";
     }
 
+    /**
+     * Whether the library named what needed the memory (its size, the limit and the option) in
+     * the error's one-line message: the BVH's build, an image, an OBJ file.
+     */
+    static boolean named(OutOfMemoryError e) {
+        String message = e.getMessage();
+        return message != null && !message.contains("\n")
+                && (message.startsWith("the BVH ") || message.startsWith("image ") || message.startsWith("the OBJ file "));
+    }
+
+    /** "; Java may use at most N MB here", or nothing when the JVM states no limit. */
     private static String maxMemory() {
         long max = Runtime.getRuntime().maxMemory();
         return max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB here";

@@ -106,6 +106,8 @@ public final class ObjReader {
      * @return the mesh, smooth-shaded when every face corner has a normal, else flat
      * @throws ObjFormatException when the content is malformed
      * @throws IOException        when the file cannot be read
+     * @throws OutOfMemoryError   when the mesh does not fit the heap, naming the file, its size,
+     *                            the triangles read, the limit and {@code -Xmx}
      */
     public static TriangleMesh read(Path file) throws IOException {
         Objects.requireNonNull(file, "file");
@@ -120,7 +122,7 @@ public final class ObjReader {
             throw new ObjFormatException(file.toString(), 0, "the file has " + size + " bytes, more than the limit of "
                     + Limits.MAX_OBJ_BYTES + " bytes");
         try (Reader reader = new InputStreamReader(Files.newInputStream(file), StandardCharsets.UTF_8)) {
-            return read(reader, file.toString());
+            return read(reader, file.toString(), size);
         }
     }
 
@@ -132,19 +134,95 @@ public final class ObjReader {
      * @return the mesh, smooth-shaded when every face corner has a normal, else flat
      * @throws ObjFormatException when the content is malformed
      * @throws IOException        when {@code reader} fails
+     * @throws OutOfMemoryError   when the mesh does not fit the heap, naming the source, the
+     *                            triangles read, the limit and {@code -Xmx}
      */
     public static TriangleMesh read(Reader reader, String sourceName) throws IOException {
+        return read(reader, sourceName, -1);
+    }
+
+    /**
+     * As {@link #read(Reader, String)}, knowing the text's size for the message of a lack of memory.
+     *
+     * @param reader     the OBJ text
+     * @param sourceName what messages call the text (a file name)
+     * @param bytes      the text's size in bytes (the file's), or -1 when unknown
+     * @return the mesh
+     * @throws ObjFormatException when the content is malformed
+     * @throws IOException        when {@code reader} fails
+     * @throws OutOfMemoryError naming the source, its size, what was read, the limit and {@code -Xmx}
+     *                          ({@link #memoryMessage}), when the mesh does not fit the heap
+     */
+    static TriangleMesh read(Reader reader, String sourceName, long bytes) throws IOException {
         Objects.requireNonNull(reader, "reader");
         Objects.requireNonNull(sourceName, "source name");
         ObjReader parser = new ObjReader(sourceName);
         LineReader lines = new LineReader(reader, Limits.MAX_OBJ_LINE_LENGTH, Limits.MAX_OBJ_BYTES);
+        boolean whole = false;
         try {
             for (String text = lines.readLine(); text != null; text = lines.readLine()) parser.parseLine(text);
+            whole = true;
+            return parser.toMesh();
         } catch (LineReader.LimitExceededException e) {
             ++parser.lineNumber; // the line being read
             throw parser.error(e.getMessage());
+        } catch (OutOfMemoryError e) {
+            // A file within the size limit can still outgrow a small heap (a 147 MB, 4.5-million-
+            // triangle file needs about 600 MB to read). What was read is let go first, so that the
+            // message can be made; the error then says which file, how far, and how to give more.
+            long triangles = parser.cornerCount / 3, vertices = parser.vertexCount;
+            parser.release();
+            throw outOfMemory(e, sourceName, bytes, triangles, vertices, whole);
         }
-        return parser.toMesh();
+    }
+
+    /**
+     * The error for an OBJ text that did not fit the heap (arguments as {@link #memoryMessage}).
+     *
+     * @param cause the JVM's error
+     * @return an error whose message is {@link #memoryMessage} with this JVM's limit, caused by {@code cause}
+     */
+    static OutOfMemoryError outOfMemory(OutOfMemoryError cause, String source, long bytes, long triangles, long vertices,
+                                        boolean whole) {
+        OutOfMemoryError named = new OutOfMemoryError(memoryMessage(source, bytes, triangles, vertices, whole,
+                Runtime.getRuntime().maxMemory()));
+        named.initCause(cause);
+        return named;
+    }
+
+    /** Lets go of what has been read (after a lack of memory). */
+    private void release() {
+        positions = null;
+        normals = null;
+        cornerVertex = null;
+        cornerNormal = null;
+        line = null;
+    }
+
+    /**
+     * The one line of an OBJ text that did not fit the heap: {@code the OBJ file meshes/big.obj
+     * (147 MB) did not fit in memory: 2104533 triangles and 1052270 vertices read when Java ran
+     * out; Java may use at most 900 MB here (give Java more memory with -Xmx; on Spark's driver,
+     * spark-submit --driver-memory)}. Sizes below 10 MB have a decimal.
+     *
+     * @param source    the file as named to the reader
+     * @param bytes     its size in bytes, or -1 when unknown
+     * @param triangles the triangles read before memory ran out
+     * @param vertices  the vertices read before memory ran out
+     * @param whole     whether the whole text had been read (the mesh was being made)
+     * @param max       the heap's limit ({@link Runtime#maxMemory()}; {@link Long#MAX_VALUE}: none)
+     * @return the line, starting with "the OBJ file "
+     */
+    static String memoryMessage(String source, long bytes, long triangles, long vertices, boolean whole, long max) {
+        long mb = 1 << 20;
+        String size = bytes < 0 ? "" : bytes < 10 * mb ? String.format(Locale.ROOT, " (%.1f MB)", (double) bytes / mb)
+                : " (" + (bytes + mb / 2) / mb + " MB)";
+        String read = whole ? "read whole (" + triangles + " triangles, " + vertices + " vertices), Java ran out making the mesh"
+                : triangles == 0 && vertices == 0 ? "Java ran out before a vertex was read"
+                : triangles + " triangles and " + vertices + " vertices read when Java ran out";
+        return "the OBJ file " + Messages.visible(source) + size + " did not fit in memory: " + read
+                + (max == Long.MAX_VALUE ? "" : "; Java may use at most " + max / mb + " MB here")
+                + " (give Java more memory with -Xmx; on Spark's driver, spark-submit --driver-memory)";
     }
 
     /**

@@ -424,9 +424,17 @@ public final class XmlSceneReader {
                 bytes = files.readAllBytes(obj, Limits.MAX_OBJ_BYTES);
             } catch (FileSource.RefusedFileException refused) {
                 throw new ObjFormatException(obj.toString(), 0, refused.reason());
+            } catch (OutOfMemoryError oom) { // the file's bytes alone: named as the reader names its own
+                long size;
+                try {
+                    size = Files.size(obj);
+                } catch (IOException unknown) {
+                    size = -1; // the message goes without the size
+                }
+                throw ObjReader.outOfMemory(oom, obj.toString(), size, 0, 0, false);
             }
             TriangleMesh mesh = ObjReader.read(new InputStreamReader(new ByteArrayInputStream(bytes), StandardCharsets.UTF_8),
-                    obj.toString());
+                    obj.toString(), bytes.length);
             requireWithinRange(mesh.getBoundingBox(), obj);
             return mesh;
         } catch (ObjFormatException ex) {

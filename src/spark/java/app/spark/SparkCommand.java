@@ -55,7 +55,7 @@ final class SparkCommand {
     /** As {@link #run(SparkRequest, PrintStream, PrintStream, PrintStream)}, with the tests' fault injection. */
     static int run(SparkRequest request, TileProbe probe, PrintStream progress, PrintStream out, PrintStream err) {
         long start = System.nanoTime();
-        QuietLog.unlessAsked(); // first: a bad input's exit must not be followed by Spark's shutdown lines
+        boolean quiet = QuietLog.unlessAsked(); // first: a bad input's exit must not be followed by Spark's shutdown lines
         List<SparkFrame> frames = new ArrayList<>();
         Map<Path, String> outputs = new HashMap<>();
         for (Path scene : request.scenes()) {
@@ -68,6 +68,14 @@ final class SparkCommand {
             } catch (IOException e) {
                 err.println(Messages.visible(Messages.cannotReadScene(scene, e)));
                 return SparkEntry.BAD_INPUT;
+            } catch (OutOfMemoryError e) { // a mesh that does not fit the driver's heap: the reader named it
+                String named = e.getMessage();
+                long max = Runtime.getRuntime().maxMemory();
+                err.println("raytracer: " + (named != null && named.startsWith("the OBJ file ") ? Messages.visible(named)
+                        : "not enough memory to read " + Messages.visible(scene.toString()) + " on the driver"
+                        + (max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB there")
+                        + " (give the driver more memory with spark-submit --driver-memory, or -Xmx for a local master)"));
+                return 1;
             }
             try {
                 frame = frame.withSettings(request.settings().apply(frame.settings()));
@@ -93,6 +101,7 @@ final class SparkCommand {
                     + "give a master URL such as --spark local[2], or " + SparkRunner.HOW_TO_RUN);
             return SparkEntry.BAD_INPUT;
         }
+        QuietLog.onExecutors(conf, quiet);
         String master = conf.get("spark.master");
         if (!runsInThisJvm(master) && !conf.contains("spark.jars")) {
             // Outside spark-submit nothing ships this program's classes to a cluster's executors,

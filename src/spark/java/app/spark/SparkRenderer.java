@@ -9,6 +9,7 @@ import java.util.Arrays;
 import java.util.List;
 import java.util.Objects;
 import java.util.UUID;
+import java.util.regex.Pattern;
 
 import org.apache.spark.TaskContext;
 import org.apache.spark.api.java.JavaRDD;
@@ -235,11 +236,13 @@ public final class SparkRenderer {
             broadcastBytes += f.frame().files().size();
         }
         String label = "spark render " + (frames.size() == 1 ? frames.get(0).settings().imageName() : frames.size() + " frames");
-        // Before anything starts: the results must pass Spark's limit, and the images fit the driver.
+        List<List<Tile>> groups = groups(tiles, partitions == 0 ? tiles.size() : Math.min(partitions, tiles.size()));
+        // Before anything starts: the results must pass Spark's limit, and the images and the
+        // job's tasks fit the driver.
         requireResultSize(label, frames, spark.sc().getConf().getSizeAsBytes(MAX_RESULT_SIZE, "1g"));
+        requireDriverMemory(label, frames, groups.size(), Runtime.getRuntime().maxMemory(), live(frames, groups.size()));
         Assembly assembly = new Assembly(allocate(label, frames), tiles.size());
         Progress progress = new Progress(label, tiles.size(), "tiles", progressStep, out);
-        List<List<Tile>> groups = groups(tiles, partitions == 0 ? tiles.size() : Math.min(partitions, tiles.size()));
         JobMonitor monitor = new JobMonitor("raytracer-" + UUID.randomUUID(),
                 groups.stream().mapToInt(List::size).toArray(), progress);
 
@@ -276,6 +279,63 @@ public final class SparkRenderer {
         throw new SparkRenderException(label + ": the job's results are " + (bytes + mb - 1) / mb + " MB of pixels, more than "
                 + MAX_RESULT_SIZE + " (" + limit / mb + " MB) lets the driver receive: raise it (spark-submit --conf "
                 + MAX_RESULT_SIZE + "=" + ((bytes + gb - 1) / gb + 1) + "g, or 0 for no limit) or render it smaller", null);
+    }
+
+    /**
+     * What the driver holds for each task of a job, measured: the task, its partition and tiles,
+     * its serialized form while it is sent, and what Spark keeps of it once done (its TaskInfo,
+     * the status store's record). Measured in local[1] with the UI on (as spark-submit has it),
+     * the heap after full collections while the job's last task ran, less the images: 4,886 KB at
+     * 2,500 tasks, 16,872 KB at 10,000, 36,907 KB at 22,500, that is 1,641 to 1,675 bytes a task
+     * and about 0.8 MB besides; the pixels add nothing beyond the images' 4 bytes (2,500 tasks of
+     * 64² pixels held 267 KB more than 2,500 of 16², 0.03 bytes a pixel). At the first task it is
+     * about 530 bytes a task: what Spark keeps of a finished task is most of it. BENCHMARKS.md,
+     * "Spark: the driver's memory per task", has the figures and how they were taken.
+     */
+    static final long BYTES_PER_TASK = 1700;
+    /** What a job holds on the driver besides its images and tasks (measured 0.8 MB, above), rounded up. */
+    static final long HEADROOM_BYTES = 1L << 20;
+
+    /** @return the bytes a job of {@code frames} in {@code tasks} tasks needs on the driver: its images, its tasks and the headroom */
+    static long driverBytesNeeded(List<SparkFrame> frames, int tasks) {
+        long bytes = HEADROOM_BYTES + tasks * BYTES_PER_TASK;
+        for (SparkFrame f : frames) bytes += ImageWriter.bytesNeeded(f.settings().width(), f.settings().height());
+        return bytes;
+    }
+
+    /**
+     * Refuses, before the images are allocated and any task exists, a job the driver cannot hold
+     * (a 462 MB image on a 512 MB driver: Spark's "Task serialization failed:
+     * java.lang.OutOfMemoryError" after the image was allocated, before).
+     *
+     * @param max  the driver's heap limit ({@link Runtime#maxMemory()}; {@link Long#MAX_VALUE}: none)
+     * @param live the bytes the driver holds already (Spark's own included)
+     * @throws SparkRenderException naming the images, the tasks, the memory needed, the limit, what
+     *                              was free and --driver-memory
+     */
+    static void requireDriverMemory(String label, List<SparkFrame> frames, int tasks, long max, long live) {
+        long needed = driverBytesNeeded(frames, tasks);
+        if (max == Long.MAX_VALUE || needed <= max - live) return;
+        long mb = 1 << 20;
+        throw new SparkRenderException(label + ": the driver cannot hold the job: its images (" + imageSizes(frames)
+                + ") and " + tasks + " task" + (tasks == 1 ? "" : "s") + " (about " + (tasks * BYTES_PER_TASK + mb - 1) / mb
+                + " MB) need about " + (needed + mb - 1) / mb + " MB; Java may use at most "
+                + max / mb + " MB here, of which about " + Math.max(0, max - live) / mb + " MB were free (give the driver"
+                + " more memory with spark-submit --driver-memory, or -Xmx for a local master; or render it smaller)", null);
+    }
+
+    /**
+     * The bytes the driver holds now, as far as a job needing {@link #driverBytesNeeded} must
+     * know: what is in use, and when that leaves too little, what is in use after one full
+     * collection (garbage counts as in use until then; a collection costs a fraction of a second,
+     * against a job that fails after the cluster rendered).
+     */
+    private static long live(List<SparkFrame> frames, int tasks) {
+        Runtime runtime = Runtime.getRuntime();
+        long used = runtime.totalMemory() - runtime.freeMemory();
+        if (runtime.maxMemory() == Long.MAX_VALUE || driverBytesNeeded(frames, tasks) <= runtime.maxMemory() - used) return used;
+        System.gc(); // only before refusing a job for lack of memory
+        return runtime.totalMemory() - runtime.freeMemory();
     }
 
     /**
@@ -446,7 +506,6 @@ public final class SparkRenderer {
         return groups;
     }
 
-    /** The first line of an exception's message (Spark's carry a stack trace), or its class. */
     /** @return the job's images and the memory they hold on the driver, as "11000x11000, 462 MB" */
     static String imageSizes(List<SparkFrame> frames) {
         long bytes = 0;
@@ -461,15 +520,20 @@ public final class SparkRenderer {
         return sizes + ", " + (bytes + mb - 1) / mb + " MB";
     }
 
+    /** How Spark's job failure names a task that failed on an executor. */
+    private static final Pattern TASK_FAILED = Pattern.compile("Lost task|failed \\d+ times?, most recent failure");
+
     /**
      * The one line for a job that failed because the driver ran out of memory (Spark reports it
      * as the job's failure, with the error's trace in its message: a task that could not be
-     * serialized beside the job's images, say), or null for another failure.
+     * serialized beside the job's images, say), or an executor did (a task that failed on it with
+     * the error), or null for another failure.
      *
      * @param e      the job's failure
      * @param images {@link #imageSizes}
      * @param max    the driver's heap limit ({@link Runtime#maxMemory()})
-     * @return the reason, naming the images, the limit and --driver-memory; null when the failure was not a lack of memory
+     * @return the reason, naming the images, the limit and --driver-memory (an executor's:
+     *         --executor-memory); null when the failure was not a lack of memory
      */
     static String driverOutOfMemory(Throwable e, String images, long max) {
         boolean oom = false;
@@ -477,6 +541,11 @@ public final class SparkRenderer {
             oom = t instanceof OutOfMemoryError || (t.getMessage() != null && t.getMessage().contains("java.lang.OutOfMemoryError"));
         if (!oom) return null;
         String message = e.getMessage() == null ? "" : e.getMessage();
+        // A task that failed on an executor carries the executor's error in the job's message
+        // too: that lack of memory was the executor's, and the driver's memory would not help.
+        if (!message.contains("Task serialization failed") && TASK_FAILED.matcher(message).find())
+            return "an executor ran out of memory rendering the job's tiles (give the executors more memory with"
+                    + " spark-submit --executor-memory, or -Xmx for a local master; or render it smaller)";
         return "the driver ran out of memory " + (message.contains("Task serialization failed") ? "serializing the job's tasks"
                 : "during the job") + " beside the job's images (" + images + ")"
                 + (max == Long.MAX_VALUE ? "" : "; Java may use at most " + (max >> 20) + " MB there")
@@ -484,6 +553,7 @@ public final class SparkRenderer {
                 + " it smaller)";
     }
 
+    /** The first line of an exception's message (Spark's carry a stack trace), or its class. */
     static String firstLine(Throwable e) {
         String m = e.getMessage();
         if (m == null || m.isBlank()) return e.getClass().getSimpleName();

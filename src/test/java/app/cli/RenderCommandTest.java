@@ -72,6 +72,10 @@ class RenderCommandTest {
         String bvh = "the BVH over 4500000 primitives needs about 996 MB; Java may use at most 1200 MB here, of which about"
                 + " 900 MB were free (give Java more memory with -Xmx, …)";
         assertThat(RenderCommand.outOfMemory(new OutOfMemoryError(bvh), "render teapot (100x100)")).isEqualTo("raytracer: " + bvh);
+        String obj = "the OBJ file big.obj (147 MB) did not fit in memory: 10 triangles and 30 vertices read when Java ran out;"
+                + " Java may use at most 900 MB here (give Java more memory with -Xmx; …)";
+        assertThat(RenderCommand.outOfMemory(new OutOfMemoryError(obj), "render teapot (100x100)")).isEqualTo("raytracer: " + obj);
+        assertThat(RenderCommand.named(new OutOfMemoryError("Java heap space"))).isFalse();
         assertThat(RenderCommand.outOfMemory(new OutOfMemoryError("Java heap space"), "write images/x.png (100x100)"))
                 .startsWith("raytracer: not enough memory to write images/x.png (100x100)")
                 .endsWith("(give Java more memory with -Xmx, or render it smaller)").doesNotContain("\n");

@@ -179,7 +179,7 @@ class UntrustedInputTest {
         }
 
         @Test
-        @DisplayName("a mesh that does not fit in the heap: exit code 1, one line, at once (a new JVM of 32 MB)")
+        @DisplayName("a mesh that does not fit in the heap: exit code 1, one line naming the file, its size and what was read, at once (a new JVM of 32 MB)")
         void notEnoughMemory() throws Exception {
             StringBuilder obj = new StringBuilder();
             int n = 1_200_000;
@@ -190,8 +190,11 @@ class UntrustedInputTest {
             Run r = Cli.runJava(dir, "-Xmx32m", file.toString(), "-o", dir.resolve("out.png").toString());
             assertThat(r.exitCode()).as(r.err()).isEqualTo(RenderCommand.FAILURE);
             assertThat(r.errLines()).hasSize(1);
-            assertThat(r.errLines().get(0)).matches("raytracer: not enough memory to load " + Pattern.quote(file.toString())
-                    + "; Java may use at most \\d+ MB here \\(give Java more memory with -Xmx\\)");
+            // the file's size (13 MB), how far the reader got, the limit and the option
+            assertThat(r.errLines().get(0)).matches("raytracer: the OBJ file " + Pattern.quote(dir.resolve("big.obj").toString())
+                    + " \\(" + (obj.length() + (1 << 19)) / (1 << 20) + " MB\\) did not fit in memory: (Java ran out before a"
+                    + " vertex was read|0 triangles and \\d+ vertices read when Java ran out); Java may use at most \\d+ MB"
+                    + " here \\(give Java more memory with -Xmx; on Spark's driver, spark-submit --driver-memory\\)");
             assertNothingWritten();
         }
     }

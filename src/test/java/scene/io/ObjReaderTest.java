@@ -347,4 +347,42 @@ class ObjReaderTest {
             assertThat(e).hasMessage("test.obj:" + line + ": " + e.getProblem());
         }
     }
+
+    @Nested
+    @DisplayName("a mesh that does not fit the heap: one line")
+    class OutOfMemory {
+        private static final long MB = 1 << 20;
+
+        @Test
+        @DisplayName("names the file, its size, the triangles and vertices read, the limit and -Xmx")
+        void midway() {
+            assertThat(ObjReader.memoryMessage("meshes/big.obj", 147 * MB + 123, 2_104_533, 1_052_270, false, 900 * MB))
+                    .isEqualTo("the OBJ file meshes/big.obj (147 MB) did not fit in memory: 2104533 triangles and 1052270"
+                            + " vertices read when Java ran out; Java may use at most 900 MB here (give Java more memory"
+                            + " with -Xmx; on Spark's driver, spark-submit --driver-memory)");
+        }
+
+        @Test
+        @DisplayName("read whole, before any vertex, a small file, an unknown size, no limit; a control character escaped")
+        void cases() {
+            assertThat(ObjReader.memoryMessage("a.obj", 5_046_994, 178_802, 90_000, true, 32 * MB))
+                    .startsWith("the OBJ file a.obj (4.8 MB) did not fit in memory: read whole (178802 triangles, 90000"
+                            + " vertices), Java ran out making the mesh; Java may use at most 32 MB here");
+            assertThat(ObjReader.memoryMessage("a.obj", 20 * MB, 0, 0, false, 16 * MB))
+                    .startsWith("the OBJ file a.obj (20 MB) did not fit in memory: Java ran out before a vertex was read;");
+            assertThat(ObjReader.memoryMessage("/models/teapot.obj", -1, 10, 20, false, Long.MAX_VALUE))
+                    .isEqualTo("the OBJ file /models/teapot.obj did not fit in memory: 10 triangles and 20 vertices read when"
+                            + " Java ran out (give Java more memory with -Xmx; on Spark's driver, spark-submit --driver-memory)");
+            assertThat(ObjReader.memoryMessage("a\u009B.obj", 1, 0, 1, false, MB)).startsWith("the OBJ file a\\u009B.obj (0.0 MB)");
+        }
+
+        @Test
+        @DisplayName("the error made from the JVM's: that message, with the JVM's as its cause")
+        void error() {
+            OutOfMemoryError jvm = new OutOfMemoryError("Java heap space");
+            OutOfMemoryError named = ObjReader.outOfMemory(jvm, "a.obj", 3 * MB, 1, 3, false);
+            assertThat(named).hasMessageStartingWith("the OBJ file a.obj (3.0 MB) did not fit in memory: 1 triangles and 3"
+                    + " vertices read when Java ran out").hasCause(jvm);
+        }
+    }
 }
