@@ -139,8 +139,9 @@ public final class Bvh extends Intersectable {
         nodeCount = built.nodes;
         rootBox = built.rootBox;
         depth = built.maxDepth + 1;
-        // A root that is a leaf has no children to test together.
-        boolean wideNodes = walk != null && nodeCount > 1;
+        // A root that is a leaf has no children to test together, and a small tree is walked
+        // faster in scalar code (WideWalk.minPrimitives).
+        boolean wideNodes = walk != null && nodeCount > 1 && prim.length >= walk.minPrimitives();
         this.walk = wideNodes ? walk : null;
         wide = wideNodes ? WideNodes.collapse(node, nodeCount, walk.width()) : null;
     }

@@ -10,7 +10,10 @@ interface WideWalk {
     /** @return children per wide node, as this walk reads them */
     int width();
 
-    /** @return what runs, for the render summary: the width, the vector size and the module */
+    /** @return how many primitives a tree must index to be walked this way (smaller ones keep the scalar walk) */
+    int minPrimitives();
+
+    /** @return what runs, for the render summary: the width and the smallest tree it takes */
     String description();
 
     /**

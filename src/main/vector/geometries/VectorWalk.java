@@ -42,6 +42,18 @@ final class VectorWalk implements WideWalk {
     private static final DoubleVector INFINITY = DoubleVector.broadcast(DOUBLES, Double.POSITIVE_INFINITY);
     /** Whether this JDK compiles {@code VectorMask.toLong} to one instruction (from JDK 18 on). */
     private static final boolean MASK_TO_BITS = Runtime.version().feature() >= 18;
+    /**
+     * The smallest tree worth the wide walk on this JDK. A vector step costs more than the few
+     * scalar box tests of a shallow tree: the renders of the benchmark (interleaved A/B, one
+     * thread) ran slower with the vector walk on a scene of 72 shapes (glossy: 1.08x on JDK 17,
+     * 1.11x on JDK 25) and faster from 133 shapes on JDK 25 (showcase: 0.75-0.92x); on JDK 17,
+     * whose vector code is slower, from about 10^4 triangles (meshes: 1.5-1.9x faster; the teapot
+     * scene of 1,392 shapes on par, the showcase of 133 mixed).
+     */
+    private static final int MIN_PRIMITIVES = Runtime.version().feature() >= 25 ? 128 : 4096;
+
+    /** Primitives a tree must index for this walk to take it. */
+    private final int minPrimitives;
 
     /**
      * The walk for this machine: public for {@link Vectorization}'s reflective construction only.
@@ -50,6 +62,7 @@ final class VectorWalk implements WideWalk {
      *                                       where the Vector API would emulate them, slower than the scalar walk
      */
     public VectorWalk() {
+        minPrimitives = MIN_PRIMITIVES;
         int bits = DoubleVector.SPECIES_PREFERRED.vectorBitSize();
         if (bits < DOUBLES.vectorBitSize())
             throw new UnsupportedOperationException(bits + "-bit vectors");
@@ -57,9 +70,10 @@ final class VectorWalk implements WideWalk {
 
     /** The walk on any CPU, emulated where the vectors are narrower (the same answers): for the tests. */
     private VectorWalk(boolean anyCpu) {
+        minPrimitives = 0;
     }
 
-    /** @return the walk whatever the CPU's vectors, for the tests that it answers as the scalar walk */
+    /** @return the walk whatever the CPU's vectors and the tree's size, for the tests that it answers as the scalar walk */
     static VectorWalk anyCpu() {
         return new VectorWalk(true);
     }
@@ -70,8 +84,13 @@ final class VectorWalk implements WideWalk {
     }
 
     @Override
+    public int minPrimitives() {
+        return minPrimitives;
+    }
+
+    @Override
     public String description() {
-        return WIDTH + "-wide vector walk";
+        return WIDTH + "-wide vector walk (trees of " + minPrimitives + " primitives or more)";
     }
 
     /** The bound {@code at} of the four children, widened to doubles. */

@@ -119,6 +119,20 @@ class WideWalkTest {
         assertThat(extra % (8 * VectorWalk.anyCpu().width() * Float.BYTES)).isZero();
     }
 
+    @Test
+    @DisplayName("a tree smaller than the walk takes keeps binary nodes only (walked in scalar code), a larger one gets wide nodes")
+    void smallTreesStayScalar() {
+        VectorWalk walk = new VectorWalk();
+        int side = (int) Math.ceil(Math.sqrt(walk.minPrimitives() / 2.0)) + 1; // 2·side² triangles ≥ the threshold
+        Geometries big = new Geometries(BvhTest.gridMesh(side));
+        assertThat(Bvh.build(big, 1, 4096, true, walk).indexBytes()).isGreaterThan(scalar(big).indexBytes());
+        if (walk.minPrimitives() > 1) {
+            Geometries small = new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(3, 0, 0), 1),
+                    new Sphere(new Point(6, 0, 0), 1));
+            assertThat(Bvh.build(small, 1, 4096, true, walk).indexBytes()).isEqualTo(scalar(small).indexBytes());
+        }
+    }
+
     @Nested
     @DisplayName("the tie rule")
     class TieRule {
