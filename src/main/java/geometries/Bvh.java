@@ -266,10 +266,7 @@ public final class Bvh extends Intersectable {
             stack = new int[size];
             stackT = new double[size];
         } else {
-            if (hit.stack.length < size) {
-                hit.stack = new int[size];
-                hit.stackT = new double[size];
-            }
+            reserveStack(hit, size);
             stack = hit.stack;
             stackT = hit.stackT;
             hit.walking = true;
@@ -280,6 +277,13 @@ public final class Bvh extends Intersectable {
         } finally {
             if (!nested) hit.walking = false;
         }
+    }
+
+    /** Grows {@code hit}'s walk stacks to {@code size} entries where they are smaller (once per record and tree depth). */
+    private static void reserveStack(Hit hit, int size) {
+        if (hit.stack.length >= size) return;
+        hit.stack = new int[size];
+        hit.stackT = new double[size];
     }
 
     /**
@@ -359,10 +363,13 @@ public final class Bvh extends Intersectable {
      * (exactly one ulp farther) is undone.
      */
     private boolean closestOwn(int k, Hit hit) {
-        if (!(k < hit.order)) {
-            if (!owner[k].closestHit(prim[k], hit)) return false;
-            hit.order = k;
-            return true;
+        // The owner may walk a tree of its own with this record (a user's group), which resets
+        // the order: the current hit's is kept for when the owner finds nothing.
+        int order = hit.order;
+        if (!(k < order)) {
+            boolean found = owner[k].closestHit(prim[k], hit);
+            hit.order = found ? k : order;
+            return found;
         }
         double t = hit.t;
         Geometry g = hit.geometry;
@@ -373,6 +380,7 @@ public final class Bvh extends Intersectable {
             return true;
         }
         hit.set(t, g, p);
+        hit.order = order;
         return false;
     }
 
@@ -390,10 +398,7 @@ public final class Bvh extends Intersectable {
             int size = wide.stackSize();
             // As the closest-hit walk's stack: a walk in progress on this record keeps its own.
             if (query.walking) return walk.visitHits(this, wide.node, query, limit, maxDistance, visitor, new int[size]);
-            if (query.stack.length < size) {
-                query.stack = new int[size];
-                query.stackT = new double[size];
-            }
+            reserveStack(query, size);
             query.walking = true;
             try {
                 return walk.visitHits(this, wide.node, query, limit, maxDistance, visitor, query.stack);

@@ -1,6 +1,7 @@
 package geometries;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -131,6 +132,43 @@ class WideWalkTest {
                     new Sphere(new Point(6, 0, 0), 1));
             assertThat(Bvh.build(small, 1, 4096, true, walk).indexBytes()).isEqualTo(scalar(small).indexBytes());
         }
+    }
+
+    @Test
+    @DisplayName("the vector walk allocates nothing per ray once compiled (AllocationTest's bound: 16 bytes), closest and any hit")
+    void allocatesNothingPerRay() {
+        assumeTrue(java.lang.management.ManagementFactory.getThreadMXBean() instanceof com.sun.management.ThreadMXBean,
+                "this JVM counts no allocation per thread");
+        assumeTrue(jdk.incubator.vector.DoubleVector.SPECIES_PREFERRED.vectorBitSize() >= 256,
+                "vectors narrower than 256 bits are emulated with objects");
+        var threads = (com.sun.management.ThreadMXBean) java.lang.management.ManagementFactory.getThreadMXBean();
+        Scene scene = new Scene("a 60×60 grid mesh", new Geometries(BvhTest.gridMesh(60)), new Point(30, 1, 30), 32);
+        Bvh tree = vector(scene.geometries());
+        List<Ray> rays = rays(scene, 14);
+        double[] rayDoubles = new double[rays.size() * 6];
+        for (int i = 0; i < rays.size(); ++i) {
+            Ray r = rays.get(i);
+            double[] d = { r.getHead().getX(), r.getHead().getY(), r.getHead().getZ(), r.getDirection().getX(),
+                    r.getDirection().getY(), r.getDirection().getZ() };
+            System.arraycopy(d, 0, rayDoubles, i * 6, 6);
+        }
+        Hit hit = new Hit();
+        HitVisitor count = (g, t) -> true;
+        double least = Double.POSITIVE_INFINITY;
+        // Passes until the walk runs compiled (the interpreter makes every vector an object); the
+        // least of the later passes is the compiled walk's.
+        for (int pass = 0; pass < 40; ++pass) {
+            long before = threads.getCurrentThreadAllocatedBytes();
+            for (int i = 0; i < rays.size(); ++i) {
+                int o = i * 6;
+                hit.setRay(rayDoubles[o], rayDoubles[o + 1], rayDoubles[o + 2], rayDoubles[o + 3], rayDoubles[o + 4],
+                        rayDoubles[o + 5]).reset(Double.POSITIVE_INFINITY);
+                tree.closestHit(hit);
+                tree.visitHits(hit, 20, count);
+            }
+            if (pass >= 30) least = Math.min(least, (threads.getCurrentThreadAllocatedBytes() - before) / (double) rays.size());
+        }
+        assertThat(least).as("bytes allocated per ray (a closest-hit and an any-hit query)").isLessThan(16);
     }
 
     @Nested
