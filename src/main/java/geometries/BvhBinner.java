@@ -6,7 +6,7 @@ package geometries;
  * node's range; the cheapest split is then found by sweeping each axis from both ends.
  *
  * <p>A split's cost is {@link #sahCost}, relative to testing the parent's primitives, from the
- * children's {@link #halfArea(double, double, double) half areas}: the one formula of every search, the direct one of a
+ * children's {@link BuildBoxes#halfArea(double, double, double) half areas}: the one formula of every search, the direct one of a
  * two-primitive node included, so that both searches choose the same split.
  */
 final class BvhBinner {
@@ -21,7 +21,9 @@ final class BvhBinner {
     final double[] lowOf = new double[3];
     final double[] extentOf = new double[3];
     private final int[] binCount = new int[3 * BINS];
-    private final double[] binBox = new double[3 * BINS * 6];
+    private final double[] binBox = new double[3 * BINS * BuildBoxes.BOX_SIZE];
+    /** Per bin of the axis being searched: the half area of the bins up to it, and from it on. */
+    private final double[] leftArea = new double[BINS];
     private final double[] rightArea = new double[BINS];
     /** Per axis, the bins {@link #bin} filled, as bits; the search empties them again. */
     private final int[] occupied = new int[3];
@@ -31,12 +33,12 @@ final class BvhBinner {
     int bestAxis;
     /**
      * Per level of this task's recursion, the box and centroid bounds of the two children
-     * split there ({@link BvhBuilder#BOUNDS} doubles each, left then right); grown on demand.
+     * split there ({@link BuildBoxes#BOUNDS} doubles each, left then right); grown on demand.
      */
-    double[] levels = new double[16 * 2 * BvhBuilder.BOUNDS];
+    double[] levels = new double[16 * 2 * BuildBoxes.BOUNDS];
 
     BvhBinner() {
-        for (int k = 0; k < 3 * BINS; ++k) resetBox(binBox, k);
+        for (int k = 0; k < 3 * BINS; ++k) BuildBoxes.empty(binBox, k * BuildBoxes.BOX_SIZE);
     }
 
     /**
@@ -55,48 +57,51 @@ final class BvhBinner {
             if (!searched[a]) continue;
             int base = a * BINS, mask = occupied[a];
             occupied[a] = 0;
-            // Sweep the occupied bins from the right for the areas of every right part, then
-            // from the left. An empty bin changes neither part's box nor count: the areas and
-            // costs are the numbers a sweep over every bin computes, and an empty bin's split
-            // costs exactly what its left neighbour's does, which cannot beat it. (Small nodes,
-            // most of a tree, occupy few bins.) The unions are grown in locals.
-            double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
-            double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
-            for (int m = mask; m != 0; ) {
-                int k = 31 - Integer.numberOfLeadingZeros(m);
-                m ^= 1 << k;
-                int o = (base + k) * 6;
-                x0 = Math.min(binBox[o], x0);
-                y0 = Math.min(binBox[o + 1], y0);
-                z0 = Math.min(binBox[o + 2], z0);
-                x1 = Math.max(binBox[o + 3], x1);
-                y1 = Math.max(binBox[o + 4], y1);
-                z1 = Math.max(binBox[o + 5], z1);
-                rightArea[k] = halfArea(x1 - x0, y1 - y0, z1 - z0); // of bins k and above
-            }
-            x0 = y0 = z0 = Double.POSITIVE_INFINITY;
-            x1 = y1 = z1 = Double.NEGATIVE_INFINITY;
+            // Only the occupied bins are swept. An empty bin changes neither part's box nor
+            // count: the areas and costs are the numbers a sweep over every bin computes, and an
+            // empty bin's split costs exactly what its left neighbour's does, which cannot beat
+            // it. (Small nodes, most of a tree, occupy few bins.)
+            sweep(base, mask, false, rightArea);
+            sweep(base, mask, true, leftArea);
             int leftCount = 0;
             for (int m = mask; ; ) {
                 int k = Integer.numberOfTrailingZeros(m);
                 m &= m - 1;
                 if (m == 0) break; // the last occupied bin leaves no right part
-                int o = (base + k) * 6;
-                x0 = Math.min(binBox[o], x0);
-                y0 = Math.min(binBox[o + 1], y0);
-                z0 = Math.min(binBox[o + 2], z0);
-                x1 = Math.max(binBox[o + 3], x1);
-                y1 = Math.max(binBox[o + 4], y1);
-                z1 = Math.max(binBox[o + 5], z1);
                 leftCount += binCount[base + k];
-                consider(sahCost(halfArea(x1 - x0, y1 - y0, z1 - z0), leftCount,
-                        rightArea[Integer.numberOfTrailingZeros(m)], n - leftCount, parentArea), k, a);
+                consider(sahCost(leftArea[k], leftCount, rightArea[Integer.numberOfTrailingZeros(m)], n - leftCount,
+                        parentArea), k, a);
             }
             for (int m = mask; m != 0; m &= m - 1) {
                 int k = base + Integer.numberOfTrailingZeros(m);
                 binCount[k] = 0;
-                resetBox(binBox, k);
+                BuildBoxes.empty(binBox, k * BuildBoxes.BOX_SIZE);
             }
+        }
+    }
+
+    /**
+     * The union sweep of one axis, whose bins start at {@code base}: grows a box over the
+     * occupied bins ({@code mask}'s bits) from the low end ({@code fromLow}) or the high end,
+     * and leaves in {@code area[k]} the half area of the union of bin k and those before it
+     * in the sweep (bins 0 … k from the low end, k … BINS − 1 from the high end). The union is
+     * grown in locals: in the array, each bin's six updates waited for the previous bin's stores.
+     */
+    private void sweep(int base, int mask, boolean fromLow, double[] area) {
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
+        double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        double[] box = binBox;
+        for (int m = mask; m != 0; ) {
+            int k = fromLow ? Integer.numberOfTrailingZeros(m) : 31 - Integer.numberOfLeadingZeros(m);
+            m ^= 1 << k;
+            int o = (base + k) * BuildBoxes.BOX_SIZE;
+            x0 = Math.min(box[o + BuildBoxes.LOW], x0);
+            y0 = Math.min(box[o + BuildBoxes.LOW + 1], y0);
+            z0 = Math.min(box[o + BuildBoxes.LOW + 2], z0);
+            x1 = Math.max(box[o + BuildBoxes.HIGH], x1);
+            y1 = Math.max(box[o + BuildBoxes.HIGH + 1], y1);
+            z1 = Math.max(box[o + BuildBoxes.HIGH + 2], z1);
+            area[k] = BuildBoxes.halfArea(x1 - x0, y1 - y0, z1 - z0);
         }
     }
 
@@ -119,7 +124,8 @@ final class BvhBinner {
             int k1 = binOf(centroid[(start + 1) * 3 + a], lowOf[a], scale);
             if (k0 == k1) continue;
             int lower = k0 < k1 ? start : start + 1;
-            consider(sahCost(halfArea(bounds, lower), 1, halfArea(bounds, 2 * start + 1 - lower), 1, parentArea),
+            consider(sahCost(BuildBoxes.halfArea(bounds, lower * BuildBoxes.BOX_SIZE), 1,
+                    BuildBoxes.halfArea(bounds, (2 * start + 1 - lower) * BuildBoxes.BOX_SIZE), 1, parentArea),
                     Math.min(k0, k1), a);
             return;
         }
@@ -135,8 +141,8 @@ final class BvhBinner {
 
     /** @return where the bounds of the {@code side} (0 left, 1 right) child at {@code level} are */
     int place(int level, int side) {
-        int at = (2 * level + side) * BvhBuilder.BOUNDS;
-        if (at + BvhBuilder.BOUNDS > levels.length) levels = java.util.Arrays.copyOf(levels, Math.max(2 * levels.length, at + 2 * BvhBuilder.BOUNDS));
+        int at = (2 * level + side) * BuildBoxes.BOUNDS;
+        if (at + BuildBoxes.BOUNDS > levels.length) levels = java.util.Arrays.copyOf(levels, Math.max(2 * levels.length, at + 2 * BuildBoxes.BOUNDS));
         return at;
     }
 
@@ -169,7 +175,7 @@ final class BvhBinner {
     /** Adds slot {@code i} to bin {@code k} of the axis whose bins start at {@code base}; @return k's bit */
     private int add(int k, int base, double[] bounds, int i) {
         binCount[base + k]++;
-        growBox(binBox, base + k, bounds, i);
+        BuildBoxes.grow(binBox, (base + k) * BuildBoxes.BOX_SIZE, bounds, i * BuildBoxes.BOX_SIZE);
         return 1 << k;
     }
 
@@ -179,39 +185,8 @@ final class BvhBinner {
         return k < 0 ? 0 : Math.min(k, BINS - 1);
     }
 
-    private static void resetBox(double[] b, int k) {
-        int o = k * 6;
-        b[o] = b[o + 1] = b[o + 2] = Double.POSITIVE_INFINITY;
-        b[o + 3] = b[o + 4] = b[o + 5] = Double.NEGATIVE_INFINITY;
-    }
-
-    // Math.min/max rather than compare-and-branch: whether a bound grows is data-dependent
-    // and mispredicts often; the intrinsics do not branch (25 % off a 2×10⁶ build). They differ
-    // from the branches only for NaN (no bound is NaN) and by preferring −0.0 to +0.0.
-    private static void growBox(double[] b, int k, double[] src, int s) {
-        int o = k * 6, so = s * 6;
-        for (int a = 0; a < 3; ++a) {
-            b[o + a] = Math.min(src[so + a], b[o + a]);
-            b[o + a + 3] = Math.max(src[so + a + 3], b[o + a + 3]);
-        }
-    }
-
     /** The SAH cost of a split, relative to testing the parent's primitives: the one formula of both searches. */
     private static double sahCost(double leftArea, int leftCount, double rightArea, int rightCount, double parentArea) {
         return TRAVERSAL_COST + (leftArea * leftCount + rightArea * rightCount) / parentArea;
-    }
-
-    /** @return the {@link #halfArea(double, double, double) half area} of box {@code k} of {@code b} (six doubles each) */
-    private static double halfArea(double[] b, int k) {
-        int o = k * 6;
-        return halfArea(b[o + 3] - b[o], b[o + 4] - b[o + 1], b[o + 5] - b[o + 2]);
-    }
-
-    /**
-     * The half area of a box of extents dx, dy, dz (the SAH only needs ratios of areas): the one
-     * formula of every SAH cost, a node's own area included.
-     */
-    static double halfArea(double dx, double dy, double dz) {
-        return dx * dy + dy * dz + dz * dx;
     }
 }

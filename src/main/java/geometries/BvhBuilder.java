@@ -27,8 +27,10 @@ final class BvhBuilder {
     private static final int MAX_LEAF = 4;
     /** Nodes with more primitives than this are binned along their widest axis only. */
     private static final int FULL_SEARCH_LIMIT = 1 << 16;
-    /** The builder's bounds of a range: box min xyz, max xyz, then centroid min xyz, max xyz. */
-    static final int BOUNDS = 12;
+    /** Doubles per range's bounds (its box and its centroids' box, as {@link BuildBoxes} names them). */
+    private static final int BOUNDS = BuildBoxes.BOUNDS;
+    private static final int BOX = BuildBoxes.BOX, CENTROIDS = BuildBoxes.CENTROIDS;
+    private static final int LOW = BuildBoxes.LOW, HIGH = BuildBoxes.HIGH, BOX_SIZE = BuildBoxes.BOX_SIZE;
     /** Leaves or primitives per task in the build's flat loops (about 1 ms of work). */
     private static final int GRAIN = 1 << 14;
 
@@ -163,7 +165,7 @@ final class BvhBuilder {
         // union is the root's, found without a pass of its own. All start empty: without a
         // pool one chunk runs the whole range, and the others' places must not count.
         double[] chunkBounds = new double[(Math.max(total, 1) + grain - 1) / grain * BOUNDS];
-        for (int at = 0; at < chunkBounds.length; at += BOUNDS) resetBounds(chunkBounds, at);
+        for (int at = 0; at < chunkBounds.length; at += BOUNDS) BuildBoxes.emptyBounds(chunkBounds, at);
         Ranges.run(pool, total, grain, (from, to) -> {
             int l = leafOfSlot(first, from);
             for (int s = from; s < to; ++s) {
@@ -298,13 +300,7 @@ final class BvhBuilder {
         double minX = box[at], minY = box[at + 1], minZ = box[at + 2];
         double maxX = box[at + 3], maxY = box[at + 4], maxZ = box[at + 5];
         double eps = BoundingBox.padding(minX, minY, minZ, maxX, maxY, maxZ);
-        int o = i * 6;
-        bounds[o] = minX - eps;
-        bounds[o + 1] = minY - eps;
-        bounds[o + 2] = minZ - eps;
-        bounds[o + 3] = maxX + eps;
-        bounds[o + 4] = maxY + eps;
-        bounds[o + 5] = maxZ + eps;
+        BuildBoxes.set(bounds, i * BOX_SIZE, minX - eps, minY - eps, minZ - eps, maxX + eps, maxY + eps, maxZ + eps);
         centroid[i * 3] = (minX + maxX) / 2;
         centroid[i * 3 + 1] = (minY + maxY) / 2;
         centroid[i * 3 + 2] = (minZ + maxZ) / 2;
@@ -312,21 +308,14 @@ final class BvhBuilder {
 
     /** Sets the bounds at {@code at} of {@code out} to those of slots [from, to). */
     private void unite(double[] out, int at, int from, int to) {
-        resetBounds(out, at);
-        for (int i = from; i < to; ++i) growBounds(out, at, bounds, centroid, i);
+        BuildBoxes.emptyBounds(out, at);
+        for (int i = from; i < to; ++i) growBounds(out, at, i);
     }
 
     /** Sets {@code out} to the union of the bounds in {@code parts}, {@link #BOUNDS} doubles each. */
-    private void unite(double[] out, double[] parts) {
-        resetBounds(out, 0);
-        for (int at = 0; at < parts.length; at += BOUNDS) {
-            for (int a = 0; a < 3; ++a) {
-                out[a] = Math.min(parts[at + a], out[a]);
-                out[3 + a] = Math.max(parts[at + 3 + a], out[3 + a]);
-                out[6 + a] = Math.min(parts[at + 6 + a], out[6 + a]);
-                out[9 + a] = Math.max(parts[at + 9 + a], out[9 + a]);
-            }
-        }
+    private static void unite(double[] out, double[] parts) {
+        BuildBoxes.emptyBounds(out, 0);
+        for (int at = 0; at < parts.length; at += BOUNDS) BuildBoxes.growBounds(out, 0, parts, at);
     }
 
     /** Builds the tree over all slots, whose bounds are {@code rootBounds} (as {@link #unite} gives them). */
@@ -341,7 +330,9 @@ final class BvhBuilder {
         slotFirstOrLeft = new int[capacity];
         slotSize = new int[capacity];
         if (n > 0) {
-            rootBox = new BoundingBox(rootBounds[0], rootBounds[1], rootBounds[2], rootBounds[3], rootBounds[4], rootBounds[5]);
+            int low = BOX + LOW, high = BOX + HIGH;
+            rootBox = new BoundingBox(rootBounds[low], rootBounds[low + 1], rootBounds[low + 2],
+                    rootBounds[high], rootBounds[high + 1], rootBounds[high + 2]);
             Subtree root = new Subtree(0, n, 0, 0, rootBounds);
             if (pool != null && n > forkAbove) pool.invoke(root);
             else root.compute();
@@ -494,32 +485,25 @@ final class BvhBuilder {
      */
     private int split(BvhBinner binner, int start, int end, int level, int slot, int ownAt) {
         double[] own = binner.levels;
-        double bx0 = own[ownAt], by0 = own[ownAt + 1], bz0 = own[ownAt + 2];
-        double bx1 = own[ownAt + 3], by1 = own[ownAt + 4], bz1 = own[ownAt + 5];
-        double cx0 = own[ownAt + 6], cy0 = own[ownAt + 7], cz0 = own[ownAt + 8];
-        double cx1 = own[ownAt + 9], cy1 = own[ownAt + 10], cz1 = own[ownAt + 11];
+        int box = ownAt + BOX, centroids = ownAt + CENTROIDS;
         double[] bounds = this.bounds, centroid = this.centroid;
-        int o = slot * 6;
-        slotBox[o] = BvhNodes.floatBelow(bx0);
-        slotBox[o + 1] = BvhNodes.floatBelow(by0);
-        slotBox[o + 2] = BvhNodes.floatBelow(bz0);
-        slotBox[o + 3] = BvhNodes.floatAbove(bx1);
-        slotBox[o + 4] = BvhNodes.floatAbove(by1);
-        slotBox[o + 5] = BvhNodes.floatAbove(bz1);
+        int o = slot * BOX_SIZE;
+        for (int a = 0; a < 3; ++a) {
+            slotBox[o + LOW + a] = BvhNodes.floatBelow(own[box + LOW + a]);
+            slotBox[o + HIGH + a] = BvhNodes.floatAbove(own[box + HIGH + a]);
+        }
         int n = end - start;
         // Binned SAH over every axis whose centroids spread; for very large nodes only along
         // the widest one (as pbrt does), a third of the work for trees of nearly the same
         // quality where it matters for build time. Small and medium nodes get the full search:
         // it makes measurably better trees (fewer box tests per ray).
         double[] extentOf = binner.extentOf, lowOf = binner.lowOf;
-        extentOf[0] = cx1 - cx0;
-        extentOf[1] = cy1 - cy0;
-        extentOf[2] = cz1 - cz0;
-        lowOf[0] = cx0;
-        lowOf[1] = cy0;
-        lowOf[2] = cz0;
+        for (int a = 0; a < 3; ++a) {
+            extentOf[a] = BuildBoxes.extent(own, centroids, a);
+            lowOf[a] = own[centroids + LOW + a];
+        }
         int widest = extentOf[0] >= extentOf[1] && extentOf[0] >= extentOf[2] ? 0 : extentOf[1] >= extentOf[2] ? 1 : 2;
-        double parentArea = BvhBinner.halfArea(bx1 - bx0, by1 - by0, bz1 - bz0);
+        double parentArea = BuildBoxes.halfArea(own, box);
         boolean[] searched = binner.searched;
         for (int a = 0; a < 3; ++a)
             searched[a] = n > 1 && extentOf[a] > 0 && (n <= FULL_SEARCH_LIMIT || a == widest);
@@ -538,9 +522,9 @@ final class BvhBuilder {
             mid = start + n / 2;
             double[] children = binner.levels(level + 1);
             int at = binner.place(level + 1, 0);
-            resetBounds(children, at);
-            resetBounds(children, at + BOUNDS);
-            for (int i = start; i < end; ++i) growBounds(children, i < mid ? at : at + BOUNDS, bounds, centroid, i);
+            BuildBoxes.emptyBounds(children, at);
+            BuildBoxes.emptyBounds(children, at + BOUNDS);
+            for (int i = start; i < end; ++i) growBounds(children, i < mid ? at : at + BOUNDS, i);
         }
         if (mid < 0) {
             slotCount[slot] = n;
@@ -573,7 +557,7 @@ final class BvhBuilder {
         double rx1 = lx1, ry1 = lx1, rz1 = lx1, rcx1 = lx1, rcy1 = lx1, rcz1 = lx1;
         int l = start, r = start;
         for (int i = start; i < end; ++i) {
-            int o = i * 6, c = i * 3;
+            int o = i * BOX_SIZE, c = i * 3; // b0 … b2 the box's low corner, b3 … b5 its high one (BuildBoxes)
             double b0 = bounds[o], b1 = bounds[o + 1], b2 = bounds[o + 2];
             double b3 = bounds[o + 3], b4 = bounds[o + 4], b5 = bounds[o + 5];
             double c0 = centroid[c], c1 = centroid[c + 1], c2 = centroid[c + 2];
@@ -602,48 +586,21 @@ final class BvhBuilder {
                 sCentroid[rc] = c0; sCentroid[rc + 1] = c1; sCentroid[rc + 2] = c2;
             }
         }
-        setBounds(children, at, lx0, ly0, lz0, lx1, ly1, lz1, lcx0, lcy0, lcz0, lcx1, lcy1, lcz1);
-        setBounds(children, at + BOUNDS, rx0, ry0, rz0, rx1, ry1, rz1, rcx0, rcy0, rcz0, rcx1, rcy1, rcz1);
-        int right = r - start;
-        System.arraycopy(scratchOrder, start, order, l, right);
-        System.arraycopy(scratchBounds, start * 6, bounds, l * 6, right * 6);
-        System.arraycopy(scratchCentroid, start * 3, centroid, l * 3, right * 3);
+        int left = at, right = at + BOUNDS;
+        BuildBoxes.set(children, left + BOX, lx0, ly0, lz0, lx1, ly1, lz1);
+        BuildBoxes.set(children, left + CENTROIDS, lcx0, lcy0, lcz0, lcx1, lcy1, lcz1);
+        BuildBoxes.set(children, right + BOX, rx0, ry0, rz0, rx1, ry1, rz1);
+        BuildBoxes.set(children, right + CENTROIDS, rcx0, rcy0, rcz0, rcx1, rcy1, rcz1);
+        int rightCount = r - start;
+        System.arraycopy(scratchOrder, start, order, l, rightCount);
+        System.arraycopy(scratchBounds, start * 6, bounds, l * 6, rightCount * 6);
+        System.arraycopy(scratchCentroid, start * 3, centroid, l * 3, rightCount * 3);
         return l;
     }
 
-    /** Writes a box (min xyz, max xyz) and a centroid box as the bounds at {@code at}. */
-    private static void setBounds(double[] b, int at, double x0, double y0, double z0, double x1, double y1, double z1,
-                                  double cx0, double cy0, double cz0, double cx1, double cy1, double cz1) {
-        b[at] = x0;
-        b[at + 1] = y0;
-        b[at + 2] = z0;
-        b[at + 3] = x1;
-        b[at + 4] = y1;
-        b[at + 5] = z1;
-        b[at + 6] = cx0;
-        b[at + 7] = cy0;
-        b[at + 8] = cz0;
-        b[at + 9] = cx1;
-        b[at + 10] = cy1;
-        b[at + 11] = cz1;
-    }
-
-    /** Makes the bounds at {@code at} empty: a box and a centroid box that any point grows. */
-    private static void resetBounds(double[] b, int at) {
-        for (int a = 0; a < 3; ++a) {
-            b[at + a] = b[at + 6 + a] = Double.POSITIVE_INFINITY;
-            b[at + 3 + a] = b[at + 9 + a] = Double.NEGATIVE_INFINITY;
-        }
-    }
-
-    /** Grows the bounds at {@code at} by slot {@code i}'s box and centroid. */
-    private static void growBounds(double[] b, int at, double[] bounds, double[] centroid, int i) {
-        int o = i * 6, c = i * 3;
-        for (int a = 0; a < 3; ++a) {
-            b[at + a] = Math.min(bounds[o + a], b[at + a]);
-            b[at + 3 + a] = Math.max(bounds[o + 3 + a], b[at + 3 + a]);
-            b[at + 6 + a] = Math.min(centroid[c + a], b[at + 6 + a]);
-            b[at + 9 + a] = Math.max(centroid[c + a], b[at + 9 + a]);
-        }
+    /** Grows the bounds at {@code at} of {@code b} by slot {@code i}'s box and centroid. */
+    private void growBounds(double[] b, int at, int i) {
+        BuildBoxes.grow(b, at + BOX, bounds, i * BOX_SIZE);
+        BuildBoxes.growToPoint(b, at + CENTROIDS, centroid, i * 3);
     }
 }
