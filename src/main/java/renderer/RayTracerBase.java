@@ -69,7 +69,17 @@ public abstract class RayTracerBase {
      * setting the preparation depends on did.
      */
     final synchronized void prepareIfChanged() {
-        if (prepared == null || prepared.changed()) prepareFor(SceneStamp.of(scene, "a direct traceRay call"));
+        if (prepared == null || prepared.changed()) prepareFor(SceneStamp.of(this, "a direct traceRay call"));
+    }
+
+    /**
+     * The parts of the scene a render reads, as they are now: what {@link SceneStamp} compares
+     * at the start and the end of a render. Read here because this class holds the scene (the
+     * course's constructor), so that no other class of the renderer needs the course's
+     * {@code Scene}.
+     */
+    final SceneStamp.Parts sceneParts() {
+        return new SceneStamp.Parts(scene.name, scene.geometries, scene.lights, scene.background, scene.ambientLight);
     }
 
     /** Makes the next call outside a render prepare again: a setting the preparation depends on changed. */

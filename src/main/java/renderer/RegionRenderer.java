@@ -68,7 +68,7 @@ public final class RegionRenderer {
         this.name = name;
         this.nX = view.plane().nX();
         this.nY = view.plane().nY();
-        this.prepared = tracer.prepareFor(SceneStamp.of(tracer.scene, name));
+        this.prepared = tracer.prepareFor(SceneStamp.of(tracer, name));
     }
 
     /**

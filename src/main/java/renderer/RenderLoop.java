@@ -60,7 +60,7 @@ final class RenderLoop {
      *                                                   (also when that made it fail otherwise)
      */
     RenderStats render(String name) {
-        SceneStamp before = SceneStamp.of(tracer.scene, image.getImageName());
+        SceneStamp before = SceneStamp.of(tracer, image.getImageName());
         RenderStats stats;
         try {
             sampling.requireRayBudget(lens, tracer); // the tracer's settings may have grown since the camera was built

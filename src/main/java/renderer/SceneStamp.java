@@ -16,7 +16,6 @@ import lighting.LightSource;
 import primitives.Color;
 import primitives.Double3;
 import primitives.Material;
-import scene.Scene;
 
 /**
  * What a render saw of its scene when it started: the geometry list and how often it and the
@@ -27,30 +26,44 @@ import scene.Scene;
  * change fails it with one message instead of an image of two states. The comparison walks the
  * scene once at each end of the render, never per ray or per tile.
  *
- * @param scene      the scene rendered
- * @param geometries its geometry list at the start
- * @param changes    {@link Geometries#changeCount()} at the start
- * @param lightList  its light list at the start
- * @param lights     the lights in it at the start
- * @param background its background at the start (compared by identity: a {@link Color} is immutable)
- * @param ambient    its ambient light at the start (immutable too)
- * @param surfaces   the fingerprint of every geometry's material and emission at the start ({@link #surfaces})
+ * <p>The scene is read through its tracer ({@link RayTracerBase#sceneParts()}), the one class of
+ * the renderer that holds it because the course says so: this class knows the parts, not the
+ * course's {@code Scene}.
+ *
+ * @param tracer      the tracer whose scene is rendered, read again at the end
+ * @param start       the scene's parts at the start
+ * @param changes     {@link Geometries#changeCount()} at the start
+ * @param lights      the lights in its light list at the start
+ * @param surfaces    the fingerprint of every geometry's material and emission at the start ({@link #surfaces})
  * @param lightStamps each light's {@link LightSource#settingsStamp()} at the start, in the order of {@code lights}
  */
-record SceneStamp(Scene scene, Geometries geometries, long changes, List<LightSource> lightList, LightSource[] lights,
-                  Color background, AmbientLight ambient, Surfaces surfaces, long[] lightStamps) {
+record SceneStamp(RayTracerBase tracer, Parts start, long changes, LightSource[] lights, Surfaces surfaces,
+                  long[] lightStamps) {
+    /**
+     * The parts of a scene a render reads, as they are at one moment: compared by identity (a
+     * {@link Color} and an ambient light are immutable; the lists are compared by their contents
+     * besides).
+     *
+     * @param name       the scene's name, for messages
+     * @param geometries its geometry list
+     * @param lights     its light list
+     * @param background its background
+     * @param ambient    its ambient light
+     */
+    record Parts(String name, Geometries geometries, List<LightSource> lights, Color background, AmbientLight ambient) {
+    }
+
     /**
      * @throws ConcurrentModificationException when the light list changes while it is read
      */
-    static SceneStamp of(Scene scene, String image) {
+    static SceneStamp of(RayTracerBase tracer, String image) {
+        Parts start = tracer.sceneParts();
         try {
-            List<LightSource> lightList = scene.lights;
-            Geometries geometries = scene.geometries;
-            LightSource[] lights = lightList.toArray(new LightSource[0]);
-            return new SceneStamp(scene, geometries, geometries.changeCount(), lightList, lights, scene.background,
-                    scene.ambientLight, Surfaces.of(geometries), settingsStamps(lights));
+            LightSource[] lights = start.lights.toArray(new LightSource[0]);
+            return new SceneStamp(tracer, start, start.geometries.changeCount(), lights, Surfaces.of(start.geometries),
+                    settingsStamps(lights));
         } catch (RuntimeException e) { // a list read while another thread adds to it
-            throw changed(scene, image, "it was being changed as the render started", e);
+            throw changed(start.name, image, "it was being changed as the render started", e);
         }
     }
 
@@ -68,7 +81,7 @@ record SceneStamp(Scene scene, Geometries geometries, long changes, List<LightSo
         } catch (RuntimeException e) {
             what = "it was being changed as the render ended";
         }
-        if (what != null) throw changed(scene, image, what, failure);
+        if (what != null) throw changed(tracer.sceneParts().name, image, what, failure);
     }
 
     /**
@@ -86,12 +99,13 @@ record SceneStamp(Scene scene, Geometries geometries, long changes, List<LightSo
     private String change() {
         String structural = structuralChange();
         if (structural != null) return structural;
-        if (scene.background != background) return "its background was replaced (setBackground)";
-        if (scene.ambientLight != ambient) return "its ambient light was replaced (setAmbientLight)";
-        Surfaces now = Surfaces.of(geometries);
-        if (now.materials != surfaces.materials)
+        Parts now = tracer.sceneParts();
+        if (now.background != start.background) return "its background was replaced (setBackground)";
+        if (now.ambient != start.ambient) return "its ambient light was replaced (setAmbientLight)";
+        Surfaces surfacesNow = Surfaces.of(start.geometries);
+        if (surfacesNow.materials != surfaces.materials)
             return "a material of its geometries changed (a Material setter such as setKd, a field, or setMaterial)";
-        if (now.emissions != surfaces.emissions) return "the emission of one of its geometries changed (setEmission)";
+        if (surfacesNow.emissions != surfaces.emissions) return "the emission of one of its geometries changed (setEmission)";
         for (int i = 0; i < lights.length; ++i)
             if (lights[i].settingsStamp() != lightStamps[i])
                 return "the settings of its light #" + i + " changed (" + lights[i].getClass().getSimpleName() + ")";
@@ -151,19 +165,20 @@ record SceneStamp(Scene scene, Geometries geometries, long changes, List<LightSo
 
     /** The structural part of {@link #change()}: lists and lights added, removed or replaced. */
     private String structuralChange() {
-        if (scene.geometries != geometries) return "its geometry list was replaced";
-        long now = geometries.changeCount();
-        if (now != changes) return "its geometries were added to (" + (now - changes) + (now - changes == 1 ? " time)" : " times)");
-        if (scene.lights != lightList) return "its light list was replaced";
-        LightSource[] nowLights = lightList.toArray(new LightSource[0]);
+        Parts now = tracer.sceneParts();
+        if (now.geometries != start.geometries) return "its geometry list was replaced";
+        long count = start.geometries.changeCount();
+        if (count != changes) return "its geometries were added to (" + (count - changes) + (count - changes == 1 ? " time)" : " times)");
+        if (now.lights != start.lights) return "its light list was replaced";
+        LightSource[] nowLights = start.lights.toArray(new LightSource[0]);
         if (nowLights.length != lights.length) return "its lights went from " + lights.length + " to " + nowLights.length;
         for (int i = 0; i < lights.length; ++i)
             if (nowLights[i] != lights[i]) return "its light #" + i + " was replaced";
         return null;
     }
 
-    private static ConcurrentModificationException changed(Scene scene, String image, String what, Throwable cause) {
-        return new ConcurrentModificationException("the scene '" + scene.name + "' changed during the render of " + image
+    private static ConcurrentModificationException changed(String scene, String image, String what, Throwable cause) {
+        return new ConcurrentModificationException("the scene '" + scene + "' changed during the render of " + image
                 + ": " + what + " (a scene must not change while it renders; render it again when it is complete)",
                 cause);
     }

@@ -14,8 +14,10 @@
  * defaults are defined in the values that own them ({@code Sampling}, {@code Execution},
  * {@code WhittedShader}) and the course classes re-export them ({@code Camera.MAX_SAMPLES_PER_PIXEL},
  * {@code RayTracerBasic.MIN_CALC_COLOR_K}); nothing below reads settings back from what is above
- * it. The one tie that runs up is the course's own: its tracers take a {@code scene.Scene}, which
- * {@code SceneStamp} and {@code WhittedShader} read through them.
+ * it. The one tie that runs up is the course's own: its tracers take a {@code scene.Scene}, and
+ * only the classes the course names with it ({@code Camera}, the tracers, {@code RayTracerType})
+ * import it; {@code SceneStamp} reads the scene's parts through its tracer, and
+ * {@code WhittedShader} gets them as values when the tracer prepares.
  * <ul>
  * <li>The course's face, which scene tests call: {@code Camera} and its {@code Builder},
  * {@code ImageWriter}, {@code RayTracerBase} with {@code RayTracerBasic} (the Whitted tracer) and

@@ -98,4 +98,26 @@ class PackageLayersTest {
             }
         }
     }
+
+    /**
+     * The course makes the renderer name {@code Scene}: a camera renders one, a tracer is made
+     * over one (the constructors and {@code setRayTracer(Scene, …)} of every course year). Those
+     * classes may import it; the rest of the renderer gets the scene's parts from them.
+     */
+    private static final Set<String> COURSE_SCENE_USERS = Set.of("Camera.java", "RayTracerBase.java",
+            "RayTracerBasic.java", "RayTracerType.java", "SimpleRayTracer.java");
+
+    @Test
+    @DisplayName("in the renderer, only the classes the course names with a Scene import package scene")
+    void sceneOnlyWhereTheCourseNamesIt() throws IOException {
+        Path renderer = SOURCES.get(0).resolve("renderer");
+        List<String> importing = new ArrayList<>();
+        try (Stream<Path> files = Files.walk(renderer)) {
+            for (Path file : files.filter(f -> f.toString().endsWith(".java")).toList())
+                if (Pattern.compile("(?m)^import\\s+(static\\s+)?scene\\.").matcher(Files.readString(file)).find())
+                    importing.add(renderer.relativize(file).toString().replace(File.separatorChar, '/'));
+        }
+        assertThat(importing).as("renderer files importing package scene").isNotEmpty()
+                .allSatisfy(f -> assertThat(COURSE_SCENE_USERS).contains(f));
+    }
 }
