@@ -20,6 +20,9 @@ import primitives.Ray;
  *
  * <p>Immutable after {@link #build}; any number of threads may query it. The build is
  * deterministic: the same scene gives the same tree.
+ *
+ * @hidden internal: a render builds and keeps the tree itself ({@code setBvh(true)}, the
+ *         default); public for the renderer, the benchmarks and the Spark jobs
  */
 public final class Bvh extends Intersectable {
     /**

@@ -23,11 +23,14 @@
  * {@code BoundingBox}, whose slab test ({@code entry}, one call per box) the tree's node test shares.</li>
  * <li>Internal, package-private: {@code BvhLeaf}, what a tree asks of its leaves (the superclass of
  * {@code Intersectable}, out of the course's sight); {@code BvhBuilder}, which builds a tree
- * (called by {@code Bvh}'s factories) with the surface-area heuristic of {@code BvhBinner};
+ * (called by {@code Bvh}'s factories) with the surface-area heuristic of {@code BvhBinner}, both
+ * holding their boxes as the flat doubles {@code BuildBoxes} names;
  * {@code BvhNodes}, the only code that knows the node array's layout (the builder writes it, the
  * walks read it); {@code SingleHitGeometry}, the queries of a shape crossed at most once (plane,
  * polygon, triangle); {@code HookCheck}, which finds by reflection the course methods a class
- * redefines; {@code Ranges}, the build's parallel loops.</li>
+ * redefines; {@code Ranges}, the build's parallel loops; {@code WideNodes}, the binary tree
+ * collapsed into nodes of 4 or 8 children, walked by a {@code WideWalk} (the Vector API's, in
+ * {@code src/main/vector}) when {@code Vectorization} finds the module readable.</li>
  * </ul>
  * Whether an object is exactly one of the library's shapes, which the library then trusts with
  * arithmetic of its own, is decided by one rule, {@code primitives.LibraryClasses}, through
