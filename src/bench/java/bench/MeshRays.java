@@ -114,16 +114,24 @@ public final class MeshRays {
         return ByteBuffer.wrap(Files.readAllBytes(file)).order(ByteOrder.LITTLE_ENDIAN);
     }
 
+    /** A query record whose ray this benchmark sets (the setters are Hit's protected ones, as the renderer's). */
+    private static final class RayRecord extends Hit {
+        /** Sets the ray to the six doubles of {@code rays} at {@code r}: origin, then direction. */
+        void set(double[] rays, int r) {
+            setRay(rays[r], rays[r + 1], rays[r + 2], rays[r + 3], rays[r + 4], rays[r + 5]);
+        }
+    }
+
     /** One pass over every ray on {@code threads} workers, chunks claimed in order. */
     private static void trace(Bvh bvh, double[] rays, double[] t, int threads) throws InterruptedException {
         AtomicInteger next = new AtomicInteger();
         Runnable worker = () -> {
-            Hit hit = new Hit();
+            RayRecord hit = new RayRecord();
             for (int from; (from = next.getAndAdd(CHUNK)) < t.length;) {
                 int to = Math.min(t.length, from + CHUNK);
                 for (int i = from; i < to; ++i) {
                     int r = 6 * i;
-                    hit.setRay(rays[r], rays[r + 1], rays[r + 2], rays[r + 3], rays[r + 4], rays[r + 5]);
+                    hit.set(rays, r);
                     t[i] = bvh.closestHit(hit.reset(Double.POSITIVE_INFINITY)) ? hit.getT() : Double.NaN;
                 }
             }

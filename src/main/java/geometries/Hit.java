@@ -16,11 +16,14 @@ import primitives.Vector;
  * doubles of {@code new Ray(head, direction)} and {@code new Ray(head, direction, normal)} (the
  * same arithmetic, so the same bits); {@link Intersectable#closestHit(Hit)} and
  * {@link Intersectable#visitHits(Hit, double, HitVisitor)} then query it without any
- * {@link Ray} object.
+ * {@link Ray} object. Those two setters are protected: the renderer reaches them through its
+ * own subclass ({@code renderer.RayHit}), so that code holding a {@code Hit} (a shape's query,
+ * a student's code completion) reads a record and never sees how a ray is put into one. Every
+ * other method is final: the subclass only adds the setters' names.
  *
  * @hidden internal: the renderer's hit record, public for package renderer; a scene test uses GeoPoint
  */
-public final class Hit {
+public class Hit {
     private static final int[] NO_STACK = new int[0];
     private static final double[] NO_STACK_T = new double[0];
 
@@ -71,7 +74,7 @@ public final class Hit {
      * @param tMax hits farther than this along the ray are ignored; +∞ for no bound
      * @return this record, for a query call in the same expression
      */
-    public Hit reset(double tMax) {
+    public final Hit reset(double tMax) {
         t = tMax;
         geometry = null;
         primitive = 0;
@@ -91,7 +94,7 @@ public final class Hit {
      * @param dz the direction's z component
      * @return this record
      */
-    public Hit setRay(double ox, double oy, double oz, double dx, double dy, double dz) {
+    protected final Hit setRay(double ox, double oy, double oz, double dx, double dy, double dz) {
         Vector.normalize(dx, dy, dz, unit);
         this.ox = ox;
         this.oy = oy;
@@ -117,8 +120,8 @@ public final class Hit {
      * @param nz the unit surface normal's z component
      * @return this record
      */
-    public Hit setRay(double px, double py, double pz, double dx, double dy, double dz, double nx, double ny,
-                      double nz) {
+    protected final Hit setRay(double px, double py, double pz, double dx, double dy, double dz, double nx,
+                               double ny, double nz) {
         Vector.normalize(dx, dy, dz, unit);
         double ux = unit[0], uy = unit[1], uz = unit[2];
         double delta = Ray.headOffset(nx, ny, nz, ux, uy, uz);
@@ -172,47 +175,47 @@ public final class Hit {
     }
 
     /** @return true when the last query found something */
-    public boolean found() {
+    public final boolean found() {
         return geometry != null;
     }
 
     /** @return the hit distance along the (unit) ray direction, or the bound when nothing was hit */
-    public double getT() {
+    public final double getT() {
         return t;
     }
 
     /** @return the geometry hit, or null */
-    public Geometry getGeometry() {
+    public final Geometry getGeometry() {
         return geometry;
     }
 
     /** @return the x coordinate of the query ray's head */
-    public double headX() {
+    public final double headX() {
         return ox;
     }
 
     /** @return the y coordinate of the query ray's head */
-    public double headY() {
+    public final double headY() {
         return oy;
     }
 
     /** @return the z coordinate of the query ray's head */
-    public double headZ() {
+    public final double headZ() {
         return oz;
     }
 
     /** @return the x component of the query ray's unit direction */
-    public double directionX() {
+    public final double directionX() {
         return dx;
     }
 
     /** @return the y component of the query ray's unit direction */
-    public double directionY() {
+    public final double directionY() {
         return dy;
     }
 
     /** @return the z component of the query ray's unit direction */
-    public double directionZ() {
+    public final double directionZ() {
         return dz;
     }
 
@@ -223,7 +226,7 @@ public final class Hit {
      *
      * @return this record
      */
-    public Hit computeSurface() {
+    public final Hit computeSurface() {
         if (Util.isZero(t)) { // Ray.getPoint's rule: t ≈ 0 is the head itself
             px = ox;
             py = oy;
@@ -238,32 +241,32 @@ public final class Hit {
     }
 
     /** @return the x coordinate of the hit point, from {@link #computeSurface()} */
-    public double pointX() {
+    public final double pointX() {
         return px;
     }
 
     /** @return the y coordinate of the hit point, from {@link #computeSurface()} */
-    public double pointY() {
+    public final double pointY() {
         return py;
     }
 
     /** @return the z coordinate of the hit point, from {@link #computeSurface()} */
-    public double pointZ() {
+    public final double pointZ() {
         return pz;
     }
 
     /** @return the x component of the unit surface normal, from {@link #computeSurface()} */
-    public double normalX() {
+    public final double normalX() {
         return normal[0];
     }
 
     /** @return the y component of the unit surface normal, from {@link #computeSurface()} */
-    public double normalY() {
+    public final double normalY() {
         return normal[1];
     }
 
     /** @return the z component of the unit surface normal, from {@link #computeSurface()} */
-    public double normalZ() {
+    public final double normalZ() {
         return normal[2];
     }
 
@@ -271,7 +274,7 @@ public final class Hit {
      * @param ray the ray the query was made with (the record keeps only its distance)
      * @return the hit point on {@code ray}
      */
-    public Point point(Ray ray) {
+    public final Point point(Ray ray) {
         return ray.getPoint(t);
     }
 
@@ -279,7 +282,7 @@ public final class Hit {
      * @param point the hit point of this record, from {@link #point(Ray)}
      * @return the unit surface normal at {@code point}; a mesh's smooth normal when it has vertex normals
      */
-    public Vector normal(Point point) {
+    public final Vector normal(Point point) {
         px = point.getX();
         py = point.getY();
         pz = point.getZ();

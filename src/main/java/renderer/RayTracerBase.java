@@ -108,9 +108,8 @@ public abstract class RayTracerBase {
     }
 
     /**
-     * The colour seen along the camera ray that {@code ray} holds as doubles (see
-     * {@link Hit#setRay(double, double, double, double, double, double)}): how the render loop
-     * calls a tracer of another package, with no {@link Ray} object per ray. By default it builds
+     * The colour seen along the camera ray that {@code ray} holds as doubles (see {@code RayHit}):
+     * how the render loop calls a tracer of another package, with no {@link Ray} object per ray. By default it builds
      * the {@link Ray} and calls {@link #traceRay(Ray)}; a tracer that queries the scene itself may
      * override it and pass the record straight to {@code Intersectable.closestHit(Hit)}. The
      * record belongs to the calling worker for the duration of the call: its hit fields are free

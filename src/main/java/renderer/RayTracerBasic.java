@@ -180,7 +180,7 @@ public class RayTracerBasic extends RayTracerBase {
         Vector d = ray.getDirection();
         ctx.random.reset(Double.doubleToLongBits(h.getX()) * 31 + Double.doubleToLongBits(h.getY()),
                 Double.hashCode(h.getZ()), Double.hashCode(d.getX()) * 31 + Double.hashCode(d.getY()), Double.hashCode(d.getZ()));
-        ctx.cameraRay().setRay(h.getX(), h.getY(), h.getZ(), d.getX(), d.getY(), d.getZ());
+        ctx.cameraRay().ray(h.getX(), h.getY(), h.getZ(), d.getX(), d.getY(), d.getZ());
         return shader.shadeCameraRay(ctx).toColor();
     }
 }

@@ -36,7 +36,7 @@ final class TraceContext {
     /** Indexed by recursion level: the camera ray's at {@code levels.length - 1}, one less per bounce. */
     private final Level[] levels;
     /** The query record of shadow rays: only its ray is used (an any-hit walk records no hit). */
-    final Hit shadow = new Hit();
+    final RayHit shadow = new RayHit();
     long cameraRays;
     long shadowRays;
     long secondaryRays;
@@ -68,7 +68,7 @@ final class TraceContext {
     }
 
     /** The record a camera ray is written into: the top level's. */
-    Hit cameraRay() {
+    RayHit cameraRay() {
         return top().hit;
     }
 
@@ -132,7 +132,7 @@ final class TraceContext {
         final int level;
         /** The level one bounce down, or null for level 0. */
         final Level below;
-        final Hit hit = new Hit();
+        final RayHit hit = new RayHit();
         /** The product of kR and kT of the bounces from the camera down to this level's hit, per channel. */
         final Rgb weight = new Rgb();
         /** The colour seen along this level's ray: emission, local and indirect light, or the background. */
@@ -154,7 +154,8 @@ final class TraceContext {
          * hit point p (normal n) of {@code from}: d normalized, the head moved off the surface.
          */
         Hit secondaryRay(Hit from, double dx, double dy, double dz) {
-            return hit.reset(Double.POSITIVE_INFINITY).setRay(from.pointX(), from.pointY(), from.pointZ(), dx, dy, dz,
+            hit.reset(Double.POSITIVE_INFINITY);
+            return hit.secondary(from.pointX(), from.pointY(), from.pointZ(), dx, dy, dz,
                     from.normalX(), from.normalY(), from.normalZ());
         }
     }

@@ -322,7 +322,7 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
             direction(xOffset, yOffset, d);
             if (aperture == 0) {
                 // new Ray(location, direction): the direction goes through the same normalization.
-                ctx.cameraRay().setRay(locX, locY, locZ, d[0], d[1], d[2]);
+                ctx.cameraRay().ray(locX, locY, locZ, d[0], d[1], d[2]);
                 return;
             }
             double t = focalDistance / (d[0] * toX + d[1] * toY + d[2] * toZ);
@@ -333,7 +333,7 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
             double lx = locX + rightX * lu + upX * lv;
             double ly = locY + rightY * lu + upY * lv;
             double lz = locZ + rightZ * lu + upZ * lv;
-            ctx.cameraRay().setRay(lx, ly, lz, fx - lx, fy - ly, fz - lz);
+            ctx.cameraRay().ray(lx, ly, lz, fx - lx, fy - ly, fz - lz);
         }
 
         /**

@@ -179,7 +179,7 @@ final class WhittedShader {
         if (radius == 0) {
             ctx.requireWithinBudget(1); // thousands of lights at each of a thousand shaded points
             ctx.shadowRays++;
-            cache.trace(w, ctx.shadow.setRay(px, py, pz, -lx, -ly, -lz, nx, ny, nz), light.getDistance(px, py, pz), li, walk);
+            cache.trace(w, ctx.shadow.secondary(px, py, pz, -lx, -ly, -lz, nx, ny, nz), light.getDistance(px, py, pz), li, walk);
             return walk.product;
         }
         // Soft shadow: stratified points on the disk of the light facing p.
@@ -206,7 +206,7 @@ final class WhittedShader {
             // A point of the disk below the surface's horizon sends no light to p.
             if (dist == 0 || (dx * nx + dy * ny + dz * nz) * side <= 0) continue;
             ctx.shadowRays++;
-            cache.trace(w, ctx.shadow.setRay(px, py, pz, dx, dy, dz, nx, ny, nz), dist, li, walk);
+            cache.trace(w, ctx.shadow.secondary(px, py, pz, dx, dy, dz, nx, ny, nz), dist, li, walk);
             sum.add(walk.product);
         }
         return sum.reduce(shadowSamples);

@@ -180,4 +180,21 @@ class HitTest {
         assertThat(sphereHits).isGreaterThan(200);
         assertThat(meshHits).isGreaterThan(200);
     }
+
+    @Nested
+    @DisplayName("its face outside the library")
+    class Face {
+        @Test
+        @DisplayName("code holding a record reads it: the ray setters are protected, every public method final")
+        void settersProtected() {
+            java.lang.reflect.Method[] methods = Hit.class.getDeclaredMethods();
+            assertThat(methods).filteredOn(m -> m.getName().equals("setRay") && m.getParameterCount() > 1)
+                    .hasSize(2)
+                    .allSatisfy(m -> assertThat(java.lang.reflect.Modifier.isProtected(m.getModifiers())).as(m.toString()).isTrue());
+            assertThat(Hit.class.getMethods()).filteredOn(m -> m.getDeclaringClass() == Hit.class)
+                    .isNotEmpty()
+                    .allSatisfy(m -> assertThat(java.lang.reflect.Modifier.isFinal(m.getModifiers())).as(m.toString()).isTrue())
+                    .noneSatisfy(m -> assertThat(m.getName()).startsWith("set"));
+        }
+    }
 }

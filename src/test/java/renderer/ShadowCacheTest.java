@@ -84,7 +84,7 @@ class ShadowCacheTest {
         Counted world = cloud(seed);
         ShadowCache cache = new ShadowCache();
         Transmittance cached = new Transmittance(THRESHOLD), walked = new Transmittance(THRESHOLD);
-        Hit a = new Hit(), b = new Hit();
+        RayHit a = new RayHit(), b = new RayHit();
         Random rnd = new Random(seed + 100);
         int rays = 3000, blocked = 0;
         double px = 0, py = 0, pz = 0;
@@ -97,8 +97,8 @@ class ShadowCacheTest {
             double lx = light == 0 ? 40 : -30, ly = 50, lz = light == 0 ? 20 : -45;
             double dx = lx - px, dy = ly - py, dz = lz - pz;
             double distance = i % 3 == 0 ? Double.POSITIVE_INFINITY : Math.sqrt(dx * dx + dy * dy + dz * dz);
-            a.setRay(px, py, pz, dx, dy, dz);
-            b.setRay(px, py, pz, dx, dy, dz);
+            a.ray(px, py, pz, dx, dy, dz);
+            b.ray(px, py, pz, dx, dy, dz);
             int walks = world.walks;
             cache.trace(world, a, distance, light, cached);
             if (world.walks == walks) ++blocked;
@@ -113,7 +113,7 @@ class ShadowCacheTest {
     @DisplayName("what is kept")
     class Kept {
         private final Counted world = new Counted();
-        private final Hit ray = new Hit().setRay(0, 0, -10, 0, 0, 1);
+        private final Hit ray = new RayHit().ray(0, 0, -10, 0, 0, 1);
         private final Transmittance tr = new Transmittance(THRESHOLD);
         private final ShadowCache cache = new ShadowCache();
 
@@ -165,7 +165,7 @@ class ShadowCacheTest {
             int walks = world.walks;
             cache.trace(world, ray, 100, 1, tr); // another light: nothing kept for it yet
             assertThat(world.walks).isEqualTo(walks + 1);
-            Hit past = new Hit().setRay(5, 0, -10, 0, 0, 1); // misses the sphere
+            Hit past = new RayHit().ray(5, 0, -10, 0, 0, 1); // misses the sphere
             cache.trace(world, past, 100, 0, tr);
             assertThat(world.walks).isEqualTo(walks + 2);
             assertThat(tr.product.r()).isEqualTo(1);

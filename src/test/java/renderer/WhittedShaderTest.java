@@ -41,7 +41,7 @@ class WhittedShaderTest {
         WhittedShader shader = new WhittedShader(scene.background, scene.ambientLight.getIntensity(), scene.geometries, scene.lights.toArray(new LightSource[0]),
                 beamSize, 1);
         ctx.random.reset(7, 0, 0, 0);
-        ctx.cameraRay().setRay(0, 0, 10, 0, 0, -1);
+        ctx.cameraRay().ray(0, 0, 10, 0, 0, -1);
         return shader.shadeCameraRay(ctx);
     }
 
