@@ -99,11 +99,13 @@ class RenderSettingsTest {
                     Arguments.of("withAdaptiveDepth and withAdaptiveThreshold", (UnaryOperator<RenderSettings>) s -> s
                             .withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(5).withAdaptiveThreshold(2.5),
                             (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(5, 2.5)),
-                    Arguments.of("withDepthOfField", (UnaryOperator<RenderSettings>) s -> s.withDepthOfField(900, 5, 12),
+                    Arguments.of("withDepthOfField and withDepthOfFieldSamples", (UnaryOperator<RenderSettings>) s -> s
+                            .withDepthOfField(900, 5).withDepthOfFieldSamples(12),
                             (UnaryOperator<Camera.Builder>) b -> b.setDepthOfField(900, 5).setDepthOfFieldSamples(12)),
                     Arguments.of("withSeed", (UnaryOperator<RenderSettings>) s -> s.withSeed(-42),
                             (UnaryOperator<Camera.Builder>) b -> b.setSeed(-42)),
-                    Arguments.of("withTracer", (UnaryOperator<RenderSettings>) s -> s.withTracer(false, 7, 9),
+                    Arguments.of("withBvh, withBeamSize and withShadowSamples", (UnaryOperator<RenderSettings>) s -> s
+                            .withBvh(false).withBeamSize(7).withShadowSamples(9),
                             (UnaryOperator<Camera.Builder>) b -> b.setRayTracer(new renderer.RayTracerBasic(SCENE)
                                     .setBvh(false).setBeamSize(7).setShadowSamples(9))));
         }
@@ -185,8 +187,9 @@ class RenderSettingsTest {
     class Then {
         /** A specification that states every value, each different from the one of LATER. */
         private static final RenderSettings FILE = RenderSettings.defaults("file").withImage("file", 10, 20)
-                .withGrid(3, new Color(1, 2, 3)).withAntiAliasing(AntiAliasing.CORNERS).withAntiAliasingParameters(4, 5, 6, 7.5)
-                .withDepthOfField(8.5, 9.5, 11).withThreads(1).withSeed(13).withTracer(false, 14, 15);
+                .withGrid(3, new Color(1, 2, 3)).withAntiAliasing(AntiAliasing.CORNERS).withAntiAliasingGrid(4, 5)
+                .withAdaptiveDepth(6).withAdaptiveThreshold(7.5).withDepthOfField(8.5, 9.5).withDepthOfFieldSamples(11)
+                .withThreads(1).withSeed(13).withBvh(false).withBeamSize(14).withShadowSamples(15);
 
         static Stream<Arguments> later() {
             return Stream.of(
@@ -277,8 +280,9 @@ class RenderSettingsTest {
                     none.withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(6).withBeamSize(248),
                     none.withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(6).withBeamSize(256),
                     none.withAntiAliasing(AntiAliasing.ADAPTIVE).withBeamSize(256).withShadowSamples(256),
-                    none.withDepthOfField(10, 1, 60000).withBeamSize(100),
-                    none.withAntiAliasing(AntiAliasing.CORNERS).withDepthOfField(10, 1, 60000).withBeamSize(100),
+                    none.withDepthOfField(10, 1).withDepthOfFieldSamples(60000).withBeamSize(100),
+                    none.withAntiAliasing(AntiAliasing.CORNERS).withDepthOfField(10, 1).withDepthOfFieldSamples(60000)
+                            .withBeamSize(100),
                     none.withBeamSize(Integer.MAX_VALUE).withShadowSamples(Integer.MAX_VALUE));
         }
 

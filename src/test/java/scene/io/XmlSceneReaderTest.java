@@ -441,9 +441,9 @@ class XmlSceneReaderTest {
                         <depth-of-field focal-distance="900" aperture="5" samples="12"/>
                     </render>""").settings();
             assertThat(s).isEqualTo(RenderSettings.defaults("picture").withImage("picture", 64, 32)
-                    .withGrid(8, new Color(0, 255, 0)).withThreads(3).withSeed(-42).withTracer(false, 7, 9)
-                    .withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingParameters(3, 5, 4, 2.5)
-                    .withDepthOfField(900, 5, 12));
+                    .withGrid(8, new Color(0, 255, 0)).withThreads(3).withSeed(-42).withBvh(false).withBeamSize(7)
+                    .withShadowSamples(9).withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(3, 5)
+                    .withAdaptiveDepth(4).withAdaptiveThreshold(2.5).withDepthOfField(900, 5).withDepthOfFieldSamples(12));
             assertThat(new int[] { s.width(), s.height(), s.gridInterval() }).containsExactly(64, 32, 8);
             assertColor(s.gridColor(), 0, 255, 0);
         }
