@@ -29,14 +29,17 @@ import primitives.Point;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.CameraValues;
 import renderer.ImageWriter;
 import renderer.RayTracerBasic;
+import renderer.Sampling;
 import scene.Scene;
 
 /**
  * {@link RenderSettings} as a specification: it states only what it is given, replays that onto a
  * camera builder, and leaves everything else, defaults and limits, to the library. Cameras are
- * built and described here, never rendered.
+ * built here and compared by their values ({@link CameraValues}); a few are rendered to show what a
+ * value does.
  */
 class RenderSettingsTest {
     private static final Scene SCENE = new Scene("empty");
@@ -74,9 +77,9 @@ class RenderSettingsTest {
         return rgb;
     }
 
-    /** The description of a camera built with the library's defaults and {@code change}. */
-    private static String library(UnaryOperator<Camera.Builder> change) {
-        return change.apply(view()).setSummary(false).build().describe();
+    /** The values of a camera built with the library's defaults and {@code change}. */
+    private static CameraValues library(UnaryOperator<Camera.Builder> change) {
+        return CameraValues.of(change.apply(view()).setSummary(false).build());
     }
 
     @Nested
@@ -85,7 +88,7 @@ class RenderSettingsTest {
         @Test
         @DisplayName("a specification that states nothing leaves the camera as the library makes it")
         void nothingStated() {
-            assertThat(apply(RenderSettings.empty(), view()).describe()).isEqualTo(library(b -> b));
+            assertThat(CameraValues.of(apply(RenderSettings.empty(), view()))).isEqualTo(library(b -> b));
             assertThat(RenderSettings.empty()).hasToString("RenderSettings[]");
         }
 
@@ -114,7 +117,9 @@ class RenderSettingsTest {
         @MethodSource("statements")
         @DisplayName("the camera is the one the builder's setters make")
         void sameAsTheSetters(String name, UnaryOperator<RenderSettings> statement, UnaryOperator<Camera.Builder> setters) {
-            assertThat(apply(statement.apply(RenderSettings.empty()), view()).describe()).isEqualTo(library(setters));
+            CameraValues replayed = CameraValues.of(apply(statement.apply(RenderSettings.empty()), view()));
+            assertThat(replayed).isEqualTo(library(setters)).as("a change from the library's camera")
+                    .isNotEqualTo(library(b -> b));
         }
 
         @Test
@@ -122,8 +127,8 @@ class RenderSettingsTest {
         void unstatedStays() {
             Camera.Builder camera = view().setAntiAliasingGrid(7, 2).setSeed(9).setAdaptive(5, 2.5);
             apply(RenderSettings.empty().withAntiAliasing(AntiAliasing.RANDOM), camera);
-            assertThat(camera.setSummary(false).build().describe()).startsWith("RANDOM 7x2,").endsWith("seed 9");
-            assertThat(camera.setAntiAliasing(AntiAliasing.ADAPTIVE).build().describe()).startsWith("ADAPTIVE depth 5 threshold 2.5,");
+            assertThat(CameraValues.of(camera.setSummary(false).build()).sampling()).isEqualTo(Sampling.DEFAULT
+                    .withAntiAliasing(AntiAliasing.RANDOM).withGrid(7, 2).withAdaptive(5, 2.5).withSeed(9));
         }
 
         /** The builder keeps the grid for RANDOM whatever the mode: a later {@code --aa random} finds it. */
@@ -131,8 +136,10 @@ class RenderSettingsTest {
         @DisplayName("a stated grid is replayed whatever the mode")
         void gridWithAnotherMode() {
             Camera corners = apply(RenderSettings.empty().withAntiAliasing(AntiAliasing.CORNERS).withAntiAliasingGrid(3, 5), view());
-            assertThat(corners.describe()).startsWith("CORNERS,");
-            assertThat(Camera.getBuilder(corners).setAntiAliasing(AntiAliasing.RANDOM).build().describe()).startsWith("RANDOM 3x5,");
+            assertThat(CameraValues.of(corners).sampling()).isEqualTo(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.CORNERS)
+                    .withGrid(3, 5));
+            assertThat(CameraValues.of(Camera.getBuilder(corners).setAntiAliasing(AntiAliasing.RANDOM).build()).sampling()
+                    .grid()).isEqualTo(new Sampling.Grid(3, 5));
         }
 
         /** Focal distance 0 is the pinhole whatever the aperture (it was a lens focused at 1 for aperture 5). */
@@ -165,11 +172,13 @@ class RenderSettingsTest {
             RenderSettings s = RenderSettings.empty().withAntiAliasing(AntiAliasing.ADAPTIVE);
             if (depth != null) s = s.withAdaptiveDepth(depth);
             if (threshold != null) s = s.withAdaptiveThreshold(threshold);
-            String library = library(b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE));
-            String defaults = library.substring(0, library.indexOf(','));
-            String expected = "ADAPTIVE depth " + (depth != null ? depth : defaults.split(" ")[2]) + " threshold "
-                    + (threshold != null ? threshold : defaults.split(" ")[4]);
-            assertThat(apply(s, view()).describe()).startsWith(expected + ",");
+            Sampling.Adaptive library = library(b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE)).sampling().adaptive();
+            int expectedDepth = depth != null ? depth : library.depth();
+            double expectedThreshold = threshold != null ? threshold : library.threshold();
+            assertThat(CameraValues.of(apply(s, view())))
+                    .isEqualTo(library(b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(expectedDepth, expectedThreshold)));
+            assertThat(new Sampling.Adaptive(expectedDepth, expectedThreshold)).as("the stated half, the library's other")
+                    .isNotEqualTo(library);
         }
 
         @Test

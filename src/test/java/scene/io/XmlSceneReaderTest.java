@@ -41,9 +41,12 @@ import primitives.Ray;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.CameraValues;
 import renderer.ImageWriter;
 import renderer.RayTracerBasic;
 import renderer.RenderStats;
+import renderer.Sampling;
+import renderer.View;
 
 /** Every element and attribute of the scene format, read into the library's objects. */
 class XmlSceneReaderTest {
@@ -485,8 +488,8 @@ class XmlSceneReaderTest {
                         <depth-of-field focal-distance="900" aperture="5"/>
                     </render>""").requireCamera();
             Camera camera = builder.setSummary(false).build();
-            assertThat(camera.describe()).isEqualTo(
-                    "RANDOM 3x5, DOF focal 900.0 aperture 5.0, bvh off, beam 7, shadow samples 9, seed 42");
+            assertThat(CameraValues.of(camera)).isEqualTo(new CameraValues(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.RANDOM)
+                    .withGrid(3, 5).withSeed(42), View.Lens.thin(900, 5), new CameraValues.Tracer(false, 7, 9)));
             RenderStats stats = camera.render();
             assertThat(stats.pixels()).isEqualTo(12);
             assertThat(stats.threads()).isEqualTo(2);
@@ -500,7 +503,8 @@ class XmlSceneReaderTest {
                     <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="10" vp-distance="10"/>
                     <render><anti-aliasing mode="adaptive" depth="5" threshold="2.5"/></render>""")
                     .requireCamera().build();
-            assertThat(camera.describe()).startsWith("ADAPTIVE depth 5 threshold 2.5, bvh on, beam 16, shadow samples 16");
+            assertThat(CameraValues.of(camera)).isEqualTo(new CameraValues(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.ADAPTIVE)
+                    .withAdaptive(5, 2.5), View.Lens.PINHOLE, CameraValues.Tracer.DEFAULT));
         }
 
         /**
