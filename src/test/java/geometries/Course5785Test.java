@@ -31,9 +31,12 @@ import primitives.Ray;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.CameraValues;
 import renderer.ImageWriter;
 import renderer.RayTracerType;
+import renderer.Sampling;
 import renderer.SimpleRayTracer;
+import renderer.View;
 import scene.Scene;
 
 /**
@@ -166,7 +169,9 @@ class Course5785Test {
             assertThat(same.getLocation()).isEqualTo(new Point(1, 2, 3));
             assertVector(same.getVTo(), 0, 0, -1);
             assertVector(same.getVUp(), 0, 1, 0);
-            assertThat(same.describe()).isEqualTo(first.describe()).contains("RANDOM 2x3", "focal 12.0 aperture 0.5", "seed 7");
+            assertThat(CameraValues.of(same)).isEqualTo(CameraValues.of(first)).isEqualTo(new CameraValues(Sampling.DEFAULT
+                    .withAntiAliasing(AntiAliasing.RANDOM).withGrid(2, 3).withSeed(7), View.Lens.thin(12, 0.5),
+                    CameraValues.Tracer.DEFAULT));
             for (int i = 0; i < 3; ++i)
                 for (int j = 0; j < 4; ++j) assertThat(same.constructRay(j, i)).isEqualTo(first.constructRay(j, i));
 

@@ -12,6 +12,8 @@ import renderer.ImageWriter;
 /**
  * Wording shared by the scene-file reader and the {@code render} command, so that a file that
  * cannot be read is reported in the same words whether it is a scene or a mesh.
+ *
+ * @hidden internal: the messages' wording, public for the command line and the Spark driver; a scene reads files through XmlSceneReader
  */
 public final class Messages {
     private Messages() {

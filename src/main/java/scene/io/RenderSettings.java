@@ -3,9 +3,12 @@ package scene.io;
 import java.io.IOException;
 import java.io.InvalidObjectException;
 import java.io.ObjectInputStream;
+import java.util.Collection;
+import java.util.List;
 import java.util.Objects;
 import java.util.StringJoiner;
 
+import lighting.LightSource;
 import primitives.Color;
 import renderer.AntiAliasing;
 import renderer.Camera;
@@ -290,19 +293,6 @@ public final class RenderSettings implements java.io.Serializable {
     }
 
     /**
-     * The parameters of every mode at once: each is checked when replayed.
-     *
-     * @param columns   RANDOM: jittered grid columns per pixel
-     * @param rows      RANDOM: jittered grid rows per pixel
-     * @param depth     ADAPTIVE: the deepest subdivision
-     * @param threshold ADAPTIVE: the colour difference (0..255 scale) that subdivides
-     * @return this specification with the four stated
-     */
-    public RenderSettings withAntiAliasingParameters(int columns, int rows, int depth, double threshold) {
-        return withAntiAliasingGrid(columns, rows).withAdaptiveDepth(depth).withAdaptiveThreshold(threshold);
-    }
-
-    /**
      * @param focalDistance distance of the sharp plane along the view direction; 0: the pinhole
      *                      camera (no depth of field)
      * @param aperture      lens radius in scene units
@@ -318,16 +308,6 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings withDepthOfFieldSamples(int samples) {
         return with(new Lens(lens.focalDistance, lens.aperture, samples));
-    }
-
-    /**
-     * @param focalDistance distance of the sharp plane along the view direction; 0: none
-     * @param aperture      lens radius in scene units
-     * @param samples       lens samples per pixel when anti-aliasing is off
-     * @return this specification with the lens and its samples stated
-     */
-    public RenderSettings withDepthOfField(double focalDistance, double aperture, int samples) {
-        return withDepthOfField(focalDistance, aperture).withDepthOfFieldSamples(samples);
     }
 
     /**
@@ -368,16 +348,6 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings withShadowSamples(int samples) {
         return with(new Tracer(tracer.bvh, tracer.beamSize, samples));
-    }
-
-    /**
-     * @param bvh           whether the tracer uses the bounding volume hierarchy
-     * @param beamSize      rays per glossy or diffuse-glass beam
-     * @param shadowSamples shadow rays toward a light with a radius
-     * @return this specification with the tracer's three extensions stated
-     */
-    public RenderSettings withTracer(boolean bvh, int beamSize, int shadowSamples) {
-        return withBvh(bvh).withBeamSize(beamSize).withShadowSamples(shadowSamples);
     }
 
     /**
@@ -433,7 +403,7 @@ public final class RenderSettings implements java.io.Serializable {
     }
 
     /** @return a grid line every this many pixels; 0 (not stated): no grid */
-    public int gridInterval() {
+    int gridInterval() {
         return grid.interval != null ? grid.interval : 0;
     }
 
@@ -531,7 +501,7 @@ public final class RenderSettings implements java.io.Serializable {
      *                                  with the library's message naming the factors
      */
     public RenderSettings requireRayBudget() {
-        return requireRayBudget(new Scene("ray budget"));
+        return requireRayBudget(List.of());
     }
 
     /**
@@ -543,14 +513,19 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification
      * @throws IllegalArgumentException as {@link #requireRayBudget()}, with the lights among the factors
      */
-    public RenderSettings requireRayBudget(Scene scene) {
+    RenderSettings requireRayBudget(Scene scene) {
+        return requireRayBudget(scene.lights);
+    }
+
+    /** The budget over {@code lights} (none for {@link #requireRayBudget()}: no scene is made to ask). */
+    private RenderSettings requireRayBudget(Collection<? extends LightSource> lights) {
         if (threads != null) Execution.requireThreads(threads);
         Sampling sampling = antiAliasing.over(Sampling.DEFAULT);
         if (lens.samples != null) sampling = sampling.withLensSamples(lens.samples);
         if (seed != null) sampling = sampling.withSeed(seed);
         RayBudget.require(sampling, !lens.lens().isPinhole(),
                 tracer.beamSize != null ? tracer.beamSize : RayTracerBasic.DEFAULT_BEAM_SIZE,
-                tracer.shadowSamples != null ? tracer.shadowSamples : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, scene.lights);
+                tracer.shadowSamples != null ? tracer.shadowSamples : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, lights);
         return this;
     }
 

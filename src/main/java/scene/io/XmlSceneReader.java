@@ -226,7 +226,8 @@ public final class XmlSceneReader {
                 ? image.required("name", IMAGE_NAME) : imageNameOf(root, scene.name));
         if (image != null) settings = image(image, settings);
         if ((part = parts.get("render")) != null) settings = render(part, settings, scene);
-        else if ((part = parts.get("lights")) != null) requireRayBudget(part, "", settings, scene); // the defaults, these lights
+        else if ((part = parts.get("lights")) != null) // the defaults, these lights: blamed at <lights>
+            requireRayBudget(List.of(new Stated(part, "", settings)), scene);
         ViewSpec view = (part = parts.get("camera")) != null ? camera(part) : null;
         return new LoadedScene(scene, view, settings, view != null ? null
                 : root.error("the scene has no <camera> (expected a <camera> element inside <scene> to render it)"));
@@ -554,6 +555,11 @@ public final class XmlSceneReader {
         return e.has(attribute) ? with.apply(s, e.required(attribute, type)) : s;
     }
 
+    /**
+     * The {@code <render>} element: its attributes, then {@code <anti-aliasing>}, then
+     * {@code <depth-of-field>}, each stated over the one before; the ray budget is checked once,
+     * when the element is read whole.
+     */
     private static RenderSettings render(XmlElement e, RenderSettings s, Scene scene) throws SceneFormatException {
         e.allowAttributes(List.of("threads", "seed", "bvh", "beam-size", "shadow-samples"));
         s = stated(e, "threads", THREADS, s, RenderSettings::withThreads);
@@ -561,7 +567,9 @@ public final class XmlSceneReader {
         s = stated(e, "bvh", BOOLEAN, s, RenderSettings::withBvh);
         s = stated(e, "beam-size", POSITIVE_INTEGER, s, RenderSettings::withBeamSize);
         s = stated(e, "shadow-samples", POSITIVE_INTEGER, s, RenderSettings::withShadowSamples);
-        requireRayBudget(e, e.has("beam-size") ? "beam-size" : "shadow-samples", s, scene);
+        // What the file states up to each element, in the file's order: where a budget over the limit is blamed.
+        List<Stated> stated = new ArrayList<>(3);
+        stated.add(new Stated(e, e.has("beam-size") ? "beam-size" : "shadow-samples", s));
         Map<String, XmlElement> parts = uniqueChildren(e, RENDER_CHILDREN);
         XmlElement aa = parts.get("anti-aliasing");
         if (aa != null) {
@@ -571,7 +579,7 @@ public final class XmlSceneReader {
             AntiAliasing mode = aa.required("mode", ValueType.enumeration(AntiAliasing.class));
             s = stated(aa, "depth", ADAPTIVE_DEPTH, s.withAntiAliasing(mode), RenderSettings::withAdaptiveDepth);
             s = stated(aa, "threshold", NON_NEGATIVE, s, RenderSettings::withAdaptiveThreshold);
-            requireRayBudget(aa, mode == AntiAliasing.RANDOM ? "grid" : mode == AntiAliasing.ADAPTIVE ? "depth" : "mode", s, scene);
+            stated.add(new Stated(aa, mode == AntiAliasing.RANDOM ? "grid" : mode == AntiAliasing.ADAPTIVE ? "depth" : "mode", s));
         }
         XmlElement dof = parts.get("depth-of-field");
         if (dof != null) {
@@ -581,27 +589,54 @@ public final class XmlSceneReader {
             double aperture = dof.required("aperture", NON_NEGATIVE);
             s = stated(dof, "samples", LENS_SAMPLES, s.withDepthOfField(focalDistance, aperture),
                     RenderSettings::withDepthOfFieldSamples);
-            requireRayBudget(dof, "samples", s, scene);
+            stated.add(new Stated(dof, "samples", s));
         }
+        requireRayBudget(stated, scene);
         return s;
     }
 
     /**
-     * The library's ray budget (see {@link RenderSettings#requireRayBudget(Scene)}) for what the
-     * file states so far, over the scene's lights (read before the settings): a budget the element
-     * just exceeded is reported at {@code attribute} of {@code e}, or at {@code e} when the
-     * attribute is not written (a default, or the lights, made the product too large).
+     * What a file states up to and including {@code element}, and where a ray budget these
+     * settings exceed is reported: at {@code attribute} of {@code element}, or at the element
+     * when the attribute is not written (a default, or the lights, made the product too large).
      */
-    private static void requireRayBudget(XmlElement e, String attribute, RenderSettings s, Scene scene)
-            throws SceneFormatException {
+    private record Stated(XmlElement element, String attribute, RenderSettings settings) {
+    }
+
+    /**
+     * The library's ray budget (see {@link RenderSettings#requireRayBudget(Scene)}) for every
+     * setting the file states (the last of {@code stated}), over the scene's lights (read before
+     * the settings): checked once. Only when it fails are the earlier parts checked, to report the
+     * budget where reading the file in order first exceeds it, with that part's figures; the
+     * settings as a whole may be within it although a part is not (a lens takes ADAPTIVE's depth
+     * 6 at 4,096 samples, not the 4,225 of its lattice), and are then accepted, as the camera is.
+     *
+     * @param stated the file's settings, element by element, in the file's order; not empty
+     */
+    private static void requireRayBudget(List<Stated> stated, Scene scene) throws SceneFormatException {
+        Stated all = stated.get(stated.size() - 1);
         try {
-            s.requireRayBudget(scene);
-        } catch (IllegalArgumentException ex) {
-            String reason = "invalid <" + e.name() + ">: " + ex.getMessage() + " (expected samples per pixel"
-                    + " × (1 + 2 × beam-size) × (1 + shadow-samples × lights with a radius + other lights) at most "
-                    + RenderSettings.MAX_RAYS_PER_PIXEL + ")";
-            throw e.has(attribute) ? e.errorAt(attribute, reason, ex) : e.error(reason, ex);
+            all.settings.requireRayBudget(scene);
+        } catch (IllegalArgumentException over) {
+            for (Stated part : stated.subList(0, stated.size() - 1)) {
+                try {
+                    part.settings.requireRayBudget(scene);
+                } catch (IllegalArgumentException first) {
+                    first.addSuppressed(over); // the whole's figures, kept beside the part's
+                    throw overBudget(part, first);
+                }
+            }
+            throw overBudget(all, over);
         }
+    }
+
+    /** The error of a budget {@code part} exceeds, at its attribute or element, with the library's message. */
+    private static SceneFormatException overBudget(Stated part, IllegalArgumentException ex) {
+        XmlElement e = part.element;
+        String reason = "invalid <" + e.name() + ">: " + ex.getMessage() + " (expected samples per pixel"
+                + " × (1 + 2 × beam-size) × (1 + shadow-samples × lights with a radius + other lights) at most "
+                + RenderSettings.MAX_RAYS_PER_PIXEL + ")";
+        return e.has(part.attribute) ? e.errorAt(part.attribute, reason, ex) : e.error(reason, ex);
     }
 
     /**

@@ -91,17 +91,21 @@ class SparkRendererTest {
         return List.of(
                 Arguments.of("NONE", SHOWCASE, (UnaryOperator<RenderSettings>) s -> s.withAntiAliasing(AntiAliasing.NONE)),
                 Arguments.of("RANDOM 3x2", SHOWCASE, (UnaryOperator<RenderSettings>) s -> s
-                        .withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingParameters(3, 2, 3, 8)),
+                        .withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(3, 2).withAdaptiveDepth(3)
+                        .withAdaptiveThreshold(8)),
                 Arguments.of("CORNERS", SHOWCASE, (UnaryOperator<RenderSettings>) s -> s.withAntiAliasing(AntiAliasing.CORNERS)),
                 Arguments.of("ADAPTIVE depth 4", SHOWCASE, (UnaryOperator<RenderSettings>) s -> s
-                        .withAntiAliasing(AntiAliasing.ADAPTIVE).withAntiAliasingParameters(4, 4, 4, 4)),
+                        .withAntiAliasing(AntiAliasing.ADAPTIVE).withAntiAliasingGrid(4, 4).withAdaptiveDepth(4)
+                        .withAdaptiveThreshold(4)),
                 Arguments.of("depth of field", SHOWCASE, (UnaryOperator<RenderSettings>) s -> s
-                        .withAntiAliasing(AntiAliasing.NONE).withDepthOfField(900, 8, 3)),
+                        .withAntiAliasing(AntiAliasing.NONE).withDepthOfField(900, 8).withDepthOfFieldSamples(3)),
                 Arguments.of("ADAPTIVE + depth of field", SHOWCASE, (UnaryOperator<RenderSettings>) s -> s
-                        .withAntiAliasing(AntiAliasing.ADAPTIVE).withAntiAliasingParameters(4, 4, 2, 4)
+                        .withAntiAliasing(AntiAliasing.ADAPTIVE).withAntiAliasingGrid(4, 4).withAdaptiveDepth(2)
+                        .withAdaptiveThreshold(4)
                         .withDepthOfField(900, 8)),
                 Arguments.of("glossy wall, RANDOM 2x2, seed 7", GLOSSY, (UnaryOperator<RenderSettings>) s -> s
-                        .withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingParameters(2, 2, 3, 8).withSeed(7)),
+                        .withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(2, 2).withAdaptiveDepth(3)
+                        .withAdaptiveThreshold(8).withSeed(7)),
                 Arguments.of("OBJ mesh (teapot), grid", TEAPOT, (UnaryOperator<RenderSettings>) s -> s
                         .withGrid(10, RenderSettings.DEFAULT_GRID_COLOR)));
     }
@@ -140,8 +144,8 @@ class SparkRendererTest {
             // The third frame is large enough to be split into several tiles, the others are one tile each.
             RenderSettings s = i == 2 ? f.settings().withImage("frame2", 40, 36)
                     : f.settings().withImage("frame" + i, 16, 12);
-            frames.add(f.withSettings(s.withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingParameters(2, 2, 3, 8)
-                    .withSeed(seed)).withOutput(dir.resolve("frame" + i + ".png")));
+            frames.add(f.withSettings(s.withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(2, 2).withAdaptiveDepth(3)
+                    .withAdaptiveThreshold(8).withSeed(seed)).withOutput(dir.resolve("frame" + i + ".png")));
         }
         SparkRenderStats stats = renderer().render(frames);
         assertThat(stats.frames()).isEqualTo(3);

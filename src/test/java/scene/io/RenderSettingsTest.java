@@ -29,14 +29,17 @@ import primitives.Point;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.CameraValues;
 import renderer.ImageWriter;
 import renderer.RayTracerBasic;
+import renderer.Sampling;
 import scene.Scene;
 
 /**
  * {@link RenderSettings} as a specification: it states only what it is given, replays that onto a
  * camera builder, and leaves everything else, defaults and limits, to the library. Cameras are
- * built and described here, never rendered.
+ * built here and compared by their values ({@link CameraValues}); a few are rendered to show what a
+ * value does.
  */
 class RenderSettingsTest {
     private static final Scene SCENE = new Scene("empty");
@@ -74,9 +77,9 @@ class RenderSettingsTest {
         return rgb;
     }
 
-    /** The description of a camera built with the library's defaults and {@code change}. */
-    private static String library(UnaryOperator<Camera.Builder> change) {
-        return change.apply(view()).setSummary(false).build().describe();
+    /** The values of a camera built with the library's defaults and {@code change}. */
+    private static CameraValues library(UnaryOperator<Camera.Builder> change) {
+        return CameraValues.of(change.apply(view()).setSummary(false).build());
     }
 
     @Nested
@@ -85,7 +88,7 @@ class RenderSettingsTest {
         @Test
         @DisplayName("a specification that states nothing leaves the camera as the library makes it")
         void nothingStated() {
-            assertThat(apply(RenderSettings.empty(), view()).describe()).isEqualTo(library(b -> b));
+            assertThat(CameraValues.of(apply(RenderSettings.empty(), view()))).isEqualTo(library(b -> b));
             assertThat(RenderSettings.empty()).hasToString("RenderSettings[]");
         }
 
@@ -99,11 +102,13 @@ class RenderSettingsTest {
                     Arguments.of("withAdaptiveDepth and withAdaptiveThreshold", (UnaryOperator<RenderSettings>) s -> s
                             .withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(5).withAdaptiveThreshold(2.5),
                             (UnaryOperator<Camera.Builder>) b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(5, 2.5)),
-                    Arguments.of("withDepthOfField", (UnaryOperator<RenderSettings>) s -> s.withDepthOfField(900, 5, 12),
+                    Arguments.of("withDepthOfField and withDepthOfFieldSamples", (UnaryOperator<RenderSettings>) s -> s
+                            .withDepthOfField(900, 5).withDepthOfFieldSamples(12),
                             (UnaryOperator<Camera.Builder>) b -> b.setDepthOfField(900, 5).setDepthOfFieldSamples(12)),
                     Arguments.of("withSeed", (UnaryOperator<RenderSettings>) s -> s.withSeed(-42),
                             (UnaryOperator<Camera.Builder>) b -> b.setSeed(-42)),
-                    Arguments.of("withTracer", (UnaryOperator<RenderSettings>) s -> s.withTracer(false, 7, 9),
+                    Arguments.of("withBvh, withBeamSize and withShadowSamples", (UnaryOperator<RenderSettings>) s -> s
+                            .withBvh(false).withBeamSize(7).withShadowSamples(9),
                             (UnaryOperator<Camera.Builder>) b -> b.setRayTracer(new renderer.RayTracerBasic(SCENE)
                                     .setBvh(false).setBeamSize(7).setShadowSamples(9))));
         }
@@ -112,7 +117,9 @@ class RenderSettingsTest {
         @MethodSource("statements")
         @DisplayName("the camera is the one the builder's setters make")
         void sameAsTheSetters(String name, UnaryOperator<RenderSettings> statement, UnaryOperator<Camera.Builder> setters) {
-            assertThat(apply(statement.apply(RenderSettings.empty()), view()).describe()).isEqualTo(library(setters));
+            CameraValues replayed = CameraValues.of(apply(statement.apply(RenderSettings.empty()), view()));
+            assertThat(replayed).isEqualTo(library(setters)).as("a change from the library's camera")
+                    .isNotEqualTo(library(b -> b));
         }
 
         @Test
@@ -120,8 +127,8 @@ class RenderSettingsTest {
         void unstatedStays() {
             Camera.Builder camera = view().setAntiAliasingGrid(7, 2).setSeed(9).setAdaptive(5, 2.5);
             apply(RenderSettings.empty().withAntiAliasing(AntiAliasing.RANDOM), camera);
-            assertThat(camera.setSummary(false).build().describe()).startsWith("RANDOM 7x2,").endsWith("seed 9");
-            assertThat(camera.setAntiAliasing(AntiAliasing.ADAPTIVE).build().describe()).startsWith("ADAPTIVE depth 5 threshold 2.5,");
+            assertThat(CameraValues.of(camera.setSummary(false).build()).sampling()).isEqualTo(Sampling.DEFAULT
+                    .withAntiAliasing(AntiAliasing.RANDOM).withGrid(7, 2).withAdaptive(5, 2.5).withSeed(9));
         }
 
         /** The builder keeps the grid for RANDOM whatever the mode: a later {@code --aa random} finds it. */
@@ -129,8 +136,10 @@ class RenderSettingsTest {
         @DisplayName("a stated grid is replayed whatever the mode")
         void gridWithAnotherMode() {
             Camera corners = apply(RenderSettings.empty().withAntiAliasing(AntiAliasing.CORNERS).withAntiAliasingGrid(3, 5), view());
-            assertThat(corners.describe()).startsWith("CORNERS,");
-            assertThat(Camera.getBuilder(corners).setAntiAliasing(AntiAliasing.RANDOM).build().describe()).startsWith("RANDOM 3x5,");
+            assertThat(CameraValues.of(corners).sampling()).isEqualTo(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.CORNERS)
+                    .withGrid(3, 5));
+            assertThat(CameraValues.of(Camera.getBuilder(corners).setAntiAliasing(AntiAliasing.RANDOM).build()).sampling()
+                    .grid()).isEqualTo(new Sampling.Grid(3, 5));
         }
 
         /** Focal distance 0 is the pinhole whatever the aperture (it was a lens focused at 1 for aperture 5). */
@@ -163,11 +172,13 @@ class RenderSettingsTest {
             RenderSettings s = RenderSettings.empty().withAntiAliasing(AntiAliasing.ADAPTIVE);
             if (depth != null) s = s.withAdaptiveDepth(depth);
             if (threshold != null) s = s.withAdaptiveThreshold(threshold);
-            String library = library(b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE));
-            String defaults = library.substring(0, library.indexOf(','));
-            String expected = "ADAPTIVE depth " + (depth != null ? depth : defaults.split(" ")[2]) + " threshold "
-                    + (threshold != null ? threshold : defaults.split(" ")[4]);
-            assertThat(apply(s, view()).describe()).startsWith(expected + ",");
+            Sampling.Adaptive library = library(b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE)).sampling().adaptive();
+            int expectedDepth = depth != null ? depth : library.depth();
+            double expectedThreshold = threshold != null ? threshold : library.threshold();
+            assertThat(CameraValues.of(apply(s, view())))
+                    .isEqualTo(library(b -> b.setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(expectedDepth, expectedThreshold)));
+            assertThat(new Sampling.Adaptive(expectedDepth, expectedThreshold)).as("the stated half, the library's other")
+                    .isNotEqualTo(library);
         }
 
         @Test
@@ -185,8 +196,9 @@ class RenderSettingsTest {
     class Then {
         /** A specification that states every value, each different from the one of LATER. */
         private static final RenderSettings FILE = RenderSettings.defaults("file").withImage("file", 10, 20)
-                .withGrid(3, new Color(1, 2, 3)).withAntiAliasing(AntiAliasing.CORNERS).withAntiAliasingParameters(4, 5, 6, 7.5)
-                .withDepthOfField(8.5, 9.5, 11).withThreads(1).withSeed(13).withTracer(false, 14, 15);
+                .withGrid(3, new Color(1, 2, 3)).withAntiAliasing(AntiAliasing.CORNERS).withAntiAliasingGrid(4, 5)
+                .withAdaptiveDepth(6).withAdaptiveThreshold(7.5).withDepthOfField(8.5, 9.5).withDepthOfFieldSamples(11)
+                .withThreads(1).withSeed(13).withBvh(false).withBeamSize(14).withShadowSamples(15);
 
         static Stream<Arguments> later() {
             return Stream.of(
@@ -277,8 +289,9 @@ class RenderSettingsTest {
                     none.withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(6).withBeamSize(248),
                     none.withAntiAliasing(AntiAliasing.ADAPTIVE).withAdaptiveDepth(6).withBeamSize(256),
                     none.withAntiAliasing(AntiAliasing.ADAPTIVE).withBeamSize(256).withShadowSamples(256),
-                    none.withDepthOfField(10, 1, 60000).withBeamSize(100),
-                    none.withAntiAliasing(AntiAliasing.CORNERS).withDepthOfField(10, 1, 60000).withBeamSize(100),
+                    none.withDepthOfField(10, 1).withDepthOfFieldSamples(60000).withBeamSize(100),
+                    none.withAntiAliasing(AntiAliasing.CORNERS).withDepthOfField(10, 1).withDepthOfFieldSamples(60000)
+                            .withBeamSize(100),
                     none.withBeamSize(Integer.MAX_VALUE).withShadowSamples(Integer.MAX_VALUE));
         }
 

@@ -62,7 +62,7 @@ class XmlSceneReaderFuzzTest {
             return;
         }
         RenderSettings settings = loaded.settings().withImage("fuzz", 3, 2).withThreads(0)
-                .withAntiAliasing(AntiAliasing.NONE).withDepthOfField(0, 0, 1).withBeamSize(2).withShadowSamples(2);
+                .withAntiAliasing(AntiAliasing.NONE).withDepthOfField(0, 0).withDepthOfFieldSamples(1).withBeamSize(2).withShadowSamples(2);
         ImageWriter image = settings.newImageWriter();
         settings.applyTo(view, loaded.scene(), image).setSummary(false).setDebugPrint(0).build().render();
     }

@@ -1,6 +1,7 @@
 package scene.io;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.catchThrowableOfType;
 import static org.assertj.core.api.Assertions.within;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -8,13 +9,16 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
+import java.util.stream.Stream;
 
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.MethodSource;
 
 import geometries.Cylinder;
 import geometries.Geometry;
@@ -37,9 +41,12 @@ import primitives.Ray;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.CameraValues;
 import renderer.ImageWriter;
 import renderer.RayTracerBasic;
 import renderer.RenderStats;
+import renderer.Sampling;
+import renderer.View;
 
 /** Every element and attribute of the scene format, read into the library's objects. */
 class XmlSceneReaderTest {
@@ -437,9 +444,9 @@ class XmlSceneReaderTest {
                         <depth-of-field focal-distance="900" aperture="5" samples="12"/>
                     </render>""").settings();
             assertThat(s).isEqualTo(RenderSettings.defaults("picture").withImage("picture", 64, 32)
-                    .withGrid(8, new Color(0, 255, 0)).withThreads(3).withSeed(-42).withTracer(false, 7, 9)
-                    .withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingParameters(3, 5, 4, 2.5)
-                    .withDepthOfField(900, 5, 12));
+                    .withGrid(8, new Color(0, 255, 0)).withThreads(3).withSeed(-42).withBvh(false).withBeamSize(7)
+                    .withShadowSamples(9).withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(3, 5)
+                    .withAdaptiveDepth(4).withAdaptiveThreshold(2.5).withDepthOfField(900, 5).withDepthOfFieldSamples(12));
             assertThat(new int[] { s.width(), s.height(), s.gridInterval() }).containsExactly(64, 32, 8);
             assertColor(s.gridColor(), 0, 255, 0);
         }
@@ -481,8 +488,8 @@ class XmlSceneReaderTest {
                         <depth-of-field focal-distance="900" aperture="5"/>
                     </render>""").requireCamera();
             Camera camera = builder.setSummary(false).build();
-            assertThat(camera.describe()).isEqualTo(
-                    "RANDOM 3x5, DOF focal 900.0 aperture 5.0, bvh off, beam 7, shadow samples 9, seed 42");
+            assertThat(CameraValues.of(camera)).isEqualTo(new CameraValues(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.RANDOM)
+                    .withGrid(3, 5).withSeed(42), View.Lens.thin(900, 5), new CameraValues.Tracer(false, 7, 9)));
             RenderStats stats = camera.render();
             assertThat(stats.pixels()).isEqualTo(12);
             assertThat(stats.threads()).isEqualTo(2);
@@ -496,7 +503,8 @@ class XmlSceneReaderTest {
                     <camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="10" vp-distance="10"/>
                     <render><anti-aliasing mode="adaptive" depth="5" threshold="2.5"/></render>""")
                     .requireCamera().build();
-            assertThat(camera.describe()).startsWith("ADAPTIVE depth 5 threshold 2.5, bvh on, beam 16, shadow samples 16");
+            assertThat(CameraValues.of(camera)).isEqualTo(new CameraValues(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.ADAPTIVE)
+                    .withAdaptive(5, 2.5), View.Lens.PINHOLE, CameraValues.Tracer.DEFAULT));
         }
 
         /**
@@ -523,6 +531,102 @@ class XmlSceneReaderTest {
             RenderSettings s = read("<scene name=\"x\"/>").settings();
             assertThat(s.imageName()).isEqualTo("x");
             assertThat(new int[] { s.width(), s.height(), s.gridInterval() }).containsExactly(500, 500, 0);
+        }
+    }
+
+    /**
+     * The ray budget is checked once, when {@code <render>} is read whole (or, without it, once
+     * for the defaults over the lights); a budget over the limit is reported where reading the file
+     * in order first exceeds it, with the library's figures for what the file stated up to there.
+     */
+    @Nested
+    @DisplayName("the ray budget")
+    class RayBudget {
+        /** One light with a radius: each shaded point takes the shadow samples toward it. */
+        private static final String SOFT_LIGHT = "<lights><point-light color=\"100 100 100\" position=\"0 5 0\" radius=\"1\"/></lights>";
+        private static final String CAMERA = "<camera location=\"0 0 0\" direction=\"0 0 -1\" up=\"0 1 0\" vp-size=\"10\""
+                + " vp-distance=\"10\"/><image width=\"2\" height=\"2\"/>";
+
+        /**
+         * 31,776 soft lights: with the default 16 shadow samples and beams of 16 rays, 33 × (1 + 16
+         * × 31,776) = 16,777,761 rays, just over the limit.
+         */
+        private static String softLights() {
+            return "<lights>" + "<point-light color=\"1 1 1\" position=\"0 5 0\" radius=\"1\"/>".repeat(31_776) + "</lights>";
+        }
+
+        /** The library's words for a budget over the limit, as the reader reports them at {@code element}. */
+        private static String overBudget(String element, String mode, int samples, int beam, int shadow, int soft, long rays) {
+            return "invalid <" + element + ">: " + mode + " sampling with " + samples + " samples per pixel × (1 + 2 beams of "
+                    + beam + " rays: reflection and transmission) × (1 + " + shadow + " shadow samples × " + soft + " soft "
+                    + (soft == 1 ? "light" : "lights") + " + 0 other lights) is " + rays + " rays per pixel, more than the"
+                    + " limit of 16777216 (expected samples per pixel × (1 + 2 × beam-size) × (1 + shadow-samples × lights"
+                    + " with a radius + other lights) at most 16777216)";
+        }
+
+        static Stream<Arguments> overTheLimit() {
+            return Stream.of(
+                    // name, the file's line 2, the text the error points at, the reason
+                    Arguments.of("the attributes alone: at beam-size",
+                            "<render beam-size=\"2048\" shadow-samples=\"4096\"/>" + SOFT_LIGHT, "beam-size=",
+                            overBudget("render", "NONE", 1, 2048, 4096, 1, 16_785_409L)),
+                    Arguments.of("the attributes alone, a lens after them: at beam-size, with the figures before the lens",
+                            "<render beam-size=\"2048\" shadow-samples=\"4096\"><depth-of-field focal-distance=\"10\""
+                                    + " aperture=\"1\" samples=\"2\"/></render>" + SOFT_LIGHT, "beam-size=",
+                            overBudget("render", "NONE", 1, 2048, 4096, 1, 16_785_409L)),
+                    Arguments.of("the lights alone, no <render>: at <lights>", softLights(), "<lights>",
+                            overBudget("lights", "NONE", 1, 16, 16, 31_776, 16_777_761L)),
+                    Arguments.of("the lights under a <render> that states neither beams nor shadow samples: at <render>",
+                            "<render threads=\"1\"/>" + softLights(), "<render",
+                            overBudget("render", "NONE", 1, 16, 16, 31_776, 16_777_761L)),
+                    // 5 × 200,001 × 17 = 17,000,085; the beams alone 3,400,017.
+                    Arguments.of("CORNERS' 5 samples × the beams: at mode",
+                            "<render beam-size=\"100000\"><anti-aliasing mode=\"corners\"/></render>" + SOFT_LIGHT, "mode=",
+                            overBudget("anti-aliasing", "CORNERS", 5, 100_000, 16, 1, 17_000_085L)),
+                    Arguments.of("ADAPTIVE's lattice of depth 6 × the beams: at depth",
+                            "<render beam-size=\"256\"><anti-aliasing mode=\"adaptive\" depth=\"6\"/></render>" + SOFT_LIGHT,
+                            "depth=", overBudget("anti-aliasing", "ADAPTIVE", 4225, 256, 16, 1, 36_846_225L)),
+                    // 16 × 80,001 × 17 = 21,760,272; the beams alone 1,360,017.
+                    Arguments.of("the default 16 lens samples × the beams: at <depth-of-field>, which does not state them",
+                            "<render beam-size=\"40000\"><depth-of-field focal-distance=\"10\" aperture=\"1\"/></render>"
+                                    + SOFT_LIGHT, "<depth-of-field",
+                            overBudget("depth-of-field", "NONE", 16, 40_000, 16, 1, 21_760_272L)),
+                    // Neither 60,000 lens samples (× 33 × 17) nor beams of 100 rays (× 17) alone are over.
+                    Arguments.of("only the combination of lens samples and beams: at samples",
+                            "<render beam-size=\"100\"><depth-of-field focal-distance=\"10\" aperture=\"1\" samples=\"60000\"/>"
+                                    + "</render>" + SOFT_LIGHT, "samples=",
+                            overBudget("depth-of-field", "NONE", 60_000, 100, 16, 1, 205_020_000L)));
+        }
+
+        @ParameterizedTest(name = "{0}")
+        @MethodSource("overTheLimit")
+        @DisplayName("a budget over the limit is reported where the file first exceeds it, with the figures up to there")
+        void reportedWhereFirstExceeded(String name, String line2, String at, String reason) throws IOException {
+            SceneFormatException e = catchThrowableOfType(SceneFormatException.class, () -> readScene(line2));
+            assertThat(e).as("reading must fail").isNotNull();
+            assertThat(e.getReason()).isEqualTo(reason);
+            assertThat(new int[] { e.getLine(), e.getColumn() }).as("line and column of " + at)
+                    .containsExactly(2, line2.indexOf(at) + 1);
+            assertThat(e.getCause()).isInstanceOf(IllegalArgumentException.class);
+        }
+
+        /**
+         * With a lens, ADAPTIVE samples each pixel on its own, at most 4^6 = 4,096 samples at depth
+         * 6, not its lattice's 65² = 4,225: 4,096 × 237 × 17 = 16,502,784 is within the budget,
+         * 4,225 × 237 × 17 = 17,022,525 is not. The file is held to what its camera traces.
+         */
+        @Test
+        @DisplayName("the settings as a whole: ADAPTIVE depth 6 over the budget without a lens, within it with one")
+        void wholeSettings() throws Exception {
+            String adaptive = "<render beam-size=\"118\"><anti-aliasing mode=\"adaptive\" depth=\"6\"/>";
+            SceneFormatException e = catchThrowableOfType(SceneFormatException.class,
+                    () -> readScene(adaptive + "</render>" + SOFT_LIGHT));
+            assertThat(e).as("without a lens").isNotNull();
+            assertThat(e.getReason()).isEqualTo(overBudget("anti-aliasing", "ADAPTIVE", 4225, 118, 16, 1, 17_022_525L));
+
+            LoadedScene withLens = readScene(adaptive + "<depth-of-field focal-distance=\"10\" aperture=\"1\"/></render>"
+                    + SOFT_LIGHT + CAMERA);
+            assertThat(withLens.requireCamera().setSummary(false).build()).as("the camera agrees").isNotNull();
         }
     }
 }
