@@ -12,7 +12,6 @@ import lighting.LightSource;
 import primitives.Color;
 import renderer.AntiAliasing;
 import renderer.Camera;
-import renderer.Execution;
 import renderer.ImageWriter;
 import renderer.RayBudget;
 import renderer.RayTracerBasic;
@@ -496,9 +495,9 @@ public final class RenderSettings implements java.io.Serializable {
      * depends on the sampling, the lens and the tracer, not on the view), with no lights.
      *
      * @return this specification
-     * @throws IllegalArgumentException for a stated value the camera or the tracer refuses, or
-     *                                  more than {@link #MAX_RAYS_PER_PIXEL} rays per pixel,
-     *                                  with the library's message naming the factors
+     * @throws IllegalArgumentException for more than {@link #MAX_RAYS_PER_PIXEL} rays per pixel,
+     *                                  with the library's message naming the factors (each value
+     *                                  alone was checked when it was stated)
      */
     public RenderSettings requireRayBudget() {
         return requireRayBudget(List.of());
@@ -519,7 +518,7 @@ public final class RenderSettings implements java.io.Serializable {
 
     /** The budget over {@code lights} (none for {@link #requireRayBudget()}: no scene is made to ask). */
     private RenderSettings requireRayBudget(Collection<? extends LightSource> lights) {
-        if (threads != null) Execution.requireThreads(threads);
+        // Threads are not the budget's: the file's reader and the command line check them as they are stated.
         Sampling sampling = antiAliasing.over(Sampling.DEFAULT);
         if (lens.samples != null) sampling = sampling.withLensSamples(lens.samples);
         if (seed != null) sampling = sampling.withSeed(seed);
