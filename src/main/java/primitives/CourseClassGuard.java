@@ -33,7 +33,7 @@ public final class CourseClassGuard {
     static final List<String> LIBRARY_CLASSES = List.of(
             "primitives.Color", "primitives.Double3", "primitives.Material", "primitives.Point", "primitives.Ray",
             "primitives.LibraryClasses", "primitives.Rgb", "primitives.Util", "primitives.Vector",
-            "geometries.BoundingBox", "geometries.Bvh", "geometries.BvhBinner", "geometries.BvhBuilder",
+            "geometries.BoundingBox", "geometries.BuildBoxes", "geometries.Bvh", "geometries.BvhBinner", "geometries.BvhBuilder",
             "geometries.BvhLeaf", "geometries.BvhNodes", "geometries.Cylinder", "geometries.Geometries",
             "geometries.Geometry", "geometries.Hit", "geometries.HitVisitor", "geometries.HookCheck",
             "geometries.Intersectable", "geometries.Plane", "geometries.Polygon", "geometries.Ranges",
@@ -45,7 +45,7 @@ public final class CourseClassGuard {
             "scene.Scene",
             "renderer.AntiAliasing", "renderer.CallingTest", "renderer.Camera", "renderer.CenterSampler",
             "renderer.Estimator", "renderer.Execution", "renderer.GridSampler", "renderer.ImageWriter", "renderer.InFlightFile", "renderer.LatticeSampler",
-            "renderer.NoiseAdaptiveSampler", "renderer.PixelSampler", "renderer.PreparedTracer", "renderer.Progress", "renderer.RayBudget", "renderer.RayTracerBase", "renderer.RayTracerBasic",
+            "renderer.NoiseAdaptiveSampler", "renderer.PixelSampler", "renderer.PreparedTracer", "renderer.Progress", "renderer.RayBudget", "renderer.RayHit", "renderer.RayTracerBase", "renderer.RayTracerBasic",
             "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
             "renderer.RenderStats", "renderer.SampleStream", "renderer.Sampling", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
             "renderer.SobolPoints", "renderer.TraceContext", "renderer.Transmittance", "renderer.View", "renderer.WhittedShader",
