@@ -88,8 +88,11 @@ class RenderLoopTest {
                 .build();
         assertThatThrownBy(camera::renderImage).isInstanceOf(IllegalStateException.class)
                 .hasMessage("tracer failed on purpose");
-        // Each other worker may finish the tile it is on, but claims no new one: a few tiles of
-        // 256 rays, not the 65 536 of the whole image.
-        assertThat(tracer.calls.get()).as("rays traced").isLessThanOrEqualTo(100 + threads * 2 * 256);
+        // Each other worker may finish the tile it is on, but claims no new one once the failure
+        // is recorded: a few tiles of 256 rays, not the 65 536 of the whole image. How many
+        // depends on the scheduler (on two cores under load, the failing worker was once
+        // descheduled between its throw and the record while three others traced 27 tiles), so
+        // the bound is half the image, which workers that ignored the failure would pass.
+        assertThat(tracer.calls.get()).as("rays traced").isLessThan(size * size / 2);
     }
 }
