@@ -241,13 +241,13 @@ public final class Bvh extends Intersectable {
     }
 
     /**
-     * The closest hit: the unbounded leaves, then the tree's walk, the {@link #walk wide one}
+     * The closest hit: the unbounded leaves, then the tree's walk, the wide one ({@code walk})
      * when this tree has one, else the binary one below.
      *
      * <p>The tie rule, which makes the answer independent of the order of the walk: of hits at
      * the same distance, one found before the walk (an unbounded leaf, or by the caller) wins,
      * then the primitive first in the tree's leaf order. Boxes entered exactly at the current
-     * hit's distance are therefore still walked ({@link #limit}).
+     * hit's distance are therefore still walked ({@code limit}).
      */
     @Override
     public boolean closestHit(Hit hit) {
