@@ -181,7 +181,7 @@ final class BvhBuilder {
             b.unite(chunkBounds, from / grain * BOUNDS, from, to);
         });
         double[] rootBounds = new double[BOUNDS];
-        b.unite(rootBounds, chunkBounds);
+        unite(rootBounds, chunkBounds);
         b.build(rootBounds);
         // The leaves' primitives in leaf order, and each slot's place in it. A gather through
         // the final permutation, in leaf order: in one tight loop the memory system overlaps
