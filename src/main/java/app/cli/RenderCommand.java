@@ -233,7 +233,7 @@ public final class RenderCommand implements Callable<Integer> {
                     + " (give Java more memory with -Xmx)");
             return FAILURE;
         }
-        RenderSettings settings = override(job.settings());
+        RenderSettings settings = override(job.settings(), job.scene());
         Path target = output != null ? output : ImageWriter.IMAGES.resolve(settings.imageName() + ".png");
 
         // The one image of the run, at its final size: the reader allocated none.
@@ -354,14 +354,15 @@ public final class RenderCommand implements Callable<Integer> {
      * The file's settings, then the command line's options, a second specification replayed after
      * the file's (see {@link #options(RenderSettings)}).
      *
+     * @param scene the file's scene: its lights count in the ray budget, as when its camera builds
      * @throws ParameterException for a size with too many pixels, or an {@code --aa} that takes
      *                            the file's values over the ray budget
      */
-    RenderSettings override(RenderSettings file) {
+    RenderSettings override(RenderSettings file, Scene scene) {
         RenderSettings settings = file.then(options(file));
         if (antiAliasing != null) {
             try {
-                settings.requireRayBudget();
+                settings.requireRayBudget(scene);
             } catch (IllegalArgumentException e) { // the file's grid or depth, now used, exceeds the ray budget
                 throw usage("--aa " + antiAliasing + ": " + e.getMessage());
             }

@@ -3,8 +3,9 @@ package app.cli;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.Objects;
-import java.util.function.UnaryOperator;
+import java.util.function.BiFunction;
 
+import scene.Scene;
 import scene.io.RenderSettings;
 
 /**
@@ -14,15 +15,16 @@ import scene.io.RenderSettings;
  *                     {@code yarn}, {@code k8s://…}), or {@value #SUBMIT} for the master that
  *                     {@code spark-submit --master} configured
  * @param scenes       the scene files, at least one; several are frames of one job
- * @param settings     the command line's changes to each file's settings (it may throw the
- *                     command line's usage error)
+ * @param settings     the command line's changes to each file's settings, given the file's scene
+ *                     (its lights count in the ray budget); it may throw the command line's usage
+ *                     error
  * @param output       the PNG to write, for a single scene; null: images/&lt;image name&gt;.png
  * @param progressStep percent between progress lines; 0: none
  * @param summary      whether to print the summary and the "wrote" lines
  * @param meshRoot     the folder the scenes' meshes may be read from; null: each scene file's own
  */
-public record SparkRequest(String master, List<Path> scenes, UnaryOperator<RenderSettings> settings, Path output,
-                           double progressStep, boolean summary, Path meshRoot) {
+public record SparkRequest(String master, List<Path> scenes, BiFunction<RenderSettings, Scene, RenderSettings> settings,
+                           Path output, double progressStep, boolean summary, Path meshRoot) {
     /** The master value that defers to spark-submit's {@code --master}. */
     public static final String SUBMIT = "submit";
 
@@ -59,8 +61,8 @@ public record SparkRequest(String master, List<Path> scenes, UnaryOperator<Rende
      * @param summary      whether to print the summary and the "wrote" lines
      * @throws IllegalArgumentException for no scene, or an output with several scenes
      */
-    public SparkRequest(String master, List<Path> scenes, UnaryOperator<RenderSettings> settings, Path output,
-                        double progressStep, boolean summary) {
+    public SparkRequest(String master, List<Path> scenes, BiFunction<RenderSettings, Scene, RenderSettings> settings,
+                        Path output, double progressStep, boolean summary) {
         this(master, scenes, settings, output, progressStep, summary, null);
     }
 }

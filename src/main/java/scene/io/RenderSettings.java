@@ -3,12 +3,9 @@ package scene.io;
 import java.io.IOException;
 import java.io.InvalidObjectException;
 import java.io.ObjectInputStream;
-import java.util.Collection;
-import java.util.List;
 import java.util.Objects;
 import java.util.StringJoiner;
 
-import lighting.LightSource;
 import primitives.Color;
 import renderer.AntiAliasing;
 import renderer.Camera;
@@ -489,42 +486,27 @@ public final class RenderSettings implements java.io.Serializable {
     }
 
     /**
-     * Checks this specification against the library's ray budget, as {@code Camera.Builder.build()}
-     * will when it is replayed: the stated values over the library's defaults, by the library's rule
+     * Checks this specification against the library's ray budget for {@code scene}, as
+     * {@code Camera.Builder.build()} will for a camera over that scene when it is replayed: the
+     * stated values over the library's defaults, by the library's rule
      * ({@link RayBudget#require(Sampling, boolean, int, int, java.util.Collection)}; the budget
-     * depends on the sampling, the lens and the tracer, not on the view), with no lights.
-     *
-     * @return this specification
-     * @throws IllegalArgumentException for more than {@link #MAX_RAYS_PER_PIXEL} rays per pixel,
-     *                                  with the library's message naming the factors (each value
-     *                                  alone was checked when it was stated)
-     */
-    public RenderSettings requireRayBudget() {
-        return requireRayBudget(List.of());
-    }
-
-    /**
-     * Checks this specification against the library's ray budget for {@code scene}'s lights (a
-     * light with a radius takes the shadow samples at each shaded point, every other light one
-     * ray), as {@code Camera.Builder.build()} will for a camera over that scene.
+     * depends on the sampling, the lens, the tracer and the scene's lights, not on the view: a
+     * light with a radius takes the shadow samples at each shaded point, every other light one ray).
      *
      * @param scene the scene the settings will render: only its lights are read
      * @return this specification
-     * @throws IllegalArgumentException as {@link #requireRayBudget()}, with the lights among the factors
+     * @throws IllegalArgumentException for more than {@link #MAX_RAYS_PER_PIXEL} rays per pixel,
+     *                                  with the library's message naming the factors, the lights
+     *                                  among them (each value alone was checked when it was stated)
      */
-    RenderSettings requireRayBudget(Scene scene) {
-        return requireRayBudget(scene.lights);
-    }
-
-    /** The budget over {@code lights} (none for {@link #requireRayBudget()}: no scene is made to ask). */
-    private RenderSettings requireRayBudget(Collection<? extends LightSource> lights) {
+    public RenderSettings requireRayBudget(Scene scene) {
         // Threads are not the budget's: the file's reader and the command line check them as they are stated.
         Sampling sampling = antiAliasing.over(Sampling.DEFAULT);
         if (lens.samples != null) sampling = sampling.withLensSamples(lens.samples);
         if (seed != null) sampling = sampling.withSeed(seed);
         RayBudget.require(sampling, !lens.lens().isPinhole(),
                 tracer.beamSize != null ? tracer.beamSize : RayTracerBasic.DEFAULT_BEAM_SIZE,
-                tracer.shadowSamples != null ? tracer.shadowSamples : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, lights);
+                tracer.shadowSamples != null ? tracer.shadowSamples : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, scene.lights);
         return this;
     }
 

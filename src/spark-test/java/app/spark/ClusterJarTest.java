@@ -48,7 +48,7 @@ class ClusterJarTest {
         PrintStream o = new PrintStream(out, true, StandardCharsets.UTF_8), e = new PrintStream(err, true, StandardCharsets.UTF_8);
         // Port 1: nothing listens there; the command must not try.
         SparkRequest request = new SparkRequest("spark://127.0.0.1:1", List.of(Project.file("scenes/glossy.xml")),
-                s -> s.withImage("glossy", 4, 4), dir.resolve("x.png"), 0, true);
+                (s, scene) -> s.withImage("glossy", 4, 4), dir.resolve("x.png"), 0, true);
         assertThat(SparkCommand.run(request, o, o, e)).isEqualTo(SparkEntry.BAD_INPUT);
         assertThat(err.toString(StandardCharsets.UTF_8)).hasLineCount(1)
                 .startsWith("raytracer: --spark spark://127.0.0.1:1: a cluster's executors need this program's jar")

@@ -64,7 +64,7 @@ class ExecutorTimeoutTest {
         ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
         PrintStream o = new PrintStream(out, true, StandardCharsets.UTF_8), e = new PrintStream(err, true, StandardCharsets.UTF_8);
         SparkRequest request = new SparkRequest("local[1]", List.of(Project.file("scenes/glossy.xml")),
-                s -> s.withImage("glossy", 4, 4), dir.resolve("x.png"), 0, true);
+                (s, scene) -> s.withImage("glossy", 4, 4), dir.resolve("x.png"), 0, true);
         String before = System.getProperty(SparkRenderer.EXECUTOR_TIMEOUT);
         System.setProperty(SparkRenderer.EXECUTOR_TIMEOUT, value); // what spark-submit's --conf does
         try {

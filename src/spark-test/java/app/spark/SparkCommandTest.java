@@ -8,7 +8,6 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.function.UnaryOperator;
 
 import org.apache.spark.TaskContext;
 import org.junit.jupiter.api.DisplayName;
@@ -34,7 +33,7 @@ class SparkCommandTest {
         PrintStream o = new PrintStream(out, true, StandardCharsets.UTF_8), e = new PrintStream(err, true, StandardCharsets.UTF_8);
         Path png = dir.resolve("fail.png");
         SparkRequest request = new SparkRequest("local[2,3]", List.of(Project.file("scenes/glossy.xml")),
-                s -> s.withImage("glossy", 40, 30), png, 0, true);
+                (s, scene) -> s.withImage("glossy", 40, 30), png, 0, true);
         int code = SparkCommand.run(request, tile -> {
             if (TaskContext.getPartitionId() == 0) throw new IllegalStateException("injected: the executor lost its disk");
         }, o, o, e);
@@ -51,7 +50,7 @@ class SparkCommandTest {
     void oneOutputOneScene() {
         List<Path> two = List.of(Path.of("a.xml"), Path.of("b.xml"));
         org.assertj.core.api.Assertions.assertThatIllegalArgumentException()
-                .isThrownBy(() -> new SparkRequest("local", two, UnaryOperator.identity(), Path.of("x.png"), 0, true))
+                .isThrownBy(() -> new SparkRequest("local", two, (s, scene) -> s, Path.of("x.png"), 0, true))
                 .withMessageContaining("one output file for 2 scenes");
     }
 }

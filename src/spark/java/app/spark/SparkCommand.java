@@ -78,7 +78,7 @@ final class SparkCommand {
                 return 1;
             }
             try {
-                frame = frame.withSettings(request.settings().apply(frame.settings()));
+                frame = frame.withSettings(request.settings().apply(frame.settings(), frame.loadedScene()));
             } catch (IllegalArgumentException e) {
                 err.println(Messages.visible(scene + ": " + e.getMessage()));
                 return SparkEntry.BAD_INPUT;

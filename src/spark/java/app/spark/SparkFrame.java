@@ -6,6 +6,7 @@ import java.util.Objects;
 
 import renderer.Camera;
 import renderer.ImageWriter;
+import scene.Scene;
 import scene.io.LoadedScene;
 import scene.io.RenderSettings;
 import scene.io.SceneFormatException;
@@ -115,6 +116,11 @@ public final class SparkFrame {
     /** @return what travels to the executors */
     Frame frame() {
         return new Frame(scene.files(), settings);
+    }
+
+    /** @return the frame's scene as the driver read it (the command line's checks read its lights) */
+    Scene loadedScene() {
+        return scene.loaded().scene();
     }
 
     /**

@@ -300,7 +300,7 @@ class RenderSettingsTest {
         @DisplayName("requireRayBudget refuses exactly what building the camera refuses, with its message")
         void sameAsBuild(RenderSettings s) {
             Throwable built = catchThrowable(() -> apply(s, view()));
-            Throwable checked = catchThrowable(s::requireRayBudget);
+            Throwable checked = catchThrowable(() -> s.requireRayBudget(SCENE));
             if (built == null) assertThat(checked).isNull();
             else assertThat(checked).isInstanceOf(IllegalArgumentException.class).hasMessage(built.getMessage())
                     .hasMessageContaining("more than the limit of " + RenderSettings.MAX_RAYS_PER_PIXEL);
@@ -310,8 +310,8 @@ class RenderSettingsTest {
         @DisplayName("the library's figures: a 256×256 grid with beams of 127 is the limit; ADAPTIVE depth 3 at 256×256 fits")
         void figures() {
             RenderSettings grid = RenderSettings.empty().withAntiAliasing(AntiAliasing.RANDOM).withAntiAliasingGrid(256, 256);
-            assertThat(grid.withBeamSize(127).requireRayBudget()).isNotNull(); // 65536 × 255
-            assertThatThrownBy(() -> grid.withBeamSize(128).requireRayBudget()).isInstanceOf(IllegalArgumentException.class)
+            assertThat(grid.withBeamSize(127).requireRayBudget(SCENE)).isNotNull(); // 65536 × 255
+            assertThatThrownBy(() -> grid.withBeamSize(128).requireRayBudget(SCENE)).isInstanceOf(IllegalArgumentException.class)
                     .hasMessage("RANDOM sampling with 65536 samples per pixel × (1 + 2 beams of 128 rays: reflection and"
                             + " transmission) × (1 + 16 shadow samples × 0 soft lights + 0 other lights) is 16842752"
                             + " rays per pixel, more than the limit of 16777216");
