@@ -1,7 +1,7 @@
 """The jars `mvn package` attaches for a library user: the sources jar holds every source file of
 the library, the vector walk's included (it is compiled from src/main/vector by an execution of its
-own, outside the Maven source roots the sources jar reads), and the Javadoc jar leaves out what is
-package-private. Needs `mvn package`; skipped without the jars."""
+own, outside the Maven source roots the sources jar reads), and the Javadoc jar has the course's
+pages, not the engine's (public only for other packages of the library, marked @hidden). Needs `mvn package`; skipped without the jars."""
 from __future__ import annotations
 
 import zipfile
@@ -32,8 +32,13 @@ def test_the_sources_jar_holds_every_library_source_file():
 
 
 @pytest.mark.skipif(JAVADOC is None, reason="no Javadoc jar: run mvn package first")
-def test_the_javadoc_jar_has_no_page_for_the_package_private_vector_walk():
+def test_the_javadoc_jar_is_the_course_face():
+    """The student's pages: the course's types, not the engine's public-but-@hidden ones."""
     with zipfile.ZipFile(JAVADOC) as jar:
-        names = jar.namelist()
-    assert "geometries/Sphere.html" in names
-    assert not any("VectorWalk" in n for n in names)
+        names = set(jar.namelist())
+    for course in ("geometries/Sphere.html", "geometries/Intersectable.html", "renderer/Camera.html",
+                   "scene/Scene.html", "primitives/Point.html"):
+        assert course in names
+    for engine in ("geometries/Bvh.html", "geometries/Hit.html", "primitives/Rgb.html", "renderer/Sampling.html",
+                   "scene/io/Messages.html", "geometries/VectorWalk.html"):
+        assert engine not in names

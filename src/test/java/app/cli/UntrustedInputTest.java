@@ -297,29 +297,29 @@ class UntrustedInputTest {
         @Test
         @DisplayName("--aa random with the file's large grid over the ray budget: a usage error")
         void antiAliasing() throws IOException {
-            Path file = write("scene.xml", scene("<render beam-size=\"128\"><anti-aliasing mode=\"none\" grid=\"256 256\"/></render>"));
-            Run r = run(file.toString(), "--aa", "random", "-o", dir.resolve("out.png").toString());
-            assertThat(r.exitCode()).isEqualTo(RenderCommand.BAD_INPUT);
-            assertThat(r.errLines().get(0)).isEqualTo("raytracer: --aa RANDOM: RANDOM sampling with 65536 samples per pixel"
-                    + " × (1 + 2 beams of 128 rays: reflection and transmission) × (1 + 16 shadow samples × 0 soft lights"
-                    + " + 0 other lights) is 16842752 rays per pixel, more than the limit of "
-                    + RenderSettings.MAX_RAYS_PER_PIXEL);
-            assertNothingWritten();
+            assertAntiAliasingRefused("<render beam-size=\"128\"><anti-aliasing mode=\"none\" grid=\"256 256\"/></render>",
+                    "65536 samples per pixel × (1 + 2 beams of 128 rays: reflection and transmission) × (1 + 16 shadow"
+                            + " samples × 0 soft lights + 0 other lights) is 16842752");
         }
 
         @Test
         @DisplayName("--aa random over the ray budget only with the file's soft lights: the usage error counts them")
         void antiAliasingWithLights() throws IOException {
             // 16384 samples × 33 × (1 + 16 × 2 soft lights) is over 2^24; without the lights, 540,672 is not.
-            Path file = write("scene.xml", scene("<lights><point-light color=\"1 1 1\" position=\"0 0 1\" radius=\"1\"/>"
-                    + "<point-light color=\"1 1 1\" position=\"0 1 1\" radius=\"1\"/></lights>"
-                    + "<render><anti-aliasing mode=\"none\" grid=\"128 128\"/></render>"));
+            assertAntiAliasingRefused("<lights><point-light color=\"1 1 1\" position=\"0 0 1\" radius=\"1\"/>"
+                            + "<point-light color=\"1 1 1\" position=\"0 1 1\" radius=\"1\"/></lights>"
+                            + "<render><anti-aliasing mode=\"none\" grid=\"128 128\"/></render>",
+                    "16384 samples per pixel × (1 + 2 beams of 16 rays: reflection and transmission) × (1 + 16 shadow"
+                            + " samples × 2 soft lights + 0 other lights) is 17842176");
+        }
+
+        /** {@code --aa random} over a scene of {@code inner}: exit 2, the budget's line with {@code factors}, nothing written. */
+        private void assertAntiAliasingRefused(String inner, String factors) throws IOException {
+            Path file = write("scene.xml", scene(inner));
             Run r = run(file.toString(), "--aa", "random", "-o", dir.resolve("out.png").toString());
             assertThat(r.exitCode()).isEqualTo(RenderCommand.BAD_INPUT);
-            assertThat(r.errLines().get(0)).isEqualTo("raytracer: --aa RANDOM: RANDOM sampling with 16384 samples per pixel"
-                    + " × (1 + 2 beams of 16 rays: reflection and transmission) × (1 + 16 shadow samples × 2 soft lights"
-                    + " + 0 other lights) is 17842176 rays per pixel, more than the limit of "
-                    + RenderSettings.MAX_RAYS_PER_PIXEL);
+            assertThat(r.errLines().get(0)).isEqualTo("raytracer: --aa RANDOM: RANDOM sampling with " + factors
+                    + " rays per pixel, more than the limit of " + RenderSettings.MAX_RAYS_PER_PIXEL);
             assertNothingWritten();
         }
 
