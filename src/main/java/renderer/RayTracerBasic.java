@@ -151,7 +151,7 @@ public class RayTracerBasic extends RayTracerBase {
 
     @Override
     void requireRayBudget(AntiAliasing mode, long cameraRays) {
-        RayBudget.require(mode, cameraRays, beamSize, shadowSamples, scene.lights);
+        RayBudget.require(mode, cameraRays, beamSize, shadowSamples, SceneStamp.lightsForBudget(sceneParts()));
     }
 
     /** @return which walk the BVH takes on this JVM (vector or scalar, {@link Bvh#walkDescription()}), after a comma; "" without the BVH */

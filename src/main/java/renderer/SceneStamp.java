@@ -1,6 +1,7 @@
 package renderer;
 
 import java.util.ArrayDeque;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.ConcurrentModificationException;
 import java.util.Deque;
@@ -64,6 +65,25 @@ record SceneStamp(RayTracerBase tracer, Parts start, long changes, LightSource[]
                     settingsStamps(lights));
         } catch (RuntimeException e) { // a list read while another thread adds to it
             throw changed(start.name, image, "it was being changed as the render started", e);
+        }
+    }
+
+    /**
+     * The scene's lights as the ray budget counts them, when a camera is built on the scene or
+     * starts to render it: a copy of its light list. The list is the course's public field, of
+     * any kind, and not safe to read while another thread adds to it; a read that fails that way
+     * (an index out of its bounds, a null node) fails with the scene-change message instead.
+     *
+     * @throws ConcurrentModificationException naming the scene, when the list could not be read
+     */
+    static List<LightSource> lightsForBudget(Parts scene) {
+        try {
+            return Arrays.asList(scene.lights.toArray(new LightSource[0])); // not List.of: a null light fails where it did
+        } catch (RuntimeException e) { // a list read while another thread adds to it
+            throw new ConcurrentModificationException("the scene '" + scene.name + "' changed while its lights were counted"
+                    + " for the ray budget (a camera built on it, or a render starting): its light list was being changed"
+                    + " as it was read (a scene must not change while a camera is built on it or renders it; build and"
+                    + " render when it is complete)", e);
         }
     }
 
