@@ -27,7 +27,7 @@ public class Geometries extends Intersectable {
      * The deepest nesting of lists a render takes: a list is level 1, a list inside it level 2.
      * The renderer's flat walk (and the bounding box) recurse once per level, so a much deeper
      * chain overflows a thread's stack; a render refuses it at the start, naming the depth (see
-     * {@link #requireNestingWithinLimit()}). The course's queries walk any depth. Scenes need a
+     * {@link GeometryLists#requireNestingWithinLimit}). The course's queries walk any depth. Scenes need a
      * few levels.
      */
     public static final int MAX_NESTING_DEPTH = 1000;
@@ -104,16 +104,8 @@ public class Geometries extends Intersectable {
         changes++;
     }
 
-    /**
-     * How many times this list and the lists nested in it, at any depth, were added to: a render
-     * notes it when it starts and compares it when it ends, to tell that the scene changed while
-     * it rendered. Walks the nested lists without recursion, each once.
-     *
-     * @return the number of {@link #add} calls on this list and every list within it, so far
-     *
-     * @hidden internal: the renderer's checks of a scene before it renders
-     */
-    public long changeCount() {
+    /** {@link GeometryLists#changeCount}: the number of {@link #add} calls on this list and every list within it. */
+    long changeCount() {
         long count = 0;
         Set<Geometries> seen = Collections.newSetFromMap(new IdentityHashMap<>());
         Deque<Geometries> todo = new ArrayDeque<>(List.of(this));
@@ -127,26 +119,13 @@ public class Geometries extends Intersectable {
         return count;
     }
 
-    /**
-     * @return the levels of lists: 1 for a list of shapes, 2 when one of them is a list of
-     *         shapes, and so on; more than the number of lists when one contains itself (counting
-     *         then stops)
-     *
-     * @hidden internal: the renderer's checks of a scene before it renders
-     */
-    public int nestingDepth() {
+    /** {@link GeometryLists#nestingDepth}. */
+    int nestingDepth() {
         return nesting().depth();
     }
 
-    /**
-     * Checks the nesting a render can take: at most {@link #MAX_NESTING_DEPTH} levels.
-     *
-     * @throws IllegalArgumentException naming the depth and the limit when the lists are nested
-     *                                  deeper, or saying so when a list contains itself
-     *
-     * @hidden internal: the renderer's checks of a scene before it renders
-     */
-    public void requireNestingWithinLimit() {
+    /** {@link GeometryLists#requireNestingWithinLimit}. */
+    void requireNestingWithinLimit() {
         Nesting n = nesting();
         if (n.depth() > n.lists()) // a chain longer than the lists goes round a cycle
             throw new IllegalArgumentException("the geometries contain themselves: one of their " + n.lists()

@@ -35,7 +35,7 @@ public final class CourseClassGuard {
             "primitives.LibraryClasses", "primitives.Rgb", "primitives.Util", "primitives.Vector",
             "geometries.BoundingBox", "geometries.BuildBoxes", "geometries.Bvh", "geometries.BvhBinner", "geometries.BvhBuilder",
             "geometries.BvhLeaf", "geometries.BvhNodes", "geometries.Cylinder", "geometries.Geometries",
-            "geometries.Geometry", "geometries.Hit", "geometries.HitVisitor", "geometries.HookCheck",
+            "geometries.Geometry", "geometries.GeometryLists", "geometries.Hit", "geometries.HitVisitor", "geometries.HookCheck",
             "geometries.Intersectable", "geometries.Plane", "geometries.Polygon", "geometries.Ranges",
             "geometries.SingleHitGeometry", "geometries.Sphere", "geometries.Triangle", "geometries.TriangleMesh",
             "geometries.Tube", "geometries.VectorWalk", "geometries.Vectorization", "geometries.WideNodes",

@@ -1,6 +1,7 @@
 package renderer;
 
 import geometries.Bvh;
+import geometries.GeometryLists;
 import geometries.Intersectable;
 import lighting.LightSource;
 import primitives.Color;
@@ -136,7 +137,7 @@ public class RayTracerBasic extends RayTracerBase {
      */
     @Override
     synchronized PreparedTracer prepare() {
-        scene.geometries.requireNestingWithinLimit(); // the flat walk recurses once per level
+        GeometryLists.requireNestingWithinLimit(scene.geometries); // the flat walk recurses once per level
         for (LightSource light : scene.lights) light.validate();
         Intersectable world = useBvh ? Bvh.of(scene.geometries) : scene.geometries;
         WhittedShader prepared = new WhittedShader(scene.background, scene.ambientLight.getIntensity(), world, scene.lights.toArray(new LightSource[0]), beamSize, shadowSamples);

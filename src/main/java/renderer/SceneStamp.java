@@ -11,6 +11,7 @@ import java.util.Set;
 
 import geometries.Geometries;
 import geometries.Geometry;
+import geometries.GeometryLists;
 import geometries.Intersectable;
 import lighting.AmbientLight;
 import lighting.LightSource;
@@ -33,7 +34,7 @@ import primitives.Material;
  *
  * @param tracer      the tracer whose scene is rendered, read again at the end
  * @param start       the scene's parts at the start
- * @param changes     {@link Geometries#changeCount()} at the start
+ * @param changes     {@link GeometryLists#changeCount} at the start
  * @param lights      the lights in its light list at the start
  * @param surfaces    the fingerprint of every geometry's material and emission at the start ({@link #surfaces})
  * @param lightStamps each light's {@link LightSource#settingsStamp()} at the start, in the order of {@code lights}
@@ -61,7 +62,7 @@ record SceneStamp(RayTracerBase tracer, Parts start, long changes, LightSource[]
         Parts start = tracer.sceneParts();
         try {
             LightSource[] lights = start.lights.toArray(new LightSource[0]);
-            return new SceneStamp(tracer, start, start.geometries.changeCount(), lights, Surfaces.of(start.geometries),
+            return new SceneStamp(tracer, start, GeometryLists.changeCount(start.geometries), lights, Surfaces.of(start.geometries),
                     settingsStamps(lights));
         } catch (RuntimeException e) { // a list read while another thread adds to it
             throw changed(start.name, image, "it was being changed as the render started", e);
@@ -187,7 +188,7 @@ record SceneStamp(RayTracerBase tracer, Parts start, long changes, LightSource[]
     private String structuralChange() {
         Parts now = tracer.sceneParts();
         if (now.geometries != start.geometries) return "its geometry list was replaced";
-        long count = start.geometries.changeCount();
+        long count = GeometryLists.changeCount(start.geometries);
         if (count != changes) return "its geometries were added to (" + (count - changes) + (count - changes == 1 ? " time)" : " times)");
         if (now.lights != start.lights) return "its light list was replaced";
         LightSource[] nowLights = start.lights.toArray(new LightSource[0]);

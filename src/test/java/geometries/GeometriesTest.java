@@ -5,6 +5,9 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatNullPointerException;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.lang.reflect.Method;
+import java.lang.reflect.Modifier;
+import java.util.Arrays;
 import java.util.List;
 
 import org.junit.jupiter.api.DisplayName;
@@ -169,6 +172,20 @@ class GeometriesTest {
         @Override
         public boolean bounded() {
             return false;
+        }
+    }
+
+    @Nested
+    @DisplayName("its face outside the library")
+    class Face {
+        @Test
+        @DisplayName("completing scene.geometries. offers the course's methods and Intersectable's overrides, not the render's checks")
+        void courseMethodsOnly() {
+            assertThat(Arrays.stream(Geometries.class.getDeclaredMethods())
+                    .filter(m -> Modifier.isPublic(m.getModifiers()))
+                    .map(Method::getName).distinct().sorted())
+                    .containsExactly("add", "buildBVH", "closestHit", "enableBVH", "getBoundingBox", "getItems", "isEmpty",
+                            "makeBVH", "visitHits");
         }
     }
 }

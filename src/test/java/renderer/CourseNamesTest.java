@@ -19,6 +19,7 @@ import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.MethodSource;
 
+import geometries.GeometryLists;
 import primitives.Material;
 import primitives.Point;
 import primitives.Ray;
@@ -208,9 +209,9 @@ class CourseNamesTest {
         @MethodSource("renderer.CourseNamesTest#bvhSwitches")
         void noOp(Switch bvh) {
             Scene plain = TestScenes.everyEffect(), switched = TestScenes.everyEffect();
-            long changes = switched.geometries.changeCount();
+            long changes = GeometryLists.changeCount(switched.geometries);
             assertThat(bvh.call().apply(switched)).isSameAs(bvh.receiver().apply(switched));
-            assertThat(switched.geometries.changeCount()).as("not a change for the scene-change check").isEqualTo(changes);
+            assertThat(GeometryLists.changeCount(switched.geometries)).as("not a change for the scene-change check").isEqualTo(changes);
 
             ImageWriter expected = new ImageWriter("expected", 16, 12), actual = new ImageWriter("actual", 16, 12);
             TestScenes.camera(plain, expected).build().renderImage();

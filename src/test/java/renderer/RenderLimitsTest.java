@@ -20,6 +20,7 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 import geometries.Geometries;
+import geometries.GeometryLists;
 import geometries.Plane;
 import geometries.Sphere;
 import lighting.DirectionalLight;
@@ -96,8 +97,8 @@ class RenderLimitsTest {
         void depth() {
             Geometries shared = new Geometries(new Geometries());
             Geometries root = new Geometries(shared, new Geometries(shared));
-            assertThat(root.nestingDepth()).isEqualTo(4);
-            assertThat(nested(0).geometries.nestingDepth()).isEqualTo(1);
+            assertThat(GeometryLists.nestingDepth(root)).isEqualTo(4);
+            assertThat(GeometryLists.nestingDepth(nested(0).geometries)).isEqualTo(1);
         }
     }
 

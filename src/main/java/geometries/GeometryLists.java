@@ -1,0 +1,47 @@
+package geometries;
+
+/**
+ * What a render asks of a scene's geometry lists before and after it renders: how often they
+ * were added to, and how deeply they nest. Static, and apart from {@link Geometries}, so that a
+ * student completing {@code scene.geometries.} sees the course's methods only; the renderer, in
+ * another package, calls these.
+ *
+ * @hidden internal: the renderer's checks of a scene; a scene test adds to its lists and renders
+ */
+public final class GeometryLists {
+    private GeometryLists() {
+    }
+
+    /**
+     * How many times {@code list} and the lists nested in it, at any depth, were added to: a
+     * render notes it when it starts and compares it when it ends, to tell that the scene changed
+     * while it rendered. Walks the nested lists without recursion, each once.
+     *
+     * @param list a scene's geometry list
+     * @return the number of {@link Geometries#add} calls on the list and every list within it, so far
+     */
+    public static long changeCount(Geometries list) {
+        return list.changeCount();
+    }
+
+    /**
+     * @param list a scene's geometry list
+     * @return the levels of lists: 1 for a list of shapes, 2 when one of them is a list of
+     *         shapes, and so on; more than the number of lists when one contains itself (counting
+     *         then stops)
+     */
+    public static int nestingDepth(Geometries list) {
+        return list.nestingDepth();
+    }
+
+    /**
+     * Checks the nesting a render can take: at most {@link Geometries#MAX_NESTING_DEPTH} levels.
+     *
+     * @param list a scene's geometry list
+     * @throws IllegalArgumentException naming the depth and the limit when the lists are nested
+     *                                  deeper, or saying so when a list contains itself
+     */
+    public static void requireNestingWithinLimit(Geometries list) {
+        list.requireNestingWithinLimit();
+    }
+}
