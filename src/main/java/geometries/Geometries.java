@@ -119,7 +119,11 @@ public class Geometries extends Intersectable {
         return count;
     }
 
-    /** {@link GeometryLists#nestingDepth}. */
+    /**
+     * @return the levels of lists: 1 for a list of shapes, 2 when one of them is a list of
+     *         shapes, and so on; more than the number of lists when one contains itself (counting
+     *         then stops)
+     */
     int nestingDepth() {
         return nesting().depth();
     }

@@ -2,7 +2,7 @@ package geometries;
 
 /**
  * What a render asks of a scene's geometry lists before and after it renders: how often they
- * were added to, and how deeply they nest. Static, and apart from {@link Geometries}, so that a
+ * were added to, and whether they nest within the limit. Static, and apart from {@link Geometries}, so that a
  * student completing {@code scene.geometries.} sees the course's methods only; the renderer, in
  * another package, calls these.
  *
@@ -22,16 +22,6 @@ public final class GeometryLists {
      */
     public static long changeCount(Geometries list) {
         return list.changeCount();
-    }
-
-    /**
-     * @param list a scene's geometry list
-     * @return the levels of lists: 1 for a list of shapes, 2 when one of them is a list of
-     *         shapes, and so on; more than the number of lists when one contains itself (counting
-     *         then stops)
-     */
-    public static int nestingDepth(Geometries list) {
-        return list.nestingDepth();
     }
 
     /**

@@ -145,6 +145,15 @@ class GeometriesTest {
             assertThat(new double[] { b.getMinX(), b.getMinY(), b.getMinZ(), b.getMaxX(), b.getMaxY(), b.getMaxZ() })
                     .containsExactly(-1, -1, 2, 3, 3, 6);
         }
+
+        @Test
+        @DisplayName("the nesting depth counts the longest chain; a list shared by two parents is one list")
+        void nestingDepth() {
+            Geometries shared = new Geometries(new Geometries());
+            Geometries root = new Geometries(shared, new Geometries(shared));
+            assertThat(root.nestingDepth()).isEqualTo(4);
+            assertThat(new Geometries(sphere).nestingDepth()).isEqualTo(1);
+        }
     }
 
     /** The contract, for the flat list of several shapes (bounded ones only, so the box is checked). */

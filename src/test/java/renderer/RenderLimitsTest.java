@@ -20,7 +20,6 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
 import geometries.Geometries;
-import geometries.GeometryLists;
 import geometries.Plane;
 import geometries.Sphere;
 import lighting.DirectionalLight;
@@ -90,15 +89,6 @@ class RenderLimitsTest {
                     .hasMessageContaining("the geometries contain themselves");
             assertThatThrownBy(() -> camera(scene, false).renderImage()).isInstanceOf(IllegalArgumentException.class)
                     .hasMessageContaining("the geometries contain themselves");
-        }
-
-        @Test
-        @DisplayName("the depth counts the longest chain; a list shared by two parents is one list")
-        void depth() {
-            Geometries shared = new Geometries(new Geometries());
-            Geometries root = new Geometries(shared, new Geometries(shared));
-            assertThat(GeometryLists.nestingDepth(root)).isEqualTo(4);
-            assertThat(GeometryLists.nestingDepth(nested(0).geometries)).isEqualTo(1);
         }
     }
 
