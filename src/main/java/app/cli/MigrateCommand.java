@@ -40,6 +40,11 @@ final class MigrateCommand implements Callable<Integer> {
     @Option(names = "--allow-dirty", description = "Migrate a git folder that has uncommitted changes.")
     private boolean allowDirty;
 
+    @Option(names = "--encoding", paramLabel = "CHARSET", description = "The sources' character encoding (windows-1255,"
+            + " ISO-8859-1, UTF-8); by default as the project states it (pom, .idea/encodings.xml, Eclipse settings),"
+            + " else detected. It is written into the pom.")
+    private String encoding;
+
     private final PrintStream out;
     private final PrintStream err;
 
@@ -53,7 +58,7 @@ final class MigrateCommand implements Callable<Integer> {
         Migration migration = Migration.ofThisProcess(out, err);
         try {
             if (undo) migration.undo(dir);
-            else migration.migrate(dir, allowDirty, dryRun);
+            else migration.migrate(dir, allowDirty, dryRun, encoding);
             return 0;
         } catch (MigrationException e) {
             err.println(RenderCommand.NAME + " migrate: " + e.getMessage());

@@ -15,10 +15,13 @@ import java.util.List;
  * @param mainExcludes  test files that live in a source folder, kept out of the main compile
  * @param testIncludes  where tests share a folder with sources: the tests (empty: the whole folder)
  * @param testExcludes  test files left out because they do not compile against the library
- * @param systemJars    jars of the project's own {@code lib/} (not JUnit's), as the IDE had them
+ * @param libraries     the project's own libraries ({@link Libraries}): coordinates, or its jars with system scope
+ * @param junit4        whether tests use JUnit 4: its jar and the Vintage engine join Jupiter
+ * @param encoding      the sources' character encoding, as Maven names it
  */
 record BuildPlan(String library, String junit, int release, List<String> mainRoots, List<String> testRoots,
-        List<String> mainExcludes, List<String> testIncludes, List<String> testExcludes, List<String> systemJars) {
+        List<String> mainExcludes, List<String> testIncludes, List<String> testExcludes, List<Libraries.Library> libraries,
+        boolean junit4, String encoding) {
     static final String COMPILER_VERSION = "3.13.0";
     static final String SUREFIRE_VERSION = "3.5.2";
     static final String BUILD_HELPER_VERSION = "3.6.0";

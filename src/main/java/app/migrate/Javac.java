@@ -3,6 +3,7 @@ package app.migrate;
 import java.io.File;
 import java.io.IOException;
 import java.io.StringWriter;
+import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -31,12 +32,16 @@ import javax.tools.ToolProvider;
  */
 final class Javac {
     /** One compile error. {@code code} is javac's key ({@code compiler.err.cant.resolve.location.args}). */
-    record Problem(Path file, long line, String code, String message) {
+    record Problem(Path file, long line, String code, String message, Charset encoding) {
+        Problem(Path file, long line, String code, String message) {
+            this(file, line, code, message, StandardCharsets.UTF_8);
+        }
+
         /** The text of the line the error is on ({@code ""} when it cannot be read). */
         String sourceLine() {
-            try (Stream<String> lines = Files.lines(file, StandardCharsets.UTF_8)) {
-                return line < 1 ? "" : lines.skip(line - 1).findFirst().orElse("");
-            } catch (IOException | java.io.UncheckedIOException e) {
+            try {
+                return line < 1 ? "" : new String(Files.readAllBytes(file), encoding).lines().skip(line - 1).findFirst().orElse("");
+            } catch (IOException e) {
                 return ""; // the file was just compiled; unreadable now, its line is simply not shown
             }
         }
@@ -47,11 +52,14 @@ final class Javac {
     }
 
     private final JavaCompiler compiler;
+    /** The project's source encoding: every file compiled is read in it. */
+    private final Charset encoding;
 
     /**
      * @throws MigrationException when the running Java has no compiler (a JRE, not a JDK)
      */
-    Javac() throws MigrationException {
+    Javac(Charset encoding) throws MigrationException {
+        this.encoding = encoding;
         compiler = ToolProvider.getSystemJavaCompiler();
         if (compiler == null)
             throw new MigrationException("this Java (" + System.getProperty("java.home")
@@ -68,7 +76,7 @@ final class Javac {
      *
      * @param out where the classes go (a scratch folder)
      */
-    Outcome compile(Collection<Path> files, List<Path> classPath, int release, Path out) throws IOException {
+    Outcome compile(Collection<Path> files, List<Path> classPath, int release, Path out) throws IOException, MigrationException {
         Set<Path> remaining = new LinkedHashSet<>(files);
         Map<Path, List<Problem>> failed = new LinkedHashMap<>();
         while (!remaining.isEmpty()) {
@@ -85,6 +93,24 @@ final class Javac {
         return new Outcome(List.copyOf(remaining), failed);
     }
 
+    /** The refusal when javac runs out of memory: a fact about this process, not about the project's code. */
+    private static MigrationException outOfMemory(Collection<Path> files, OutOfMemoryError cause) {
+        Path largest = files.stream().max(Comparator.comparingLong(Javac::size)).orElse(null);
+        String message = "javac ran out of memory (this Java's heap is " + Runtime.getRuntime().maxMemory() / (1024 * 1024)
+                + " MB) compiling " + files.size() + " files" + (largest == null ? ""
+                        : ", the largest " + largest.getFileName() + " (" + size(largest) / 1024 + " kB)")
+                + ": run migrate with a larger heap, e.g. RAYTRACER_JAVA_OPTS=-Xmx2g (nothing was changed)";
+        return cause == null ? new MigrationException(message) : new MigrationException(message, cause);
+    }
+
+    private static long size(Path file) {
+        try {
+            return Files.size(file);
+        } catch (IOException e) {
+            return 0; // only for naming the largest file; an unreadable one is not it
+        }
+    }
+
     static void deleteTree(Path dir) throws IOException {
         if (!Files.exists(dir)) return;
         try (Stream<Path> walk = Files.walk(dir)) {
@@ -94,11 +120,11 @@ final class Javac {
 
     /** One javac run: the errors per file (none: everything compiled into {@code out}). */
     private Map<Path, List<Problem>> once(Collection<Path> files, List<Path> classPath, int release, Path out)
-            throws IOException {
+            throws IOException, MigrationException {
         DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
-        try (StandardJavaFileManager fm = compiler.getStandardFileManager(diagnostics, Locale.ROOT, StandardCharsets.UTF_8)) {
+        try (StandardJavaFileManager fm = compiler.getStandardFileManager(diagnostics, Locale.ROOT, encoding)) {
             List<String> options = new ArrayList<>(List.of("--release", Integer.toString(release), "-proc:none",
-                    "-nowarn", "-Xlint:none", "-Xmaxerrs", "100000", "-encoding", "UTF-8", "-implicit:none",
+                    "-nowarn", "-Xlint:none", "-Xmaxerrs", "100000", "-encoding", encoding.name(), "-implicit:none",
                     "-sourcepath", "", "-d", out.toString()));
             // Always stated: left out, an in-process javac takes this JVM's own class path, where
             // the library's classes would stand in for the project's.
@@ -107,7 +133,12 @@ final class Javac {
                     : String.join(File.pathSeparator, classPath.stream().map(Path::toString).toList()));
             Iterable<? extends JavaFileObject> units = fm.getJavaFileObjectsFromPaths(files);
             StringWriter chatter = new StringWriter();
-            compiler.getTask(chatter, fm, diagnostics, options, null, units).call();
+            boolean compiled;
+            try {
+                compiled = compiler.getTask(chatter, fm, diagnostics, options, null, units).call();
+            } catch (OutOfMemoryError e) {
+                throw outOfMemory(files, e);
+            }
             Map<Path, List<Problem>> errors = new LinkedHashMap<>();
             for (Diagnostic<? extends JavaFileObject> d : diagnostics.getDiagnostics()) {
                 if (d.getKind() != Diagnostic.Kind.ERROR) continue;
@@ -115,7 +146,14 @@ final class Javac {
                     throw new IOException("javac: " + d.getMessage(Locale.ROOT));
                 Path file = Path.of(d.getSource().toUri()).toAbsolutePath().normalize();
                 errors.computeIfAbsent(file, f -> new ArrayList<>())
-                        .add(new Problem(file, d.getLineNumber(), d.getCode(), d.getMessage(Locale.ROOT)));
+                        .add(new Problem(file, d.getLineNumber(), d.getCode(), d.getMessage(Locale.ROOT), encoding));
+            }
+            // javac catches its own crash (out of memory among them), prints it to the chatter and
+            // reports no error: taken as "compiled", every class would be missing for what follows.
+            if (!compiled && errors.isEmpty()) {
+                if (chatter.toString().contains("OutOfMemoryError")) throw outOfMemory(files, null);
+                throw new MigrationException("javac stopped without naming an error while compiling " + files.size()
+                        + " files: " + Migration.oneLine(chatter.toString()) + " (nothing was changed)");
             }
             return errors;
         }

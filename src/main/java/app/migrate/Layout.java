@@ -2,6 +2,7 @@ package app.migrate;
 
 import java.io.IOException;
 import java.io.UncheckedIOException;
+import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -49,8 +50,13 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
             ".gradle", "node_modules");
 
     private static final Pattern IML_FOLDER = Pattern.compile("<sourceFolder\\s+url=\"file://\\$MODULE_DIR\\$/?([^\"]*)\"([^>]*)/?>");
-    private static final Pattern IML_JAR = Pattern.compile("jar://(\\$MODULE_DIR\\$|\\$MAVEN_REPOSITORY\\$)/([^\"!]+\\.jar)!/");
+    private static final Pattern IML_JAR = Pattern.compile("jar://(\\$[A-Z_]+\\$)/([^\"!]+\\.jar)!/");
+    private static final Pattern IML_LIBRARY = Pattern.compile("<orderEntry\\s+type=\"library\"[^>]*?name=\"([^\"]+)\"");
+    private static final Pattern MODULES_XML = Pattern.compile("filepath=\"\\$PROJECT_DIR\\$/([^\"]+\\.iml)\"");
     private static final Pattern ECLIPSE_ENTRY = Pattern.compile("<classpathentry\\s+[^>]*?kind=\"(src|lib)\"[^>]*?path=\"([^\"]+)\"");
+    /** A JUnit test file: JUnit imported (any generation) and a test annotated. */
+    private static final Pattern TEST_FILE = Pattern.compile("(?s)^(?=.*\\bimport\\s+(?:static\\s+)?org\\.junit\\.)(?=.*@(?:Test|ParameterizedTest)\\b)");
+    private static final Pattern PACKAGE = Pattern.compile("(?m)^\\s*package\\s+([\\w.]+)\\s*;");
     private static final Pattern POM_SOURCE = Pattern.compile("<sourceDirectory>\\s*([^<]+?)\\s*</sourceDirectory>");
     private static final Pattern POM_TEST = Pattern.compile("<testSourceDirectory>\\s*([^<]+?)\\s*</testSourceDirectory>");
 
@@ -62,13 +68,53 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
         if (!Files.isDirectory(d)) throw new MigrationException(d + " is not a folder");
         try {
             Layout layout = readKind(d, mavenRepository);
-            if (layout.sources().isEmpty())
+            if (layout.javaFiles().isEmpty())
                 throw new MigrationException(d + " is not a course project: no .java file in "
                         + (layout.mainRoots.isEmpty() ? "src/" : names(d, layout.mainRoots)) + " or its test folders");
             return layout;
         } catch (IOException e) {
             throw new MigrationException("cannot read " + d + ": " + e, e);
         }
+    }
+
+    /**
+     * This layout with more test folders: those {@link #strayTestRoots} found, whose tests would
+     * otherwise be silently missing from {@code mvn test} (a plain project's {@code unittest/}, a
+     * module's forgotten folder).
+     */
+    Layout withTests(List<Path> strays) {
+        if (strays.isEmpty()) return this;
+        List<Path> tests = new ArrayList<>(testRoots);
+        tests.addAll(strays);
+        return new Layout(dir, kind, mainRoots, List.copyOf(tests), iml, pom, jars);
+    }
+
+    /**
+     * Folders outside the build's own that hold JUnit tests, each the folder their package starts
+     * in; a folder whose package does not match its path, or that would hold the project itself,
+     * is not taken (its tests are named by the check that no test is missed).
+     */
+    List<Path> strayTestRoots() throws IOException {
+        List<Path> roots = Stream.concat(mainRoots.stream(), testRoots.stream()).toList();
+        Set<Path> found = new LinkedHashSet<>();
+        try (Stream<Path> walk = Files.walk(dir, 12)) {
+            for (Path f : walk.filter(f -> f.toString().endsWith(".java") && Files.isRegularFile(f)).sorted().toList()) {
+                if (skipped(dir, f) || roots.stream().anyMatch(f::startsWith)) continue;
+                String text = Files.readString(f, StandardCharsets.ISO_8859_1);
+                if (!TEST_FILE.matcher(text).find()) continue;
+                Matcher p = PACKAGE.matcher(text);
+                Path root = f.getParent();
+                if (p.find()) {
+                    Path pkg = Path.of(p.group(1).replace('.', '/'));
+                    if (!root.endsWith(pkg)) continue;
+                    for (int i = 0; i < pkg.getNameCount(); i++) root = root.getParent();
+                }
+                if (!root.equals(dir) && root.startsWith(dir)) found.add(root);
+            }
+        } catch (UncheckedIOException e) {
+            throw e.getCause();
+        }
+        return List.copyOf(found);
     }
 
     private static Layout readKind(Path d, Path repo) throws IOException {
@@ -87,14 +133,21 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
             Matcher m = IML_FOLDER.matcher(text);
             while (m.find()) {
                 if (m.group(2).contains("java-resource")) continue;
-                Path folder = d.resolve(m.group(1)).normalize();
+                Path folder = moduleFolder(d, iml, m.group(1));
                 (m.group(2).contains("isTestSource=\"true\"") ? test : main).add(folder);
             }
             Matcher j = IML_JAR.matcher(text);
-            while (j.find())
-                jars.add((j.group(1).contains("MODULE_DIR") ? d : repo).resolve(j.group(2)).normalize());
+            while (j.find()) jars.add(jar(d, iml, repo, j.group(1), j.group(2)));
+            // Project libraries (.idea/libraries/NAME.xml): IntelliJ's JUnit, gson, a lib/ jar.
+            var projectLibraries = Libraries.projectLibraries(d);
+            Matcher l = IML_LIBRARY.matcher(text);
+            while (l.find())
+                for (String url : projectLibraries.getOrDefault(l.group(1), List.of())) {
+                    Matcher u = Pattern.compile("(\\$[A-Z_]+\\$)/(.+)").matcher(url);
+                    if (u.matches()) jars.add(jar(d, iml, repo, u.group(1), u.group(2)));
+                }
             if (!existing(main).isEmpty())
-                return new Layout(d, Kind.INTELLIJ, existing(main), existing(test), iml, null, existingJars(jars));
+                return new Layout(d, Kind.INTELLIJ, existing(main), existing(test), iml, null, distinct(jars));
         }
         Path classpath = d.resolve(".classpath");
         if (Files.isRegularFile(classpath)) {
@@ -103,18 +156,52 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
             while (m.find())
                 (m.group(1).equals("src") ? main : jars).add(d.resolve(m.group(2)).normalize());
             if (!existing(main).isEmpty())
-                return new Layout(d, Kind.ECLIPSE, existing(main), List.of(), iml, null, existingJars(jars));
+                return new Layout(d, Kind.ECLIPSE, existing(main), List.of(), iml, null, distinct(jars));
         }
         if (Files.isDirectory(d.resolve("src/main/java")))
             return new Layout(d, Kind.PLAIN, List.of(d.resolve("src/main/java")),
-                    existing(List.of(d.resolve("src/test/java"))), iml, null, existingJars(jars));
-        List<Path> tests = existing(List.of(d.resolve("unittests"), d.resolve("test"), d.resolve("tests")));
+                    existing(List.of(d.resolve("src/test/java"))), iml, null, distinct(jars));
+        List<Path> tests = existing(List.of(d.resolve("unittests"), d.resolve("unittest"), d.resolve("test"), d.resolve("tests")));
         return new Layout(d, iml != null ? Kind.INTELLIJ : Kind.PLAIN, existing(List.of(d.resolve("src"))), tests, iml,
-                null, existingJars(jars));
+                null, distinct(jars));
     }
 
-    /** The module file: one at the top (the one named after the folder when there are several), else in .idea/. */
+    /**
+     * A folder an .iml names ({@code $MODULE_DIR$/src}): under the module file's folder, or under
+     * the project's where a module file kept in {@code .idea/} names folders as if it were at the
+     * top (IntelliJ then shows them there).
+     */
+    private static Path moduleFolder(Path d, Path iml, String relative) {
+        Path inModule = iml.getParent().resolve(relative).normalize();
+        if (Files.isDirectory(inModule) || iml.getParent().equals(d)) return inModule;
+        return d.resolve(relative).normalize();
+    }
+
+    /** A jar an .iml or project library names by one of IntelliJ's path variables; unknown variables keep their name. */
+    private static Path jar(Path d, Path iml, Path repo, String variable, String path) {
+        return switch (variable) {
+            case "$MODULE_DIR$" -> moduleFolder(d, iml, path);
+            case "$PROJECT_DIR$" -> d.resolve(path).normalize();
+            case "$MAVEN_REPOSITORY$" -> repo.resolve(path).normalize();
+            // $APPLICATION_HOME_DIR$ (IntelliJ's own lib/, its bundled annotations): not on this machine.
+            default -> Path.of(System.getProperty("java.io.tmpdir"), variable.replace("$", ""), path).normalize();
+        };
+    }
+
+    /**
+     * The module file IntelliJ loads: the one {@code .idea/modules.xml} names (a stale copy at the
+     * top is not read), else one at the top (the one named after the folder when there are several),
+     * else in .idea/.
+     */
     private static Path findIml(Path d) throws IOException {
+        Path modules = d.resolve(".idea/modules.xml");
+        if (Files.isRegularFile(modules)) {
+            Matcher m = MODULES_XML.matcher(Files.readString(modules, StandardCharsets.UTF_8));
+            while (m.find()) {
+                Path named = d.resolve(m.group(1)).normalize();
+                if (named.startsWith(d) && Files.isRegularFile(named)) return named;
+            }
+        }
         for (Path where : List.of(d, d.resolve(".idea"))) {
             if (!Files.isDirectory(where)) continue;
             try (Stream<Path> files = Files.list(where)) {
@@ -144,8 +231,9 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
         return folders.stream().filter(Files::isDirectory).distinct().toList();
     }
 
-    private static List<Path> existingJars(List<Path> jars) {
-        return new ArrayList<>(new LinkedHashSet<>(jars.stream().filter(Files::isRegularFile).toList()));
+    /** The jars as named, each once; some may not be on this machine (another user's Maven repository). */
+    private static List<Path> distinct(List<Path> jars) {
+        return new ArrayList<>(new LinkedHashSet<>(jars));
     }
 
     static String names(Path dir, List<Path> folders) {
@@ -156,11 +244,27 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
     private record Root(Path path, boolean test) {
     }
 
+    /** The paths of {@link #sources}: every {@code .java} file, before its encoding is known. */
+    List<Path> javaFiles() throws IOException {
+        List<Path> files = new ArrayList<>();
+        for (Path root : Stream.concat(mainRoots.stream(), testRoots.stream()).toList())
+            try (Stream<Path> walk = Files.walk(root)) {
+                walk.filter(f -> f.toString().endsWith(".java") && Files.isRegularFile(f) && !skipped(root, f))
+                        .sorted().forEach(f -> {
+                            if (!files.contains(f)) files.add(f);
+                        });
+            } catch (UncheckedIOException e) {
+                throw e.getCause();
+            }
+        return files;
+    }
+
     /**
-     * Every {@code .java} file of the project, each with the deepest folder that holds it (a test
-     * folder inside a source folder owns its files); build output and {@code course-backup/} left out.
+     * Every {@code .java} file of the project, read in {@code encoding}, each with the deepest
+     * folder that holds it (a test folder inside a source folder owns its files); build output and
+     * {@code course-backup/} left out.
      */
-    List<SourceFile> sources() throws IOException {
+    List<SourceFile> sources(Charset encoding) throws IOException {
         List<Root> roots = new ArrayList<>();
         mainRoots.forEach(r -> roots.add(new Root(r, false)));
         testRoots.forEach(r -> roots.add(new Root(r, true)));
@@ -171,7 +275,7 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
             try (Stream<Path> walk = Files.walk(r.path)) {
                 for (Path f : walk.filter(f -> f.toString().endsWith(".java") && Files.isRegularFile(f)).sorted().toList()) {
                     if (skipped(r.path, f) || !seen.add(f)) continue;
-                    found.add(SourceFile.read(f, r.path, r.test));
+                    found.add(SourceFile.read(f, r.path, r.test, encoding));
                 }
             } catch (UncheckedIOException e) {
                 throw e.getCause();

@@ -67,6 +67,11 @@ final class Manifest {
      * to its package's folder).
      */
     void replace(String path, String to, String backup, String content) throws IOException {
+        replace(path, to, backup, content.getBytes(StandardCharsets.UTF_8));
+    }
+
+    /** As {@link #replace(String, String, String, String)}, with the new content as bytes (a source in its own encoding). */
+    void replace(String path, String to, String backup, byte[] content) throws IOException {
         Path original = dir.resolve(path), target = dir.resolve(to), kept = dir.resolve(backup);
         Files.createDirectories(kept.getParent());
         Files.copy(original, kept, StandardCopyOption.REPLACE_EXISTING);
@@ -154,9 +159,13 @@ final class Manifest {
 
     /** Writes through a temporary file beside the target, so no half-written file is ever left. */
     static void write(Path target, String content) throws IOException {
+        write(target, content.getBytes(StandardCharsets.UTF_8));
+    }
+
+    static void write(Path target, byte[] content) throws IOException {
         Files.createDirectories(target.getParent());
         Path temp = target.resolveSibling(target.getFileName() + ".migrate-tmp");
-        Files.write(temp, content.getBytes(StandardCharsets.UTF_8));
+        Files.write(temp, content);
         Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
     }
 

@@ -2,6 +2,7 @@ package app.migrate;
 
 import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -13,6 +14,8 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 import java.util.stream.Stream;
 
 /**
@@ -42,6 +45,7 @@ public final class Migration {
     static final String ORIGINALS = Layout.BACKUP + "/originals/";
     /** Jars of a project's lib/ that are JUnit's (the pom's JUnit replaces them), by name prefix. */
     private static final List<String> TEST_FRAMEWORK_JARS = List.of("junit", "opentest4j", "apiguardian", "hamcrest");
+    private static final Pattern MISSING_PACKAGE = Pattern.compile("package ([\\w.]+) does not exist");
 
     private final Toolchain tools;
     private final Catalog catalog;
@@ -79,11 +83,27 @@ public final class Migration {
      * @throws MigrationException refused or taken back, with the one line to print; nothing changed
      */
     public boolean migrate(Path dir, boolean allowDirty, boolean dryRun) throws MigrationException {
-        Layout layout = Layout.read(dir, tools.mavenRepository());
-        Path d = layout.dir();
+        return migrate(dir, allowDirty, dryRun, null);
+    }
+
+    /**
+     * As {@link #migrate(Path, boolean, boolean)}, the sources read in the encoding named.
+     *
+     * @param encoding the sources' character encoding ({@code windows-1255}), or null: as the
+     *                 project states it, else detected ({@link SourceEncoding})
+     */
+    public boolean migrate(Path dir, boolean allowDirty, boolean dryRun, String encoding) throws MigrationException {
+        Layout named = Layout.read(dir, tools.mavenRepository());
+        Path d = named.dir();
         List<SourceFile> files;
+        List<Path> strays;
+        Layout layout;
+        SourceEncoding charset;
         try {
-            files = layout.sources();
+            strays = named.strayTestRoots();
+            layout = named.withTests(strays);
+            charset = SourceEncoding.of(d, encoding, layout.javaFiles());
+            files = layout.sources(charset.charset());
         } catch (IOException e) {
             throw new MigrationException("cannot read " + d + ": " + e.getMessage(), e);
         }
@@ -111,17 +131,32 @@ public final class Migration {
         if (!allowDirty && !dryRun) requireCleanGit(d);
         if (!dryRun) requireWritable(d, files, layout);
         List<Path> junit = new ArrayList<>(tools.junit());
-        if (junit.isEmpty() && layout.jars().stream().noneMatch(j -> j.getFileName().toString().startsWith("junit-jupiter-api")))
+        if (junit.isEmpty() && layout.jars().stream().noneMatch(j -> j.getFileName().toString().startsWith("junit-jupiter-api")
+                && Files.isRegularFile(j)))
             throw new MigrationException("JUnit 5 is not in " + tools.mavenRepository() + " (the library's own build puts it"
                     + " there): run mvn -q install -DskipTests in the library's clone first, then migrate again");
 
+        List<Libraries.Library> libraries = Libraries.of(d, tools.mavenRepository(), layout.jars(), files);
+        Map<Libraries.Library, Path> resolved = new LinkedHashMap<>();
+        for (Libraries.Library l : libraries) {
+            Path jar = Libraries.jar(l, d, tools.mavenRepository()).orElse(null);
+            if (jar == null) {
+                step("fetching " + l.coordinates() + " (" + l.from() + ") with mvn");
+                jar = tools.fetch(l.coordinates()).orElse(null);
+            }
+            if (jar != null) resolved.put(l, jar);
+        }
+        if (libraries.stream().anyMatch(l -> l.artifact().equals("junit") && l.group().equals("junit")))
+            tools.fetchIfMissing("org.hamcrest:hamcrest-core:1.3").ifPresent(junit::add);
+        Project project = new Project(layout, charset, strays, libraries, resolved);
+
         Plan plan;
         try (Scratch scratch = new Scratch()) {
-            plan = plan(layout, course, extras, tests, junit, scratch.dir);
+            plan = plan(project, course, extras, tests, junit, scratch.dir);
         } catch (IOException e) {
             throw new MigrationException("cannot compile in a scratch folder: " + e.getMessage(), e);
         }
-        List<String> report = plan.report(d, layout, tools);
+        List<String> report = plan.report(d, project, tools);
         if (dryRun) {
             out.println("raytracer migrate --dry-run: nothing changed; a migration would do this:");
             report.forEach(out::println);
@@ -162,6 +197,11 @@ public final class Migration {
 
     // ===== the plan: everything decided in a scratch folder before the project changes =====
 
+    /** What was read of the project before the plan: its layout, encoding and libraries. */
+    private record Project(Layout layout, SourceEncoding encoding, List<Path> strays, List<Libraries.Library> libraries,
+            Map<Libraries.Library, Path> resolved) {
+    }
+
     /** A file that stays, with its text after the 2025–26 packages are folded, and where it goes. */
     private record Kept(SourceFile file, String text, Path target) {
         boolean changed() {
@@ -172,11 +212,19 @@ public final class Migration {
     /** Everything a migration will do and say. */
     private record Plan(List<SourceFile> course, List<Kept> extras, Map<SourceFile, String> setAside, List<Kept> tests,
             Map<SourceFile, String> leftOut, List<CourseChoices.Choice> choices, BuildPlan build) {
-        List<String> report(Path d, Layout layout, Toolchain tools) {
+        List<String> report(Path d, Project project, Toolchain tools) {
+            Layout layout = project.layout;
             List<String> r = new ArrayList<>();
             r.add("raytracer migrate: " + d + " (" + layout.kind().label + ": " + Layout.names(d, layout.mainRoots())
                     + (layout.testRoots().isEmpty() ? "" : "; tests " + Layout.names(d, layout.testRoots()))
-                    + "; Java release " + build.release() + ")");
+                    + "; Java release " + build.release() + "; sources in " + project.encoding.describe() + ")");
+            if (!project.strays.isEmpty())
+                r.add("Tests found outside the folders your build names, now test folders: " + Layout.names(d, project.strays));
+            if (!project.libraries.isEmpty()) {
+                r.add("Your libraries, now dependencies in pom.xml: " + project.libraries.size());
+                project.libraries.forEach(l -> r.add("  " + l.describe() + (project.resolved.containsKey(l) ? ""
+                        : "; not in " + tools.mavenRepository() + " and mvn could not fetch it: the files that use it are left out")));
+            }
             if (!choices.isEmpty()) {
                 r.add("Where your code chose otherwise than the library (README, \"Which course year?\"):");
                 choices.forEach(c -> r.add("  " + c.line()));
@@ -212,12 +260,17 @@ public final class Migration {
         }
     }
 
-    private Plan plan(Layout layout, List<SourceFile> course, List<SourceFile> extras, List<SourceFile> tests,
+    private Plan plan(Project project, List<SourceFile> course, List<SourceFile> extras, List<SourceFile> tests,
             List<Path> junit, Path scratch) throws IOException, MigrationException {
+        Layout layout = project.layout;
         Path d = layout.dir();
-        Javac javac = new Javac();
+        Charset charset = project.encoding.charset();
+        Javac javac = new Javac(charset);
         int jdk = tools.jdk();
-        List<Path> projectJars = layout.jars();
+        // JUnit 5 as the project's build had it (its lib/), and the project's other libraries.
+        List<Path> projectJars = new ArrayList<>(layout.jars().stream()
+                .filter(j -> isTestFramework(j) && Files.isRegularFile(j)).toList());
+        projectJars.addAll(project.resolved.values());
 
         // 1. The project as it is must compile (else its errors would be blamed on the library).
         step("compiling " + d.getFileName() + " as it is (" + (course.size() + extras.size()) + " classes, " + tests.size()
@@ -230,7 +283,7 @@ public final class Migration {
         Map<String, String> own = new LinkedHashMap<>();
         course.forEach(f -> own.putIfAbsent(f.simpleName(), f.text()));
         List<Kept> keptExtras = extras.stream().map(f -> kept(f)).toList();
-        Map<Path, Kept> staged = stage(keptExtras, d, scratch.resolve("stage-main"));
+        Map<Path, Kept> staged = stage(keptExtras, d, scratch.resolve("stage-main"), charset);
         step("compiling your " + extras.size() + " own classes against the library");
         List<Path> libraryPath = new ArrayList<>(List.of(tools.library()));
         libraryPath.addAll(nonJUnit(projectJars));
@@ -243,7 +296,7 @@ public final class Migration {
 
         // 3. The tests against the library and the kept extras; those that fail are left out.
         List<Kept> keptTests = tests.stream().map(f -> kept(f)).toList();
-        Map<Path, Kept> stagedTests = stage(keptTests, d, scratch.resolve("stage-test"));
+        Map<Path, Kept> stagedTests = stage(keptTests, d, scratch.resolve("stage-test"), charset);
         step("compiling your " + tests.size() + " test files against the library");
         List<Path> testPath = new ArrayList<>(libraryPath);
         testPath.add(scratch.resolve("main"));
@@ -269,7 +322,7 @@ public final class Migration {
             }
         }
         return new Plan(course, extrasKept, setAside, testsKept, leftOut, choices,
-                buildPlan(layout, extras, tests, leftOut.keySet(), release, d));
+                buildPlan(project, extras, tests, leftOut.keySet(), release, d));
     }
 
     private void requireCompilesAsIs(Javac javac, Path d, List<SourceFile> course, List<SourceFile> extras,
@@ -283,27 +336,53 @@ public final class Migration {
                 scratch.resolve("as-is-test"));
         Map<Path, List<Javac.Problem>> failed = new LinkedHashMap<>(m.failed());
         failed.putAll(t.failed());
-        // A file that needs a newer Java is named later, with its reason; so is a file that failed
-        // only because such a file was left out, directly or through others.
+        // A file that needs a newer Java than this JDK's is named later, with its reason (a course
+        // class among them is replaced by the library's anyway); so is a file that failed only
+        // because such a file was left out, directly or through others: javac reports those as a
+        // missing class or a missing package (every file of 2025-26's geometries.api left out).
+        Map<Path, String> packages = new LinkedHashMap<>();
+        Stream.of(course, extras, tests).flatMap(List::stream)
+                .forEach(f -> packages.put(f.path().toAbsolutePath().normalize(), f.packageName()));
         Set<String> excused = new LinkedHashSet<>();
+        Set<String> excusedPackages = new LinkedHashSet<>();
         failed.forEach((f, problems) -> {
-            if (Reasons.releaseNeeded(problems.get(0)) > tools.jdk()) excused.add(className(f));
+            if (Reasons.releaseNeeded(problems.get(0)) > tools.jdk()) excuse(f, packages, excused, excusedPackages);
         });
-        for (boolean grew = true; grew;) {
+        for (boolean grew = !excused.isEmpty(); grew;) {
             grew = false;
-            for (Map.Entry<Path, List<Javac.Problem>> e : failed.entrySet()) {
-                String name = className(e.getKey());
-                Javac.Problem p = e.getValue().get(0);
-                if (!excused.contains(name) && excused.stream().anyMatch(x -> p.message().contains(x))) grew = excused.add(name);
-            }
+            for (Map.Entry<Path, List<Javac.Problem>> e : failed.entrySet())
+                if (!excused.contains(className(e.getKey())) && knockOn(e.getValue().get(0), excused, excusedPackages)) {
+                    excuse(e.getKey(), packages, excused, excusedPackages);
+                    grew = true;
+                }
         }
         for (Map.Entry<Path, List<Javac.Problem>> e : failed.entrySet()) {
             if (excused.contains(className(e.getKey()))) continue;
             Javac.Problem p = e.getValue().get(0);
+            boolean syntax = p.code().startsWith("compiler.err.expected") || p.code().startsWith("compiler.err.illegal.start")
+                    || p.code().startsWith("compiler.err.premature.eof") || p.code().startsWith("compiler.err.not.stmt");
             throw new MigrationException(d + " does not compile as it is (" + d.relativize(p.file()).toString().replace('\\', '/')
-                    + ":" + p.line() + ": " + oneLine(p.message()) + "): fix it first, or run migrate"
-                    + " with the JDK it was written for (nothing was changed)");
+                    + ":" + p.line() + ": " + oneLine(p.message()) + "): fix it first"
+                    + (syntax ? " (if that file is written for a Java newer than " + tools.jdk() + ", run migrate with that JDK)" : "")
+                    + " (nothing was changed)");
         }
+    }
+
+    /** Records a file left out of the as-is check: its class, and its package as far as javac would miss it. */
+    private static void excuse(Path file, Map<Path, String> packages, Set<String> excused, Set<String> excusedPackages) {
+        excused.add(className(file));
+        excusedPackages.add(packages.getOrDefault(file, ""));
+    }
+
+    /**
+     * Whether a file's first error is the knock-on of files left out: it names one of their
+     * classes, or a package of theirs ("package geometries.api does not exist").
+     */
+    private static boolean knockOn(Javac.Problem p, Set<String> excused, Set<String> excusedPackages) {
+        Matcher missing = MISSING_PACKAGE.matcher(p.message());
+        if (missing.find() && excusedPackages.stream().anyMatch(x -> x.equals(missing.group(1)) || x.startsWith(missing.group(1) + ".")))
+            return true;
+        return excused.stream().anyMatch(x -> Pattern.compile("\\b" + Pattern.quote(x) + "\\b").matcher(p.message()).find());
     }
 
     private static String className(Path file) {
@@ -328,12 +407,12 @@ public final class Migration {
     }
 
     /** Writes the files, as they will be, under {@code stage} at their paths in the project. */
-    private static Map<Path, Kept> stage(List<Kept> files, Path d, Path stage) throws IOException {
+    private static Map<Path, Kept> stage(List<Kept> files, Path d, Path stage, Charset charset) throws IOException {
         Map<Path, Kept> staged = new LinkedHashMap<>();
         for (Kept k : files) {
             Path p = stage.resolve(d.relativize(k.target).toString()).toAbsolutePath().normalize();
             Files.createDirectories(p.getParent());
-            Files.writeString(p, k.text, StandardCharsets.UTF_8);
+            Files.write(p, k.text.getBytes(charset));
             staged.put(p, k);
         }
         return staged;
@@ -351,8 +430,9 @@ public final class Migration {
         return lines;
     }
 
-    private BuildPlan buildPlan(Layout layout, List<SourceFile> extras, List<SourceFile> tests, Set<SourceFile> leftOut,
+    private BuildPlan buildPlan(Project project, List<SourceFile> extras, List<SourceFile> tests, Set<SourceFile> leftOut,
             int release, Path d) {
+        Layout layout = project.layout;
         List<String> mainRoots = layout.mainRoots().stream().map(r -> rel(d, r)).toList();
         Set<Path> testRootPaths = new LinkedHashSet<>(layout.testRoots());
         tests.forEach(t -> testRootPaths.add(t.root()));
@@ -366,9 +446,9 @@ public final class Migration {
         List<String> mainExcludes = patterns(mixed, all);
         List<String> testIncludes = mixed.isEmpty() ? List.of() : patterns(tests, all);
         List<String> testExcludes = leftOut.stream().map(SourceFile::inRoot).sorted().toList();
-        List<String> jars = layout.jars().stream().filter(j -> j.startsWith(d) && !isTestFramework(j)).map(j -> rel(d, j)).toList();
+        boolean junit4 = Libraries.JUnit4.usedBy(tests);
         return new BuildPlan(tools.coordinates(), tools.junitVersion(), release, mainRoots, testRoots, mainExcludes,
-                testIncludes, testExcludes, jars);
+                testIncludes, testExcludes, project.libraries, junit4, project.encoding.charset().name());
     }
 
     /** Patterns for {@code chosen} within their folders: {@code unittests/**} where a whole top folder is chosen. */
@@ -402,7 +482,8 @@ public final class Migration {
             for (SourceFile f : plan.course) manifest.move(f.relative(d), Layout.BACKUP + "/" + f.relative(d));
             for (SourceFile f : plan.setAside.keySet()) manifest.move(f.relative(d), SET_ASIDE + f.relative(d));
             for (Kept k : Stream.concat(plan.extras.stream(), plan.tests.stream()).filter(Kept::changed).toList())
-                manifest.replace(k.file.relative(d), rel(d, k.target), ORIGINALS + k.file.relative(d), k.text);
+                manifest.replace(k.file.relative(d), rel(d, k.target), ORIGINALS + k.file.relative(d),
+                        k.text.getBytes(Charset.forName(plan.build.encoding())));
             Path pom = d.resolve("pom.xml");
             if (Files.isRegularFile(pom)) {
                 PomFile.Updated updated = PomFile.update(Files.readString(pom, StandardCharsets.UTF_8), plan.build);

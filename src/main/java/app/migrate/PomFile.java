@@ -80,8 +80,10 @@ final class PomFile {
             changes.add("Java release " + release.getTextContent().trim() + " -> " + plan.release());
             release.setTextContent(Integer.toString(plan.release()));
         }
-        if (child(properties, "project.build.sourceEncoding") == null)
-            append(properties, "project.build.sourceEncoding", "UTF-8");
+        if (child(properties, "project.build.sourceEncoding") == null) {
+            append(properties, "project.build.sourceEncoding", plan.encoding());
+            if (!plan.encoding().equals("UTF-8")) changes.add("source encoding " + plan.encoding());
+        }
 
         Element managed = ensure(ensure(project, "dependencyManagement"), "dependencies");
         // A student's own JUnit with a version of its own keeps its version: the BOM would manage
@@ -105,13 +107,22 @@ final class PomFile {
             append(dependency(dependencies, "org.junit.jupiter", "junit-jupiter", null), "scope", "test");
             changes.add("dependency junit-jupiter (test)");
         }
-        for (String jar : plan.systemJars()) {
-            String name = jar.substring(jar.lastIndexOf('/') + 1).replaceAll("\\.jar$", "");
-            if (findDependency(dependencies, "local.lib", name) != null) continue;
-            Element d = dependency(dependencies, "local.lib", name, "0");
-            append(d, "scope", "system");
-            append(d, "systemPath", "${project.basedir}/" + jar);
-            changes.add("dependency on " + jar + " (your lib/)");
+        if (plan.junit4() && findDependency(dependencies, "org.junit.vintage", "junit-vintage-engine") == null) {
+            // JUnit 4's tests run on the JUnit Platform through the Vintage engine, in the same mvn test.
+            boolean bom = findDependency(managed, "org.junit", "junit-bom") != null;
+            append(dependency(dependencies, "org.junit.vintage", "junit-vintage-engine", bom ? null : plan.junit()), "scope", "test");
+            changes.add("dependency junit-vintage-engine (test: your JUnit 4 tests)");
+        }
+        for (Libraries.Library l : plan.libraries()) {
+            if (findDependency(dependencies, l.group(), l.artifact()) != null) continue;
+            Element d = dependency(dependencies, l.group(), l.artifact(), l.version());
+            if (l.systemPath() != null) {
+                append(d, "scope", "system");
+                append(d, "systemPath", "${project.basedir}/" + l.systemPath());
+            } else if (l.testOnly()) {
+                append(d, "scope", "test");
+            }
+            changes.add("dependency " + l.describe());
         }
 
         Element build = ensure(project, "build");

@@ -1,7 +1,7 @@
 package app.migrate;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
+import java.nio.charset.Charset;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.regex.Matcher;
@@ -25,8 +25,8 @@ record SourceFile(Path path, Path root, String packageName, String simpleName, b
     /** A JUnit import, static or not, of any JUnit generation (4's {@code org.junit.Test} too). */
     private static final Pattern JUNIT = Pattern.compile("(?m)^\\s*import\\s+(static\\s+)?org\\.junit\\.");
 
-    static SourceFile read(Path path, Path root, boolean inTestFolder) throws IOException {
-        String text = new String(Files.readAllBytes(path), StandardCharsets.UTF_8);
+    static SourceFile read(Path path, Path root, boolean inTestFolder, Charset encoding) throws IOException {
+        String text = new String(Files.readAllBytes(path), encoding);
         Matcher m = PACKAGE.matcher(text);
         String pkg = m.find() ? m.group(1) : "";
         String name = path.getFileName().toString();

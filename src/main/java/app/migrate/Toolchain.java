@@ -11,7 +11,9 @@ import java.security.CodeSource;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Optional;
 import java.util.Properties;
+import java.util.concurrent.TimeUnit;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
 import java.util.stream.Stream;
@@ -29,8 +31,11 @@ import java.util.stream.Stream;
  * @param coordinates     {@code group:artifact:version} of the library
  * @param junitVersion    the JUnit BOM version a new pom imports
  * @param jdk             the newest release this JDK compiles for
+ * @param maven           the Maven command that fetches a library missing from the repository
+ *                        ({@code mvn dependency:get}), or null: nothing is fetched
  */
-record Toolchain(Path library, List<Path> junit, Path mavenRepository, String coordinates, String junitVersion, int jdk) {
+record Toolchain(Path library, List<Path> junit, Path mavenRepository, String coordinates, String junitVersion, int jdk,
+        String maven) {
     /** The JUnit artifacts a course test compiles against, as {@code group path/artifact}. */
     private static final List<String> JUNIT_ARTIFACTS = List.of("org/junit/jupiter/junit-jupiter-api",
             "org/junit/jupiter/junit-jupiter-params", "org/junit/platform/junit-platform-commons",
@@ -49,7 +54,47 @@ record Toolchain(Path library, List<Path> junit, Path mavenRepository, String co
                 + ":" + p.getProperty("version", "1.0.0-SNAPSHOT");
         String junit = p.getProperty("junit", "5.11.3");
         Path repo = defaultMavenRepository();
-        return new Toolchain(library, junitJars(repo, junit), repo, coordinates, junit, Javac.newestRelease());
+        String mvn = System.getProperty("os.name", "").startsWith("Windows") ? "mvn.cmd" : "mvn";
+        return new Toolchain(library, junitJars(repo, junit), repo, coordinates, junit, Javac.newestRelease(), mvn);
+    }
+
+    /** The jar of {@code group:artifact:version} in the repository, fetched there first when missing. */
+    Optional<Path> fetchIfMissing(String coordinates) {
+        Path jar = jarOf(coordinates);
+        return Files.isRegularFile(jar) ? Optional.of(jar) : fetch(coordinates);
+    }
+
+    /**
+     * Fetches {@code group:artifact:version} into the repository with Maven, which a migrated
+     * project needs anyway for {@code mvn test} (and which would fetch it then).
+     *
+     * @return the jar, or empty when there is no Maven to ask or it could not fetch it (offline,
+     *         no such artifact): the caller names the library as missing
+     */
+    Optional<Path> fetch(String coordinates) {
+        Path jar = jarOf(coordinates);
+        if (maven == null) return Optional.empty();
+        try {
+            Process p = new ProcessBuilder(maven, "-q", "-B", "dependency:get", "-Dartifact=" + coordinates, "-Dtransitive=false",
+                    "-Dmaven.repo.local=" + mavenRepository).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD)
+                    .start();
+            p.getOutputStream().close();
+            if (!p.waitFor(180, TimeUnit.SECONDS)) {
+                p.destroyForcibly();
+                return Optional.empty();
+            }
+        } catch (IOException e) {
+            return Optional.empty(); // no Maven on the PATH: the library is reported missing, with the files that use it
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return Optional.empty();
+        }
+        return Files.isRegularFile(jar) ? Optional.of(jar) : Optional.empty();
+    }
+
+    private Path jarOf(String coordinates) {
+        String[] c = coordinates.split(":");
+        return mavenRepository.resolve(c[0].replace('.', '/')).resolve(c[1]).resolve(c[2]).resolve(c[1] + "-" + c[2] + ".jar");
     }
 
     /** Where the library's jar lies in the local repository (it may not be installed yet). */

@@ -1,14 +1,21 @@
 package app.migrate;
 
+import java.io.File;
 import java.io.IOException;
+import java.io.OutputStream;
+import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.Arrays;
+import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.stream.Stream;
 
 import app.Project;
+import renderer.Camera;
 
 /**
  * Course projects built for the migration tests, as students keep them: small, but each with the
@@ -90,6 +97,42 @@ final class CourseProjects {
         // presence is what makes the migration keep left-out tests out of the IDE's compile too.
         write(dir, ".idea/misc.xml", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<project version=\"4\">\n</project>\n");
         return dir;
+    }
+
+    /**
+     * A migration with the library of this build (target/classes), JUnit from the test's own class
+     * path, and an empty Maven repository beside {@code dir} ({@link #repository}) that nothing is
+     * fetched into: a library a fixture needs is put there by {@link #install}.
+     */
+    static Migration migration(Path dir, OutputStream printed, OutputStream steps) {
+        Toolchain mine = Toolchain.ofThisProcess();
+        List<Path> junit = Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
+                .filter(p -> p.matches(".*(junit-jupiter-api|junit-jupiter-params|junit-platform-commons|opentest4j|apiguardian).*\\.jar"))
+                .map(Path::of).toList();
+        Toolchain tools = new Toolchain(Toolchain.location(Camera.class), junit, repository(dir), mine.coordinates(),
+                mine.junitVersion(), mine.jdk(), null);
+        PrintStream out = new PrintStream(printed, true, StandardCharsets.UTF_8);
+        return new Migration(tools, Camera.class.getClassLoader(), out, new PrintStream(steps, true, StandardCharsets.UTF_8));
+    }
+
+    /** The Maven repository of {@link #migration}'s toolchain. */
+    static Path repository(Path dir) {
+        return dir.resolveSibling(dir.getFileName() + "-m2");
+    }
+
+    /**
+     * Puts a jar of the test's own class path ({@code junit-4.13.2.jar}) into that repository as
+     * {@code group:artifact:version}, as a student's Maven or IntelliJ would have it.
+     */
+    static Path install(Path dir, String coordinates) throws IOException {
+        String[] c = coordinates.split(":");
+        String name = c[1] + "-" + c[2] + ".jar";
+        Path jar = Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator)).map(Path::of)
+                .filter(p -> p.getFileName().toString().equals(name)).findFirst()
+                .orElseThrow(() -> new IllegalStateException(name + " is not on the test class path (a test dependency in pom.xml)"));
+        Path to = repository(dir).resolve(c[0].replace('.', '/')).resolve(c[1]).resolve(c[2]).resolve(name);
+        Files.createDirectories(to.getParent());
+        return Files.copy(jar, to, StandardCopyOption.REPLACE_EXISTING);
     }
 
     static void write(Path dir, String path, String text) throws IOException {

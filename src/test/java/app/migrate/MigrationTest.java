@@ -45,14 +45,7 @@ class MigrationTest {
 
     /** The library of this build (target/classes), JUnit from the test's own class path, an empty Maven repository. */
     private Migration migration() {
-        Toolchain mine = Toolchain.ofThisProcess();
-        List<Path> junit = Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
-                .filter(p -> p.matches(".*(junit-jupiter-api|junit-jupiter-params|junit-platform-commons|opentest4j|apiguardian).*\\.jar"))
-                .map(Path::of).toList();
-        Toolchain tools = new Toolchain(Toolchain.location(Camera.class), junit, dir.resolveSibling(dir.getFileName() + "-m2"),
-                mine.coordinates(), mine.junitVersion(), mine.jdk());
-        PrintStream out = new PrintStream(printed, true, StandardCharsets.UTF_8);
-        return new Migration(tools, Camera.class.getClassLoader(), out, new PrintStream(steps, true, StandardCharsets.UTF_8));
+        return CourseProjects.migration(dir, printed, steps);
     }
 
     private String printed() {
@@ -145,7 +138,7 @@ class MigrationTest {
                 sources.add(dir.resolve(f));
             List<Path> classPath = new ArrayList<>(Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
                     .map(Path::of).toList());
-            Javac.Outcome compiled = new Javac().compile(sources, classPath, 17, classes);
+            Javac.Outcome compiled = new Javac(StandardCharsets.UTF_8).compile(sources, classPath, 17, classes);
             assertThat(compiled.failed()).isEmpty();
             try (URLClassLoader loader = new URLClassLoader(new URL[] { classes.toUri().toURL() }, getClass().getClassLoader())) {
                 var results = EngineTestKit.engine("junit-jupiter")

@@ -1,0 +1,325 @@
+package app.migrate;
+
+import static app.migrate.CourseProjects.snapshot;
+import static app.migrate.CourseProjects.write;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.nio.charset.Charset;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.zip.ZipEntry;
+import java.util.zip.ZipOutputStream;
+
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Nested;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The cases a survey of real course projects found {@code migrate} refusing or losing tests on,
+ * each as a small project of its own: a 2025–26 project whose course {@code Double3} needs Java 21,
+ * a test that needs Java 21, IntelliJ's annotations, JUnit 4, the project's {@code lib/} jars, a
+ * stale top-level module file, a {@code unittest/} folder, and sources in windows-1255. They run on
+ * every JDK CI runs (17 and the newest), which is where the refusals differed.
+ */
+class SurveyCasesTest {
+    @TempDir
+    Path dir;
+    private final ByteArrayOutputStream printed = new ByteArrayOutputStream();
+    private final OutputStream steps = OutputStream.nullOutputStream();
+    private static final int JDK = Runtime.version().feature();
+
+    private boolean migrate() throws MigrationException {
+        return CourseProjects.migration(dir, printed, steps).migrate(dir, false, false);
+    }
+
+    private String printed() {
+        return printed.toString(StandardCharsets.UTF_8);
+    }
+
+    private String read(String path) throws IOException {
+        return Files.readString(dir.resolve(path), StandardCharsets.UTF_8);
+    }
+
+    /** The course's Point and Vector, and a test of them that runs on the library, in {@code tests}. */
+    private void courseProject(String tests) throws IOException {
+        write(dir, "src/primitives/Point.java", CourseProjects.POINT);
+        write(dir, "src/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1"));
+        write(dir, tests + "/primitives/VectorTests.java", CourseProjects.vectorTest("primitives"));
+    }
+
+    @Nested
+    @DisplayName("a 2025-26 project whose course Double3 is a record with a record pattern (Java 21)")
+    class RecordPattern {
+        @BeforeEach
+        void project() throws IOException {
+            write(dir, "src/primitives/Double3.java", """
+                    package primitives;
+
+                    public record Double3(double d1, double d2, double d3) {
+                        @Override
+                        public boolean equals(Object obj) {
+                            return this == obj || (obj instanceof Double3(double a, double b, double c) && a == d1 && b == d2 && c == d3);
+                        }
+                    }
+                    """);
+            write(dir, "src/primitives/Point.java", """
+                    package primitives;
+
+                    public class Point {
+                        protected final Double3 xyz;
+                        public Point(double x, double y, double z) { xyz = new Double3(x, y, z); }
+                        public Vector subtract(Point p) { return new Vector(xyz.d1() - p.xyz.d1(), 0, 0); }
+                    }
+                    """);
+            write(dir, "src/primitives/Vector.java", """
+                    package primitives;
+
+                    public class Vector extends Point {
+                        public Vector(double x, double y, double z) { super(x, y, z); }
+                        public double length() { return Math.abs(xyz.d1()); }
+                    }
+                    """);
+            write(dir, "src/geometries/api/Intersectable.java", "package geometries.api;\n\nimport primitives.Point;\n\n"
+                    + "public abstract class Intersectable {\n    public abstract Point center();\n}\n");
+            write(dir, "src/geometries/impl/RadialGeometry.java", "package geometries.impl;\n\nimport geometries.api.Intersectable;\n\n"
+                    + "public abstract class RadialGeometry extends Intersectable {\n}\n");
+            write(dir, "src/geometries/impl/Cube.java", "package geometries.impl;\n\nimport primitives.Point;\n\n"
+                    + "public class Cube {\n    public Point corner() { return new Point(1, 1, 1); }\n}\n");
+            write(dir, "unittests/primitives/VectorTests.java", CourseProjects.vectorTest("primitives"));
+        }
+
+        @Test
+        @DisplayName("migrates on this JDK: the files that need Java 21 are course classes the library replaces")
+        void migrates() throws Exception {
+            assertThat(migrate()).isTrue();
+            assertThat(dir.resolve("course-backup/src/primitives/Double3.java")).exists();
+            assertThat(dir.resolve("course-backup/src/geometries/api/Intersectable.java")).exists();
+            assertThat(read("src/geometries/Cube.java")).contains("package geometries;");
+            assertThat(printed()).contains("Tests kept: 1 files").doesNotContain("left out");
+        }
+    }
+
+    @Nested
+    @DisplayName("a project that compiles only on a newer JDK than this one, or not at all")
+    class NewerRelease {
+        @Test
+        @DisplayName("a test that uses List.getFirst is left out with the release it needs below Java 21, kept from 21 on")
+        void getFirst() throws Exception {
+            courseProject("unittests");
+            write(dir, "unittests/primitives/ListTests.java", """
+                    package primitives;
+
+                    import static org.junit.jupiter.api.Assertions.assertEquals;
+
+                    import java.util.List;
+                    import org.junit.jupiter.api.Test;
+
+                    class ListTests {
+                        @Test
+                        void first() {
+                            assertEquals(new Point(1, 2, 3), List.of(new Point(1, 2, 3)).getFirst());
+                        }
+                    }
+                    """);
+            assertThat(migrate()).isTrue();
+            if (JDK < 21)
+                assertThat(printed()).contains("unittests/primitives/ListTests.java:11: needs Java 21 (List.getFirst/getLast), and this JDK is "
+                        + JDK + ": run migrate with JDK 21 or newer, or port it");
+            else
+                assertThat(printed()).contains("Tests kept: 2 files").doesNotContain("left out");
+        }
+
+        @Test
+        @DisplayName("a true error is refused naming its file, not a knock-on in another")
+        void trueError() throws IOException {
+            courseProject("unittests");
+            write(dir, "src/renderer/Broken.java", "package renderer;\n\nimport primitives.Point;\n\n"
+                    + "public class Broken {\n    Point p = new Point(1, 2);\n}\n");
+            write(dir, "src/renderer/User.java", "package renderer;\n\npublic class User {\n    Broken b = new Broken();\n}\n");
+            Map<String, String> before = snapshot(dir);
+            assertThatThrownBy(SurveyCasesTest.this::migrate).isInstanceOf(MigrationException.class)
+                    .hasMessageContaining("does not compile as it is (src/renderer/Broken.java:6: constructor Point in class"
+                            + " primitives.Point cannot be applied to given types;")
+                    .hasMessageContaining("fix it first (nothing was changed)");
+            assertThat(snapshot(dir)).isEqualTo(before);
+        }
+    }
+
+    @Nested
+    @DisplayName("where the tests are")
+    class TestFolders {
+        @Test
+        @DisplayName("a plain project's unittest/ folder is read as tests")
+        void unittest() throws Exception {
+            courseProject("unittest");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("tests unittest/", "Tests kept: 1 files");
+            assertThat(read("pom.xml")).contains("<testSourceDirectory>unittest</testSourceDirectory>");
+        }
+
+        @Test
+        @DisplayName("tests in a folder the build does not name are found, added and said")
+        void stray() throws Exception {
+            courseProject("unittests");
+            write(dir, "extra-tests/renderer/MoreTests.java", CourseProjects.vectorTest("renderer").replace("VectorTests", "MoreTests"));
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("Tests found outside the folders your build names, now test folders: extra-tests/",
+                    "Tests kept: 2 files");
+            assertThat(read("pom.xml")).contains("<source>extra-tests</source>");
+        }
+
+        @Test
+        @DisplayName("the module .idea/modules.xml names is read and gets the library, not a stale one at the top")
+        void modulesXml() throws Exception {
+            courseProject("unittests");
+            String stale = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<module type=\"JAVA_MODULE\" version=\"4\">\n"
+                    + "  <component name=\"NewModuleRootManager\" inherit-compiler-output=\"true\">\n"
+                    + "    <content url=\"file://$MODULE_DIR$\">\n"
+                    + "      <sourceFolder url=\"file://$MODULE_DIR$/src\" isTestSource=\"false\" />\n    </content>\n"
+                    + "    <orderEntry type=\"inheritedJdk\" />\n  </component>\n</module>\n";
+            write(dir, "course.iml", stale);
+            write(dir, ".idea/course.iml", stale.replace("    </content>",
+                    "      <sourceFolder url=\"file://$MODULE_DIR$/unittests\" isTestSource=\"true\" />\n    </content>"));
+            write(dir, ".idea/modules.xml", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<project version=\"4\">\n"
+                    + "  <component name=\"ProjectModuleManager\">\n    <modules>\n"
+                    + "      <module fileurl=\"file://$PROJECT_DIR$/.idea/course.iml\" filepath=\"$PROJECT_DIR$/.idea/course.iml\" />\n"
+                    + "    </modules>\n  </component>\n</project>\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("tests unittests/", "Tests kept: 1 files", ".idea/course.iml: the library jar added");
+            assertThat(read("course.iml")).isEqualTo(stale);
+            assertThat(read(".idea/course.iml")).contains(ImlFile.LIBRARY_NAME);
+        }
+    }
+
+    @Nested
+    @DisplayName("the project's own libraries")
+    class OwnLibraries {
+        private static final String IML = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<module type=\"JAVA_MODULE\" version=\"4\">\n"
+                + "  <component name=\"NewModuleRootManager\" inherit-compiler-output=\"true\">\n"
+                + "    <content url=\"file://$MODULE_DIR$\">\n"
+                + "      <sourceFolder url=\"file://$MODULE_DIR$/src\" isTestSource=\"false\" />\n"
+                + "      <sourceFolder url=\"file://$MODULE_DIR$/unittests\" isTestSource=\"true\" />\n    </content>\n"
+                + "    <orderEntry type=\"inheritedJdk\" />\nENTRIES  </component>\n</module>\n";
+
+        @Test
+        @DisplayName("IntelliJ's annotations from the module's Maven library become org.jetbrains:annotations")
+        void annotations() throws Exception {
+            courseProject("unittests");
+            CourseProjects.install(dir, "org.jetbrains:annotations:24.1.0");
+            write(dir, "course.iml", IML.replace("ENTRIES", "    <orderEntry type=\"module-library\">\n      <library>\n"
+                    + "        <CLASSES>\n          <root url=\"jar://$MAVEN_REPOSITORY$/org/jetbrains/annotations/24.1.0/"
+                    + "annotations-24.1.0.jar!/\" />\n        </CLASSES>\n      </library>\n    </orderEntry>\n"));
+            write(dir, "src/renderer/Names.java", "package renderer;\n\nimport org.jetbrains.annotations.NotNull;\n\n"
+                    + "public class Names {\n    public static @NotNull String name() { return \"n\"; }\n}\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("Your libraries, now dependencies in pom.xml: 1",
+                    "  org.jetbrains:annotations:24.1.0 (your IDE's module)", "Kept (your own classes; they compile against the library): 1");
+            assertThat(read("pom.xml")).contains("<groupId>org.jetbrains</groupId>\n      <artifactId>annotations</artifactId>\n"
+                    + "      <version>24.1.0</version>");
+        }
+
+        @Test
+        @DisplayName("JUnit 4 tests get JUnit 4 and the Vintage engine beside Jupiter, and are kept")
+        void junit4() throws Exception {
+            courseProject("unittests");
+            CourseProjects.install(dir, "junit:junit:4.13.2");
+            CourseProjects.install(dir, "org.hamcrest:hamcrest-core:1.3");
+            write(dir, "unittests/primitives/PointTest.java", """
+                    package primitives;
+
+                    import static org.junit.Assert.assertEquals;
+
+                    import org.junit.Test;
+
+                    public class PointTest {
+                        @Test
+                        public void subtract() {
+                            assertEquals(new Vector(1, 1, 1), new Point(2, 2, 2).subtract(new Point(1, 1, 1)));
+                        }
+                    }
+                    """);
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("Tests kept: 2 files", "junit:junit:4.13.2, tests (your code imports it")
+                    .doesNotContain("left out");
+            assertThat(read("pom.xml")).contains("<artifactId>junit-vintage-engine</artifactId>\n      <scope>test</scope>",
+                    "<groupId>junit</groupId>\n      <artifactId>junit</artifactId>\n      <version>4.13.2</version>\n"
+                            + "      <scope>test</scope>");
+        }
+
+        @Test
+        @DisplayName("lib/ jars: a known artifact by its coordinates, the project's own with system scope; JUnit's dropped")
+        void libJars() throws Exception {
+            courseProject("unittests");
+            jar("lib/gson-2.10.1.jar", "com/google/gson/Gson.class");
+            jar("lib/shapes.jar", "shapes/Star.class");
+            jar("lib/junit-jupiter-api-5.8.1.jar", "org/junit/jupiter/api/Test.class");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("Your libraries, now dependencies in pom.xml: 2",
+                    "  com.google.code.gson:gson:2.10.1 (lib/gson-2.10.1.jar)", "  lib/shapes.jar (lib/shapes.jar)");
+            assertThat(read("pom.xml")).contains("<artifactId>gson</artifactId>\n      <version>2.10.1</version>",
+                    "<systemPath>${project.basedir}/lib/shapes.jar</systemPath>").doesNotContain("junit-jupiter-api-5.8.1");
+        }
+
+        private void jar(String path, String entry) throws IOException {
+            Path jar = dir.resolve(path);
+            Files.createDirectories(jar.getParent());
+            try (ZipOutputStream zip = new ZipOutputStream(Files.newOutputStream(jar))) {
+                zip.putNextEntry(new ZipEntry(entry));
+                zip.write(new byte[] { (byte) 0xCA, (byte) 0xFE });
+                zip.closeEntry();
+            }
+        }
+    }
+
+    @Nested
+    @DisplayName("sources in another encoding than UTF-8")
+    class Encodings {
+        private static final Charset HEBREW = Charset.forName("windows-1255");
+        private static final String CUBE = "package geometries.impl;\n\nimport primitives.Point;\n\n"
+                + "/** \u05e7\u05d5\u05d1\u05d9\u05d9\u05d4: a cube. */\npublic class Cube {\n"
+                + "    public String name() { return \"\u05e7\u05d5\u05d1\u05d9\u05d9\u05d4\"; }\n"
+                + "    public Point corner() { return new Point(1, 1, 1); }\n}\n";
+
+        @BeforeEach
+        void project() throws IOException {
+            courseProject("unittests");
+            Path cube = dir.resolve("src/geometries/impl/Cube.java");
+            Files.createDirectories(cube.getParent());
+            Files.write(cube, CUBE.getBytes(HEBREW));
+        }
+
+        @Test
+        @DisplayName("windows-1255 is detected, written into the pom, and a rewritten file keeps it; undo restores the bytes")
+        void detected() throws Exception {
+            byte[] original = Files.readAllBytes(dir.resolve("src/geometries/impl/Cube.java"));
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("sources in windows-1255 (detected: not UTF-8)");
+            assertThat(read("pom.xml")).contains("<project.build.sourceEncoding>windows-1255</project.build.sourceEncoding>");
+            assertThat(new String(Files.readAllBytes(dir.resolve("src/geometries/Cube.java")), HEBREW))
+                    .isEqualTo(CUBE.replace("package geometries.impl;", "package geometries;"));
+            CourseProjects.migration(dir, printed, steps).undo(dir);
+            assertThat(Files.readAllBytes(dir.resolve("src/geometries/impl/Cube.java"))).isEqualTo(original);
+        }
+
+        @Test
+        @DisplayName("the encoding IntelliJ states is used; an unknown one named is refused in one line")
+        void stated() throws Exception {
+            write(dir, ".idea/encodings.xml", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<project version=\"4\">\n"
+                    + "  <component name=\"Encoding\">\n    <file url=\"PROJECT\" charset=\"windows-1255\" />\n  </component>\n</project>\n");
+            assertThatThrownBy(() -> CourseProjects.migration(dir, printed, steps).migrate(dir, false, true, "hebrew-9"))
+                    .isInstanceOf(MigrationException.class)
+                    .hasMessage("--encoding names the encoding \"hebrew-9\", which this Java does not know (UTF-8, windows-1255"
+                            + " and ISO-8859-1 are; nothing was changed)");
+            assertThat(CourseProjects.migration(dir, printed, steps).migrate(dir, false, true, null)).isFalse();
+            assertThat(printed()).contains("sources in windows-1255 (.idea/encodings.xml)");
+        }
+    }
+}
