@@ -211,7 +211,8 @@ public final class Migration {
 
     /** Everything a migration will do and say. */
     private record Plan(List<SourceFile> course, List<Kept> extras, Map<SourceFile, String> setAside, List<Kept> tests,
-            Map<SourceFile, String> leftOut, List<CourseChoices.Choice> choices, BuildPlan build) {
+            Map<SourceFile, String> leftOut, Map<SourceFile, String> trimmed, List<CourseChoices.Choice> choices,
+            BuildPlan build) {
         List<String> report(Path d, Project project, Toolchain tools) {
             Layout layout = project.layout;
             List<String> r = new ArrayList<>();
@@ -242,9 +243,14 @@ public final class Migration {
             r.add("Tests kept: " + tests.size() + " files" + (leftOut.isEmpty() ? "" : "; left out of the build (the files"
                     + " stay where they are, excluded in pom.xml): " + leftOut.size()));
             leftOut.forEach((f, why) -> r.add("  " + why));
+            if (!trimmed.isEmpty()) {
+                r.add("Tests kept with some of their methods left out (each replaced by a comment line naming why): "
+                        + trimmed.size() + " files");
+                trimmed.forEach((f, why) -> r.add("  " + why));
+            }
             long rewritten = Stream.concat(extras.stream(), tests.stream()).filter(Kept::changed).count();
             if (rewritten > 0)
-                r.add("Rewritten (2025-26 api/impl packages folded into geometries, lighting): " + rewritten
+                r.add("Rewritten (2025-26 api/impl packages folded into geometries, lighting; test methods left out): " + rewritten
                         + " files (originals in " + ORIGINALS + ")");
             r.add("pom.xml: " + (layout.pom() == null ? "written" : "updated") + " (" + build.library() + ", JUnit "
                     + build.junit() + ", Java release " + build.release() + ", every test class runs whatever its name)");
@@ -303,7 +309,41 @@ public final class Migration {
         testPath.addAll(junit);
         testPath.addAll(projectJars);
         Javac.Outcome test = javac.compile(stagedTests.keySet(), testPath, jdk, scratch.resolve("test"));
-        Map<SourceFile, String> leftOut = explain(test.failed(), stagedTests, reasons, d);
+        // A test file whose errors all lie in some of its test methods keeps the others: those
+        // methods give way to a comment line (the original kept in originals/), and the file is
+        // compiled again with the rest; one that still fails is left out whole, as before.
+        Map<SourceFile, String> trimmed = new LinkedHashMap<>();
+        Map<Path, List<Javac.Problem>> failedTests = new LinkedHashMap<>(test.failed());
+        Map<Path, Kept> retried = new LinkedHashMap<>();
+        Map<Path, String> trimmedLines = new LinkedHashMap<>();
+        for (Map.Entry<Path, List<Javac.Problem>> e : test.failed().entrySet()) {
+            Kept k = stagedTests.get(e.getKey());
+            Javac.Problem first = e.getValue().get(0);
+            TestMethods.Trimmed t = TestMethods.without(k.text, e.getValue().stream().map(Javac.Problem::line).toList(),
+                    reasons.explain(first, true));
+            if (t == null) continue;
+            Files.write(e.getKey(), t.text().getBytes(charset));
+            retried.put(e.getKey(), new Kept(k.file, t.text(), k.target));
+            trimmedLines.put(e.getKey(), k.file.relative(d) + ": " + t.removed().size() + " test method"
+                    + (t.removed().size() == 1 ? "" : "s") + " left out (" + String.join("(), ", t.removed()) + "()), the rest kept: "
+                    + first.line() + ": " + reasons.explain(first, true));
+        }
+        if (!retried.isEmpty()) {
+            step("compiling " + retried.size() + " of your test files again without the test methods that do not compile");
+            List<Path> again = new ArrayList<>(test.compiled());
+            again.addAll(retried.keySet());
+            Javac.Outcome second = javac.compile(again, testPath, jdk, scratch.resolve("test"));
+            for (Path p : second.compiled())
+                if (retried.containsKey(p)) {
+                    failedTests.remove(p);
+                    stagedTests.put(p, retried.get(p));
+                    trimmed.put(retried.get(p).file, trimmedLines.get(p));
+                }
+            // A trimmed file that still fails is left out whole, for the first reason it had.
+            second.failed().forEach(failedTests::putIfAbsent);
+            test = second;
+        }
+        Map<SourceFile, String> leftOut = explain(failedTests, stagedTests, reasons, d);
 
         // 4. The lowest release of 17, 21 and this JDK's at which all that stays compiles.
         List<Kept> extrasKept = main.compiled().stream().map(staged::get).toList();
@@ -321,7 +361,7 @@ public final class Migration {
                 break;
             }
         }
-        return new Plan(course, extrasKept, setAside, testsKept, leftOut, choices,
+        return new Plan(course, extrasKept, setAside, testsKept, leftOut, trimmed, choices,
                 buildPlan(project, extras, tests, leftOut.keySet(), release, d));
     }
 

@@ -103,7 +103,7 @@ class SurveyCasesTest {
             assertThat(dir.resolve("course-backup/src/primitives/Double3.java")).exists();
             assertThat(dir.resolve("course-backup/src/geometries/api/Intersectable.java")).exists();
             assertThat(read("src/geometries/Cube.java")).contains("package geometries;");
-            assertThat(printed()).contains("Tests kept: 1 files").doesNotContain("left out");
+            assertThat(printed()).contains("Tests kept: 1 files").doesNotContain("left out of the build");
         }
     }
 
@@ -134,7 +134,7 @@ class SurveyCasesTest {
                 assertThat(printed()).contains("unittests/primitives/ListTests.java:11: needs Java 21 (List.getFirst/getLast), and this JDK is "
                         + JDK + ": run migrate with JDK 21 or newer, or port it");
             else
-                assertThat(printed()).contains("Tests kept: 2 files").doesNotContain("left out");
+                assertThat(printed()).contains("Tests kept: 2 files").doesNotContain("left out of the build");
         }
 
         @Test
@@ -196,6 +196,56 @@ class SurveyCasesTest {
             assertThat(printed()).contains("tests unittests/", "Tests kept: 1 files", ".idea/course.iml: the library jar added");
             assertThat(read("course.iml")).isEqualTo(stale);
             assertThat(read(".idea/course.iml")).contains(ImlFile.LIBRARY_NAME);
+        }
+    }
+
+    @Nested
+    @DisplayName("a test file with one method on the student's own name")
+    class MethodByMethod {
+        @Test
+        @DisplayName("leaves out that method only: a comment line names why, the others run, undo restores the file")
+        void oneMethod() throws Exception {
+            courseProject("unittests");
+            String mixed = """
+                    package primitives;
+
+                    import static org.junit.jupiter.api.Assertions.assertEquals;
+
+                    import org.junit.jupiter.api.Test;
+
+                    class MixedTests {
+                        @Test
+                        void length() {
+                            assertEquals(5, new Vector(3, 4, 0).length(), 1e-10);
+                        }
+
+                        /** The student's own rotate. */
+                        @Test
+                        void turns() {
+                            assertEquals(new Vector(1, 0, 0), new Vector(1, 0, 0).rotate(90));
+                        }
+                    }
+                    """;
+            write(dir, "unittests/primitives/MixedTests.java", mixed);
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("Tests kept: 2 files", "Tests kept with some of their methods left out",
+                    "  unittests/primitives/MixedTests.java: 1 test method left out (turns()), the rest kept: 16: Vector.rotate(int) is your"
+                            + " own method (not in the course API): port the test or keep it aside")
+                    .doesNotContain("left out of the build");
+            assertThat(read("unittests/primitives/MixedTests.java")).isEqualTo(mixed.replace("""
+
+                        /** The student's own rotate. */
+                        @Test
+                        void turns() {
+                            assertEquals(new Vector(1, 0, 0), new Vector(1, 0, 0).rotate(90));
+                        }
+                    """, """
+
+                        // raytracer migrate: turns() left out: Vector.rotate(int) is your own method (not in the course API): port the test or keep it aside
+                    """));
+            assertThat(read("course-backup/originals/unittests/primitives/MixedTests.java")).isEqualTo(mixed);
+            CourseProjects.migration(dir, printed, steps).undo(dir);
+            assertThat(read("unittests/primitives/MixedTests.java")).isEqualTo(mixed);
         }
     }
 
