@@ -476,6 +476,47 @@ public final class Camera {
         }
 
         /**
+         * Another course spelling of {@link #setVpSize}.
+         *
+         * @param width  the width, a positive finite number
+         * @param height the height, a positive finite number
+         * @return this builder
+         */
+        public Builder setViewPlaneSize(double width, double height) {
+            return setVpSize(width, height);
+        }
+
+        /**
+         * Another course spelling of {@link #setVpDistance}.
+         *
+         * @param distance a positive finite number of scene units
+         * @return this builder
+         */
+        public Builder setViewPlaneDistance(double distance) {
+            return setVpDistance(distance);
+        }
+
+        /**
+         * A course spelling of the bounding-volume switch on the camera: does nothing, the render
+         * always walks the scene's BVH (as {@link Scene#buildBVH()}).
+         *
+         * @return this builder
+         */
+        public Builder enableBVH() {
+            return this;
+        }
+
+        /**
+         * The course's conservative bounding region (boxes tested before shapes): does nothing,
+         * the render's BVH does that and more (as {@link #enableBVH()}).
+         *
+         * @return this builder
+         */
+        public Builder enableCBR() {
+            return this;
+        }
+
+        /**
          * The writer the camera renders into (the 2023–24 form; replaces a
          * {@link #setResolution resolution} given before). Cameras built with it share it.
          *
@@ -626,6 +667,16 @@ public final class Camera {
         public Builder setDepthOfFieldSamples(int samples) {
             this.sampling = sampling.withLensSamples(samples);
             return this;
+        }
+
+        /**
+         * Another course spelling of {@link #setDepthOfFieldSamples}.
+         *
+         * @param samples rays per pixel, 1 to {@link #MAX_SAMPLES_PER_PIXEL}
+         * @return this builder
+         */
+        public Builder setDofRays(int samples) {
+            return setDepthOfFieldSamples(samples);
         }
 
         /**

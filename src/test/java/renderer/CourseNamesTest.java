@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.function.BiFunction;
 import java.util.function.Function;
+import java.util.function.UnaryOperator;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.AfterEach;
@@ -200,6 +201,39 @@ class CourseNamesTest {
                 new Switch("geometries.makeBVH()", s -> s.geometries.makeBVH(), s -> s.geometries),
                 new Switch("geometries.enableBVH()", s -> s.geometries.enableBVH(), s -> s.geometries))
                 .map(Arguments::of);
+    }
+
+    /** A camera spelling of another year, and the library's name it must equal. */
+    private record Spelling(String name, UnaryOperator<Camera.Builder> alias, UnaryOperator<Camera.Builder> same) {
+        @Override
+        public String toString() {
+            return name;
+        }
+    }
+
+    static Stream<Arguments> cameraSpellings() {
+        return Stream.of(new Spelling("setViewPlaneSize(3, 2)", b -> b.setViewPlaneSize(3, 2), b -> b.setVpSize(3, 2)),
+                new Spelling("setViewPlaneDistance(7)", b -> b.setViewPlaneDistance(7), b -> b.setVpDistance(7)),
+                new Spelling("setDofRays(9)", b -> b.setDepthOfField(5, 0.5).setDofRays(9),
+                        b -> b.setDepthOfField(5, 0.5).setDepthOfFieldSamples(9)),
+                new Spelling("enableBVH()", Camera.Builder::enableBVH, b -> b),
+                new Spelling("enableCBR()", Camera.Builder::enableCBR, b -> b))
+                .map(Arguments::of);
+    }
+
+    @Nested
+    @DisplayName("camera spellings of other course projects: setViewPlaneSize/Distance, setDofRays, enableBVH/CBR")
+    class CameraSpellings {
+        @ParameterizedTest(name = "{0} renders the same image as the library's name, with the same values")
+        @MethodSource("renderer.CourseNamesTest#cameraSpellings")
+        void same(Spelling spelling) {
+            ImageWriter expected = new ImageWriter("expected", 16, 12), actual = new ImageWriter("actual", 16, 12);
+            Camera a = spelling.alias().apply(TestScenes.camera(TestScenes.everyEffect(), actual)).build().renderImage();
+            Camera b = spelling.same().apply(TestScenes.camera(TestScenes.everyEffect(), expected)).build().renderImage();
+            assertThat(CameraValues.of(a)).isEqualTo(CameraValues.of(b));
+            assertThat(a.view()).usingRecursiveComparison().isEqualTo(b.view());
+            assertThat(Pixels.of(actual)).isEqualTo(Pixels.of(expected));
+        }
     }
 
     @Nested

@@ -124,8 +124,12 @@ final class Libraries {
         return new Library("local.lib", artifact, "0", rel(d, jar), false, from);
     }
 
-    /** A jar named like a known artifact holds that artifact's package (a student's own "json.jar" may not). */
+    /**
+     * A jar named like a known artifact holds that artifact's package (a student's own "json.jar"
+     * may not); one the project names but does not have (its lib/ not committed) is taken at its word.
+     */
     private static boolean isKnown(String artifact, Path jar) {
+        if (!Files.exists(jar)) return true;
         String pkg = switch (artifact) {
             case "annotations" -> "org/jetbrains/annotations/";
             case "gson" -> "com/google/gson/";
@@ -149,7 +153,7 @@ final class Libraries {
 
     /** The jar of a library for the compile checks: the project's own, or the local repository's (empty when not there). */
     static Optional<Path> jar(Library l, Path d, Path mavenRepository) {
-        if (l.systemPath != null) return Optional.of(d.resolve(l.systemPath));
+        if (l.systemPath != null) return Optional.of(d.resolve(l.systemPath)).filter(Files::isRegularFile);
         Path p = mavenRepository.resolve(l.group.replace('.', '/')).resolve(l.artifact).resolve(l.version)
                 .resolve(l.artifact + "-" + l.version + ".jar");
         return Files.isRegularFile(p) ? Optional.of(p) : Optional.empty();

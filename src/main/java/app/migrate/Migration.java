@@ -224,6 +224,7 @@ public final class Migration {
             if (!project.libraries.isEmpty()) {
                 r.add("Your libraries, now dependencies in pom.xml: " + project.libraries.size());
                 project.libraries.forEach(l -> r.add("  " + l.describe() + (project.resolved.containsKey(l) ? ""
+                        : l.systemPath() != null ? "; not in the project (never committed?): not in pom.xml, the files that use it are left out"
                         : "; not in " + tools.mavenRepository() + " and mvn could not fetch it: the files that use it are left out")));
             }
             if (!choices.isEmpty()) {
@@ -488,7 +489,8 @@ public final class Migration {
         List<String> testExcludes = leftOut.stream().map(SourceFile::inRoot).sorted().toList();
         boolean junit4 = Libraries.JUnit4.usedBy(tests);
         return new BuildPlan(tools.coordinates(), tools.junitVersion(), release, mainRoots, testRoots, mainExcludes,
-                testIncludes, testExcludes, project.libraries, junit4, project.encoding.charset().name());
+                testIncludes, testExcludes, project.libraries.stream().filter(l -> l.systemPath() == null || project.resolved.containsKey(l))
+                        .toList(), junit4, project.encoding.charset().name());
     }
 
     /** Patterns for {@code chosen} within their folders: {@code unittests/**} where a whole top folder is chosen. */
