@@ -64,6 +64,21 @@ public class Point {
         return z;
     }
 
+    /** @return the x coordinate, in scene units: the record-style spelling of {@link #getX()} some 2025–26 projects use */
+    public double x() {
+        return x;
+    }
+
+    /** @return the y coordinate, in scene units: the record-style spelling of {@link #getY()} */
+    public double y() {
+        return y;
+    }
+
+    /** @return the z coordinate, in scene units: the record-style spelling of {@link #getZ()} */
+    public double z() {
+        return z;
+    }
+
     /**
      * @param other the point the vector starts from
      * @return the vector from {@code other} to this point

@@ -108,5 +108,6 @@ class PointTest {
     void double3ConstructorKeepsTheCoordinates() {
         Point p = new Point(new Double3(1, 2, 3));
         assertThat(new double[] { p.getX(), p.getY(), p.getZ() }).containsExactly(1, 2, 3);
+        assertThat(new double[] { p.x(), p.y(), p.z() }).as("the record-style spellings").containsExactly(1, 2, 3);
     }
 }

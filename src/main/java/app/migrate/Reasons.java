@@ -18,6 +18,12 @@ final class Reasons {
     private static final Pattern PACKAGE_MISSING = Pattern.compile("package ([\\w.]+) does not exist");
     /** {@code o instanceof Point(double x, …)} or {@code case Point(…)}: a record pattern. */
     private static final Pattern RECORD_PATTERN = Pattern.compile("(\\binstanceof|\\bcase)\\s+[\\w.<>]+\\s*\\(");
+    /** javac's "cannot be applied": the library's method or constructor, what it takes, what the call gave. */
+    private static final Pattern CANT_APPLY = Pattern.compile("(method|constructor) (\\w+) in (?:class|interface|enum|record)"
+            + " ([\\w.$]+) cannot be applied to given types;\\s*required: ([^\\n]*?)\\s*found:\\s*([^\\n]*)");
+    /** javac's "no suitable method": the call, with the types it gave. */
+    private static final Pattern NO_SUITABLE = Pattern.compile("no suitable (method|constructor) found for (\\w+)\\(([^)]*)\\)"
+            + "(?:\\s*(?:method|constructor) ([\\w.$]+?)\\.\\w+\\()?");
     private static final Pattern SOURCE_LEVEL = Pattern.compile("use --?(?:source|release) (\\d+) or higher");
     /** The API of Java 21's sequenced collections, which course code of 2025–26 uses on lists. */
     private static final Set<String> SEQUENCED = Set.of("getFirst()", "getLast()", "removeFirst()", "removeLast()",
@@ -71,6 +77,8 @@ final class Reasons {
         if (release > jdk)
             return "needs Java " + release + " (" + feature(p) + "), and this JDK is " + jdk
                     + ": run migrate with JDK " + release + " or newer, or port it";
+        String overload = overload(p, test);
+        if (overload != null) return overload;
         Matcher pkg = PACKAGE_MISSING.matcher(p.message());
         if (pkg.find()) return "package " + pkg.group(1) + " is not in the build (neither the library's nor yours)";
         if (p.code().startsWith("compiler.err.cant.resolve")) {
@@ -99,6 +107,42 @@ final class Reasons {
             }
         }
         return Migration.oneLine(p.message());
+    }
+
+    /**
+     * A call with arguments the library's method or constructor does not take: the student's own
+     * overload when their course class declares that name ({@code Camera.renderImage(int) is your
+     * own overload}), else what the library takes. Null for another error.
+     */
+    private String overload(Javac.Problem p, boolean test) {
+        String owner, name, found, required = null;
+        Matcher a = CANT_APPLY.matcher(p.message());
+        Matcher n = NO_SUITABLE.matcher(p.message());
+        if (a.find()) {
+            owner = simple(a.group(3));
+            name = a.group(2);
+            required = a.group(4).trim();
+            found = a.group(5).trim();
+        } else if (n.find()) {
+            name = n.group(2);
+            found = n.group(3).trim();
+            owner = n.group(4) != null ? simple(n.group(4)) : name;
+        } else {
+            return null;
+        }
+        boolean constructor = name.equals(owner);
+        String call = owner + (constructor ? "" : "." + name) + "(" + shortTypes(found) + ")";
+        String takes = required == null ? "" : "; the library's takes " + (required.equals("no arguments") ? "no arguments"
+                : "(" + shortTypes(required) + ")");
+        if (declares(ownText(owner), name) || (constructor && ownText(owner) != null))
+            return call + " is your own overload (not in the course API" + takes + "): port " + (test ? "the test" : "it")
+                    + " or keep it aside";
+        return call + " is not in the library (nor in your course classes" + takes + ")";
+    }
+
+    /** {@code java.util.List<primitives.Point>,int} → {@code List<Point>, int}. */
+    private static String shortTypes(String types) {
+        return types.replaceAll("\\b(?:[a-z]\\w*\\.)+([A-Z])", "$1").replaceAll("\\s*,\\s*", ", ");
     }
 
     /** The text of the student's course class of this simple name, nested ones ({@code Builder}) included. */

@@ -250,6 +250,64 @@ class SurveyCasesTest {
     }
 
     @Nested
+    @DisplayName("what a left-out test is told")
+    class Messages {
+        @Test
+        @DisplayName("a call to the student's own overload names it and what the library takes, in one line")
+        void ownOverload() throws Exception {
+            write(dir, "src/primitives/Point.java", CourseProjects.POINT);
+            write(dir, "src/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1")
+                    .replace("    public Vector rotate", "    public Vector scale(double k) { return this; }\n"
+                            + "    public Vector scale(double k, double m) { return this; }\n    public Vector rotate"));
+            write(dir, "unittests/primitives/ScaleTests.java", """
+                    package primitives;
+
+                    import static org.junit.jupiter.api.Assertions.assertEquals;
+
+                    import org.junit.jupiter.api.Test;
+
+                    class ScaleTests {
+                        @Test
+                        void twice() {
+                            assertEquals(new Vector(2, 0, 0), new Vector(1, 0, 0).scale(2, 3));
+                        }
+
+                        @Test
+                        void once() {
+                            assertEquals(new Vector(2, 0, 0), new Vector(1, 0, 0).scale(2));
+                        }
+                    }
+                    """);
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("  unittests/primitives/ScaleTests.java: 1 test method left out (twice()), the rest kept: 10:"
+                    + " Vector.scale(int, int) is your own overload (not in the course API; the library's takes (double)): port the test"
+                    + " or keep it aside");
+        }
+
+        @Test
+        @DisplayName("a constructor of the student's own is named as theirs")
+        void constructor() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/primitives/Ray.java", "package primitives;\n\npublic class Ray {\n"
+                    + "    public Ray(Point p) { }\n    public Ray(Point p, Vector v) { }\n}\n");
+            write(dir, "unittests/primitives/RayTests.java", """
+                    package primitives;
+
+                    import org.junit.jupiter.api.Test;
+
+                    class RayTests {
+                        @Test
+                        void make() {
+                            new Ray(new Point(1, 2, 3));
+                        }
+                    }
+                    """);
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("RayTests.java:8: Ray(Point) is your own overload (not in the course API");
+        }
+    }
+
+    @Nested
     @DisplayName("the project's own libraries")
     class OwnLibraries {
         private static final String IML = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<module type=\"JAVA_MODULE\" version=\"4\">\n"
