@@ -29,7 +29,7 @@ final class CourseChoices {
     }
 
     private static final Pattern QUERY_WITH_MAX = Pattern.compile(
-            "\\b(findGeoIntersections|calculateIntersections|calcIntersections|findIntersections)\\s*\\([^;()]*(\\([^;()]*\\))?[^;()]*,");
+            "\\b(findGeoIntersections|calculateIntersections|calcIntersections|findIntersections)(?:Helper)?\\s*\\([^;()]*(\\([^;()]*\\))?[^;()]*,");
 
     private static final List<Rule> RULES = List.of(
             new Rule("primitives.Vector",
@@ -40,9 +40,9 @@ final class CourseChoices {
             new Rule("geometries.Cylinder",
                     // (double, Ray, double) with the height first: told by the names, the first
                     // a height (h, height, len…) or the last a radius (r, rad, radius…).
-                    Pattern.compile("\\bCylinder\\s*\\(\\s*(?:final\\s+)?double\\s+(?:(?i:h|\\w*height\\w*|len\\w*)\\s*,"
-                            + "\\s*(?:final\\s+)?Ray\\s+\\w+\\s*,\\s*(?:final\\s+)?double\\s+\\w+|\\w+\\s*,\\s*(?:final\\s+)?Ray"
-                            + "\\s+\\w+\\s*,\\s*(?:final\\s+)?double\\s+(?i:r|rad\\w*|\\w*radius\\w*))\\s*\\)"),
+                    Pattern.compile("\\bCylinder\\s*\\(\\s*(?:final\\s+)?[dD]ouble\\s+(?:(?i:h|\\w*height\\w*|len\\w*)\\s*,"
+                            + "\\s*(?:final\\s+)?Ray\\s+\\w+\\s*,\\s*(?:final\\s+)?[dD]ouble\\s+\\w+|\\w+\\s*,\\s*(?:final\\s+)?Ray"
+                            + "\\s+\\w+\\s*,\\s*(?:final\\s+)?[dD]ouble\\s+(?i:r|rad\\w*|\\w*radius\\w*))\\s*\\)"),
                     "your Cylinder(height, axis, radius) takes the height first",
                     "Cylinder(radius, axis, height), radius first (Java cannot tell the two apart); swap the numbers or use Cylinder(height, radius, axis)",
                     text -> text.contains("new Cylinder(")),
@@ -63,8 +63,47 @@ final class CourseChoices {
                     Pattern.compile("\\b(?:location|p0|position|cameraLocation|place)\\s*=\\s*(?:Point\\.ZERO|new\\s+Point\\s*\\(\\s*0(?:\\.0)?\\s*,\\s*0(?:\\.0)?\\s*,\\s*0(?:\\.0)?\\s*\\))\\s*;"),
                     "your camera defaults its location (to the origin)",
                     "build() without setLocation throws MissingResourceException",
-                    text -> text.matches("(?s).*\\b(getBuilder|Camera\\.Builder)\\b.*") && !text.contains("setLocation")
-                            && !text.contains("setP0") && !text.contains("setPosition")));
+                    CourseChoices::buildsWithoutLocation),
+            new Rule("renderer.ImageWriter",
+                    // The class never tests its name for blank: it writes "" as ".png".
+                    Pattern.compile("(?s)\\A(?!.*\\b(?:isBlank|isEmpty|trim\\(\\)\\.length)\\s*\\()"),
+                    "your ImageWriter takes a blank image name",
+                    "a blank image name is refused (IllegalArgumentException: image name must not be blank)",
+                    CourseChoices::namesImageBlank));
+
+    /** A test that names an image "" (directly, or through a variable set to ""). */
+    private static final Pattern BLANK_NAME = Pattern.compile("(?:ImageWriter|writeToImage)\\s*\\(\\s*\"\\s*\"|\\bString\\s+\\w+\\s*=\\s*\"\\s*\"\\s*;");
+    private static final Pattern LOCATION = Pattern.compile("\\.(?:setLocation|setP0|setPosition|setCameraLocation)\\s*\\(");
+    /** {@code = builder.set…(…).build()} or {@code builder.…build()}: the statement's first name. */
+    private static final Pattern STATEMENT_START = Pattern.compile("(?:=|^|return)\\s*(\\w+)\\s*[.\\n]");
+
+    static boolean namesImageBlank(String text) {
+        return BLANK_NAME.matcher(text).find();
+    }
+
+    /**
+     * Whether a test builds a camera with no location set on the way: a {@code build()} whose
+     * statement sets none, where the builder it starts from (a field or variable of the file) was
+     * declared without one too. Per statement, so a file that sets a location for one camera and
+     * not for another touches the rule.
+     */
+    static boolean buildsWithoutLocation(String text) {
+        if (!text.matches("(?s).*\\b(getBuilder|Camera\\.Builder)\\b.*")) return false;
+        int at = 0;
+        while ((at = text.indexOf(".build()", at)) >= 0) {
+            int start = Math.max(Math.max(text.lastIndexOf(';', at), text.lastIndexOf('{', at)), text.lastIndexOf('}', at)) + 1;
+            String statement = text.substring(start, at);
+            at += ".build()".length();
+            if (LOCATION.matcher(statement).find()) continue;
+            Matcher first = STATEMENT_START.matcher(statement.strip());
+            if (first.find() && !first.group(1).equals("Camera")) {
+                Matcher declared = Pattern.compile("\\b" + Pattern.quote(first.group(1)) + "\\s*=([^;]*);").matcher(text);
+                if (declared.find() && LOCATION.matcher(declared.group(1)).find()) continue;
+            }
+            return true;
+        }
+        return false;
+    }
 
     private CourseChoices() {
     }

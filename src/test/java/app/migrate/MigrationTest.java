@@ -335,7 +335,7 @@ class MigrationTest {
     class CylinderChoice {
         @ParameterizedTest(name = "Cylinder({0}) is named")
         @ValueSource(strings = { "double h, Ray a, double r", "double height, Ray axis, double radius",
-                "final double len, final Ray axis, final double rad" })
+                "final double len, final Ray axis, final double rad", "Double h, Ray axis, double r" })
         void heightFirst(String parameters) throws Exception {
             CourseProjects.intellij(dir);
             write(dir, "src/geometries/Cylinder.java", "package geometries;\n\nimport primitives.Ray;\n\npublic class Cylinder {\n"

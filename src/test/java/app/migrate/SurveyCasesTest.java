@@ -250,6 +250,90 @@ class SurveyCasesTest {
     }
 
     @Nested
+    @DisplayName("course-year choices the tests trip on, named with the tests")
+    class Choices {
+        @Test
+        @DisplayName("a camera that defaults its location: named with the test that builds one without setLocation")
+        void location() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/renderer/Camera.java", """
+                    package renderer;
+
+                    import primitives.Point;
+
+                    public class Camera {
+                        private Point location;
+                        public static Builder getBuilder() { return new Builder(); }
+                        public static class Builder {
+                            private Point location = new Point(0, 0, 0);
+                            public Builder setLocation(Point p) { location = p; return this; }
+                            public Camera build() { Camera c = new Camera(); c.location = location; return c; }
+                        }
+                    }
+                    """);
+            write(dir, "unittests/renderer/CameraTest.java", """
+                    package renderer;
+
+                    import org.junit.jupiter.api.Test;
+                    import primitives.Point;
+
+                    class CameraTest {
+                        private final Camera.Builder builder = Camera.getBuilder();
+
+                        @Test
+                        void located() {
+                            Camera.getBuilder().setLocation(new Point(0, 0, 1)).build();
+                        }
+
+                        @Test
+                        void atTheOrigin() {
+                            builder.build();
+                        }
+                    }
+                    """);
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("your camera defaults its location (to the origin) (src/renderer/Camera.java:9); the library:"
+                    + " build() without setLocation throws MissingResourceException; 1 test file will change: CameraTest.java");
+        }
+
+        @Test
+        @DisplayName("an ImageWriter that takes a blank name: named with the test that gives one")
+        void blankName() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/renderer/ImageWriter.java", "package renderer;\n\npublic class ImageWriter {\n"
+                    + "    public ImageWriter(String name, int nX, int nY) { }\n}\n");
+            write(dir, "unittests/renderer/ImageWriterTest.java", """
+                    package renderer;
+
+                    import org.junit.jupiter.api.Test;
+
+                    class ImageWriterTest {
+                        @Test
+                        void grid() {
+                            String name = "";
+                            new ImageWriter(name, 10, 10);
+                        }
+                    }
+                    """);
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("your ImageWriter takes a blank image name (src/renderer/ImageWriter.java:1); the library: a"
+                    + " blank image name is refused (IllegalArgumentException: image name must not be blank); 1 test file will change:"
+                    + " ImageWriterTest.java");
+        }
+
+        @Test
+        @DisplayName("the buildsWithoutLocation rule: per statement, through the builder's declaration")
+        void buildsWithoutLocation() {
+            String builder = "Camera.Builder b = Camera.getBuilder().setLocation(p);\n";
+            assertThat(CourseChoices.buildsWithoutLocation(builder + "Camera c = b.setVpSize(1, 1).build();")).isFalse();
+            assertThat(CourseChoices.buildsWithoutLocation("Camera.Builder b = Camera.getBuilder();\nCamera c = b.build();")).isTrue();
+            assertThat(CourseChoices.buildsWithoutLocation("Camera c = Camera.getBuilder().setVpDistance(1)\n.setLocation(p).build();"))
+                    .isFalse();
+            assertThat(CourseChoices.buildsWithoutLocation("Camera c = new Camera.Builder().setVpDistance(1).build();")).isTrue();
+        }
+    }
+
+    @Nested
     @DisplayName("what a left-out test is told")
     class Messages {
         @Test
