@@ -8,10 +8,26 @@ import java.util.Set;
  * folded into {@code geometries} and {@code lighting}, as the library keeps them). Such a class
  * must leave the build: on the class path it would shadow the library's (the guard then stops the
  * run). Asked of the class loader that holds the library, without initialising anything.
+ *
+ * <p>Of those, the course's own classes ({@link #COURSE}: the classes some course year hands out
+ * or asks for) are told from the library's public internals that a student may happen to name
+ * alike (their own BVH's {@code geometries.BoundingBox}): both must leave, but only the first is
+ * "the library provides it"; the second is the student's own work, which the library's BVH
+ * replaces. A course class kept in another course package than the library's (a
+ * {@code lighting.Material}) is the course's too, {@link #relocated} to the library's.
  */
 final class Catalog {
     /** The course's packages; a class elsewhere is the student's own, whatever its name. */
     private static final Set<String> COURSE_PACKAGES = Set.of("primitives", "geometries", "lighting", "renderer", "scene");
+    /**
+     * The classes of the course, any year (COURSE-YEARS in the project's notes): what a student's
+     * project has because the course gave or asked for it. {@code RadialGeometry} (2023–25) the
+     * library does not have; a student's compiles against the library and stays.
+     */
+    static final Set<String> COURSE = Set.of("Point", "Vector", "Ray", "Double3", "Color", "Material", "Util", "Geometry",
+            "Intersectable", "Geometries", "Sphere", "Plane", "Triangle", "Polygon", "Tube", "Cylinder", "RadialGeometry",
+            "Light", "LightSource", "AmbientLight", "DirectionalLight", "PointLight", "SpotLight", "Camera", "ImageWriter",
+            "RayTracerBase", "SimpleRayTracer", "RayTracerBasic", "RayTracerType", "Scene");
 
     private final ClassLoader library;
 
@@ -29,16 +45,35 @@ final class Catalog {
         return packageName.replaceFirst("^(geometries|lighting)\\.(api|impl)$", "$1");
     }
 
-    /** Whether a package is one of 2025–26's {@code api}/{@code impl} halves, which the library folds. */
-    static boolean isSplitPackage(String packageName) {
-        return !libraryPackage(packageName).equals(packageName);
-    }
-
     /** Whether the library has a class of this (folded) name in the course's packages. */
     boolean provides(String className) {
         String name = libraryName(className);
         int dot = name.indexOf('.');
         if (dot < 0 || !COURSE_PACKAGES.contains(name.substring(0, dot))) return false;
+        return exists(name);
+    }
+
+    /** Whether a class the library {@link #provides} is a course class, not a public internal of the library's. */
+    static boolean isCourseClass(String className) {
+        return COURSE.contains(className.substring(className.lastIndexOf('.') + 1));
+    }
+
+    /**
+     * The library's name for a course class the student keeps in another course package
+     * ({@code lighting.Material} → {@code primitives.Material}), or null when it is no such class.
+     */
+    String relocated(String className) {
+        String name = libraryName(className);
+        int dot = name.lastIndexOf('.');
+        if (dot < 0 || provides(className)) return null;
+        String pkg = name.substring(0, dot), simple = name.substring(dot + 1);
+        if (!COURSE_PACKAGES.contains(pkg) || !COURSE.contains(simple)) return null;
+        for (String other : COURSE_PACKAGES)
+            if (exists(other + "." + simple)) return other + "." + simple;
+        return null;
+    }
+
+    private boolean exists(String name) {
         try {
             Class.forName(name, false, library);
             return true;

@@ -108,8 +108,18 @@ public final class Migration {
             throw new MigrationException("cannot read " + d + ": " + e.getMessage(), e);
         }
         List<SourceFile> tests = files.stream().filter(SourceFile::test).toList();
-        List<SourceFile> course = files.stream().filter(f -> !f.test() && catalog.provides(f.className())).toList();
-        List<SourceFile> extras = files.stream().filter(f -> !f.test() && !catalog.provides(f.className())).toList();
+        // A course class kept in another course package (lighting.Material) goes as the library's
+        // (primitives.Material); what stays is pointed at the library's.
+        Map<String, String> relocated = new LinkedHashMap<>();
+        files.stream().filter(f -> !f.test()).forEach(f -> {
+            String to = catalog.relocated(f.className());
+            // Only where the project has no class of the library's name: else this one is its own.
+            if (to != null && files.stream().noneMatch(g -> Catalog.libraryName(g.className()).equals(to)))
+                relocated.put(f.className(), to);
+        });
+        List<SourceFile> course = files.stream()
+                .filter(f -> !f.test() && (catalog.provides(f.className()) || relocated.containsKey(f.className()))).toList();
+        List<SourceFile> extras = files.stream().filter(f -> !f.test() && !course.contains(f)).toList();
 
         Path backup = d.resolve(Layout.BACKUP);
         if (Files.exists(backup)) {
@@ -148,7 +158,7 @@ public final class Migration {
         }
         if (libraries.stream().anyMatch(l -> l.artifact().equals("junit") && l.group().equals("junit")))
             tools.fetchIfMissing("org.hamcrest:hamcrest-core:1.3").ifPresent(junit::add);
-        Project project = new Project(layout, charset, strays, libraries, resolved);
+        Project project = new Project(layout, charset, strays, libraries, resolved, relocated);
 
         Plan plan;
         try (Scratch scratch = new Scratch()) {
@@ -199,7 +209,7 @@ public final class Migration {
 
     /** What was read of the project before the plan: its layout, encoding and libraries. */
     private record Project(Layout layout, SourceEncoding encoding, List<Path> strays, List<Libraries.Library> libraries,
-            Map<Libraries.Library, Path> resolved) {
+            Map<Libraries.Library, Path> resolved, Map<String, String> relocated) {
     }
 
     /** A file that stays, with its text after the 2025–26 packages are folded, and where it goes. */
@@ -231,10 +241,18 @@ public final class Migration {
                 r.add("Where your code chose otherwise than the library (README, \"Which course year?\"):");
                 choices.forEach(c -> r.add("  " + c.line()));
             }
-            r.add("Moved to " + Layout.BACKUP + "/ (the library provides them): " + course.size() + " classes");
+            List<SourceFile> courses = course.stream().filter(f -> Catalog.isCourseClass(f.className())).toList();
+            List<SourceFile> namesakes = course.stream().filter(f -> !Catalog.isCourseClass(f.className())).toList();
+            r.add("Moved to " + Layout.BACKUP + "/ (the library provides them): " + courses.size() + " classes");
             Map<String, List<String>> byPackage = new TreeMap<>();
-            course.forEach(f -> byPackage.computeIfAbsent(f.packageName(), p -> new ArrayList<>()).add(f.simpleName()));
+            courses.forEach(f -> byPackage.computeIfAbsent(f.packageName(), p -> new ArrayList<>()).add(f.simpleName()
+                    + (project.relocated.containsKey(f.className()) ? " (as the library's " + project.relocated.get(f.className()) + ")"
+                            : "")));
             byPackage.forEach((p, names) -> r.add("  " + (p.isEmpty() ? "(no package)" : p) + ": " + String.join(", ", names)));
+            if (!namesakes.isEmpty())
+                r.add("Moved to " + Layout.BACKUP + "/ too (your own classes, named as classes inside the library, beside which they"
+                        + " cannot stay; the library's BVH is always on in place of one of yours): " + String.join(", ",
+                                namesakes.stream().map(SourceFile::className).toList()));
             r.add("Kept (your own classes; they compile against the library): " + extras.size());
             extras.forEach(k -> r.add("  " + d.relativize(k.target).toString().replace('\\', '/')));
             if (!setAside.isEmpty()) {
@@ -251,7 +269,7 @@ public final class Migration {
             }
             long rewritten = Stream.concat(extras.stream(), tests.stream()).filter(Kept::changed).count();
             if (rewritten > 0)
-                r.add("Rewritten (2025-26 api/impl packages folded into geometries, lighting; test methods left out): " + rewritten
+                r.add("Rewritten (package and import lines pointed at the library's classes, or test methods taken out as said above): " + rewritten
                         + " files (originals in " + ORIGINALS + ")");
             r.add("pom.xml: " + (layout.pom() == null ? "written" : "updated") + " (" + build.library() + ", JUnit "
                     + build.junit() + ", Java release " + build.release() + ", every test class runs whatever its name)");
@@ -289,7 +307,7 @@ public final class Migration {
         // 2. The extras against the library, folded and staged; those that fail are set aside.
         Map<String, String> own = new LinkedHashMap<>();
         course.forEach(f -> own.putIfAbsent(f.simpleName(), f.text()));
-        List<Kept> keptExtras = extras.stream().map(f -> kept(f)).toList();
+        List<Kept> keptExtras = extras.stream().map(f -> kept(f, project.relocated)).toList();
         Map<Path, Kept> staged = stage(keptExtras, d, scratch.resolve("stage-main"), charset);
         step("compiling your " + extras.size() + " own classes against the library");
         List<Path> libraryPath = new ArrayList<>(List.of(tools.library()));
@@ -302,7 +320,7 @@ public final class Migration {
         Map<SourceFile, String> setAside = explain(main.failed(), staged, reasons, d);
 
         // 3. The tests against the library and the kept extras; those that fail are left out.
-        List<Kept> keptTests = tests.stream().map(f -> kept(f)).toList();
+        List<Kept> keptTests = tests.stream().map(f -> kept(f, project.relocated)).toList();
         Map<Path, Kept> stagedTests = stage(keptTests, d, scratch.resolve("stage-test"), charset);
         step("compiling your " + tests.size() + " test files against the library");
         List<Path> testPath = new ArrayList<>(libraryPath);
@@ -430,9 +448,12 @@ public final class Migration {
         return file.getFileName().toString().replaceFirst("\\.java$", "");
     }
 
-    /** The file with 2025–26's {@code geometries.api/impl} and {@code lighting.api/impl} folded, and its new place. */
-    private static Kept kept(SourceFile f) {
-        String text = fold(f.text());
+    /**
+     * The file with 2025–26's {@code geometries.api/impl} and {@code lighting.api/impl} folded and
+     * relocated course classes named as the library's, and its new place.
+     */
+    private static Kept kept(SourceFile f, Map<String, String> relocated) {
+        String text = relocate(fold(f.text()), f.packageName(), relocated);
         Path target = f.path();
         String pkg = Catalog.libraryPackage(f.packageName());
         if (!pkg.equals(f.packageName()) && f.path().getParent().equals(f.root().resolve(f.packageName().replace('.', '/')))) {
@@ -445,6 +466,29 @@ public final class Migration {
     static String fold(String text) {
         return text.replaceAll("(?m)^(\\s*(?:package|import)\\s+(?:static\\s+)?)(geometries|lighting)\\.(?:api|impl)\\s*;", "$1$2;")
                 .replaceAll("\\b(geometries|lighting)\\.(?:api|impl)\\.", "$1.");
+    }
+
+    /**
+     * {@code import lighting.Material;} becomes {@code import primitives.Material;} (and so does a
+     * qualified use); a file that reached the class unqualified (in its package, or through
+     * {@code import lighting.*;}) gets the library's import after its package line.
+     */
+    static String relocate(String text, String pkg, Map<String, String> relocated) {
+        String t = text;
+        for (Map.Entry<String, String> e : relocated.entrySet()) {
+            String from = Catalog.libraryName(e.getKey()), to = e.getValue();
+            String fromPkg = from.substring(0, from.lastIndexOf('.')), simple = from.substring(from.lastIndexOf('.') + 1);
+            t = fold(t).replaceAll("\\b" + Pattern.quote(from) + "\\b", to);
+            boolean unqualified = Catalog.libraryPackage(pkg).equals(fromPkg)
+                    || Pattern.compile("(?m)^\\s*import\\s+" + Pattern.quote(fromPkg) + "\\.\\*\\s*;").matcher(t).find();
+            if (!unqualified || !Pattern.compile("\\b" + Pattern.quote(simple) + "\\b").matcher(t).find()
+                    || t.contains("import " + to + ";"))
+                continue;
+            Matcher p = Pattern.compile("(?m)^\\s*package\\s+[\\w.]+\\s*;[^\\n]*\\n").matcher(t);
+            String line = "import " + to + ";\n";
+            t = p.find() ? t.substring(0, p.end()) + line + t.substring(p.end()) : line + t;
+        }
+        return t;
     }
 
     /** Writes the files, as they will be, under {@code stage} at their paths in the project. */

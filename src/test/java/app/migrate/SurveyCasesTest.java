@@ -392,6 +392,53 @@ class SurveyCasesTest {
     }
 
     @Nested
+    @DisplayName("classes that are not where the library keeps them, or not the course's")
+    class Namesakes {
+        @Test
+        @DisplayName("a course class kept in another course package moves as the library's; what stays is pointed at it")
+        void relocated() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/lighting/Material.java", "package lighting;\n\npublic class Material {\n"
+                    + "    public double kD;\n    public Material setKd(double kD) { this.kD = kD; return this; }\n}\n");
+            String same = "package lighting;\n\nimport org.junit.jupiter.api.Test;\n\nclass MaterialTests {\n    @Test\n"
+                    + "    void kd() {\n        new Material().setKd(0.5);\n    }\n}\n";
+            String other = "package renderer;\n\nimport lighting.Material;\nimport org.junit.jupiter.api.Test;\n\nclass UseTests {\n"
+                    + "    @Test\n    void kd() {\n        new Material().setKd(0.5);\n    }\n}\n";
+            write(dir, "unittests/lighting/MaterialTests.java", same);
+            write(dir, "unittests/renderer/UseTests.java", other);
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("  lighting: Material (as the library's primitives.Material)", "Tests kept: 3 files")
+                    .doesNotContain("left out");
+            assertThat(dir.resolve("course-backup/src/lighting/Material.java")).exists();
+            assertThat(read("unittests/lighting/MaterialTests.java"))
+                    .isEqualTo(same.replace("package lighting;\n", "package lighting;\nimport primitives.Material;\n"));
+            assertThat(read("unittests/renderer/UseTests.java")).isEqualTo(other.replace("import lighting.Material;", "import primitives.Material;"));
+        }
+
+        @Test
+        @DisplayName("a class of the student's own named as one inside the library is said to be theirs, not the course's")
+        void boundingBox() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/geometries/BoundingBox.java", "package geometries;\n\npublic class BoundingBox {\n}\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("Moved to course-backup/ (the library provides them): 2 classes",
+                    "Moved to course-backup/ too (your own classes, named as classes inside the library, beside which they cannot stay;"
+                            + " the library's BVH is always on in place of one of yours): geometries.BoundingBox");
+        }
+
+        @Test
+        @DisplayName("a helper of the student's named like a course class elsewhere stays theirs when the project has the course's too")
+        void ownHelper() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/primitives/Util.java", "package primitives;\n\npublic final class Util {\n"
+                    + "    public static boolean isZero(double d) { return Math.abs(d) < 1e-10; }\n}\n");
+            write(dir, "src/renderer/Util.java", "package renderer;\n\npublic final class Util {\n    public static int two() { return 2; }\n}\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("  src/renderer/Util.java").doesNotContain("as the library's");
+        }
+    }
+
+    @Nested
     @DisplayName("the project's own libraries")
     class OwnLibraries {
         private static final String IML = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<module type=\"JAVA_MODULE\" version=\"4\">\n"
