@@ -1,6 +1,6 @@
 // After `raytracer migrate course` and `mvn test` in course/: the course classes moved, the
 // student's extras kept, the test that calls the student's own method left out, and every kept
-// test class ran and passed, the one not named *Test included.
+// test class ran and passed, the one not named *Test included, and the JUnit 4 one (Vintage).
 def course = new File(basedir, 'course')
 assert new File(course, 'course-backup/src/primitives/Vector.java').isFile() : 'Vector.java not in course-backup/'
 assert !new File(course, 'src/primitives/Vector.java').exists() : 'the course Vector still in src/'
@@ -13,5 +13,8 @@ def ran = reports.listFiles().findAll { it.name.startsWith('TEST-') && it.name.e
     assert suite.@failures.toInteger() == 0 && suite.@errors.toInteger() == 0 : "${suite.@name} failed"
     suite.@name.toString()
 }
-assert ran.toSet() == ['primitives.VectorTests', 'renderer.CameraIntersectionIntegration', 'geometries.CubeTests'].toSet() : "ran ${ran}"
+assert ran.toSet() == ['primitives.VectorTests', 'renderer.CameraIntersectionIntegration', 'geometries.CubeTests',
+        'primitives.PointJUnit4Test'].toSet() : "ran ${ran}"
+def pom = new File(course, 'pom.xml').text
+assert pom.contains('<artifactId>junit-vintage-engine</artifactId>') : 'no Vintage engine for the JUnit 4 test'
 true

@@ -96,6 +96,9 @@ final class CourseProjects {
         // IntelliJ's project folder, which the repository does not track (it is tool state): its
         // presence is what makes the migration keep left-out tests out of the IDE's compile too.
         write(dir, ".idea/misc.xml", "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<project version=\"4\">\n</project>\n");
+        // Its JUnit 4 test (PointJUnit4Test) compiles against JUnit 4 from the Maven repository, as the IDE had it.
+        install(dir, "junit:junit:4.13.2");
+        install(dir, "org.hamcrest:hamcrest-core:1.3");
         return dir;
     }
 
