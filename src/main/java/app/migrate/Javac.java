@@ -59,8 +59,13 @@ final class Javac {
      * @throws MigrationException when the running Java has no compiler (a JRE, not a JDK)
      */
     Javac(Charset encoding) throws MigrationException {
+        this(encoding, ToolProvider.getSystemJavaCompiler());
+    }
+
+    /** With a given compiler: a test's, which fails the way the real one does when it runs out of memory. */
+    Javac(Charset encoding, JavaCompiler compiler) throws MigrationException {
         this.encoding = encoding;
-        compiler = ToolProvider.getSystemJavaCompiler();
+        this.compiler = compiler;
         if (compiler == null)
             throw new MigrationException("this Java (" + System.getProperty("java.home")
                     + ") has no compiler: run migrate with a JDK (17 or newer), as your IDE does");

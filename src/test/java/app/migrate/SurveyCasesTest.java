@@ -8,13 +8,19 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.io.Writer;
+import java.lang.reflect.Proxy;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import java.util.zip.ZipEntry;
 import java.util.zip.ZipOutputStream;
+
+import javax.tools.JavaCompiler;
+import javax.tools.ToolProvider;
 
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.DisplayName;
@@ -330,6 +336,48 @@ class SurveyCasesTest {
             assertThat(CourseChoices.buildsWithoutLocation("Camera c = Camera.getBuilder().setVpDistance(1)\n.setLocation(p).build();"))
                     .isFalse();
             assertThat(CourseChoices.buildsWithoutLocation("Camera c = new Camera.Builder().setVpDistance(1).build();")).isTrue();
+        }
+    }
+
+    @Nested
+    @DisplayName("javac itself failing")
+    class CompilerFailures {
+        /**
+         * The JDK's compiler, whose tasks fail as javac does when it runs out of memory: it catches
+         * the error, prints it to its output and reports no diagnostic.
+         */
+        private JavaCompiler outOfMemory() {
+            JavaCompiler real = ToolProvider.getSystemJavaCompiler();
+            return (JavaCompiler) Proxy.newProxyInstance(getClass().getClassLoader(), new Class<?>[] { JavaCompiler.class },
+                    (proxy, method, args) -> {
+                        if (!method.getName().equals("getTask")) return method.invoke(real, args);
+                        Writer out = (Writer) args[0];
+                        return Proxy.newProxyInstance(getClass().getClassLoader(), new Class<?>[] { JavaCompiler.CompilationTask.class },
+                                (task, m, a) -> {
+                                    if (!m.getName().equals("call")) return null;
+                                    out.write("An exception has occurred in the compiler. java.lang.OutOfMemoryError: Java heap space");
+                                    return false;
+                                });
+                    });
+        }
+
+        @Test
+        @DisplayName("out of memory is said as such, with the heap and the largest file, not as a missing package")
+        void outOfMemoryIsNamed() throws IOException {
+            courseProject("unittests");
+            Javac javac;
+            try {
+                javac = new Javac(StandardCharsets.UTF_8, outOfMemory());
+            } catch (MigrationException e) {
+                throw new AssertionError(e);
+            }
+            Path out = Files.createTempDirectory(dir.getParent(), "classes");
+            assertThatThrownBy(() -> javac.compile(List.of(dir.resolve("src/primitives/Point.java"), dir.resolve("src/primitives/Vector.java")),
+                    List.of(), 17, out))
+                    .isInstanceOf(MigrationException.class)
+                    .hasMessageStartingWith("javac ran out of memory (this Java's heap is ")
+                    .hasMessageContaining(" MB) compiling 2 files, the largest Vector.java (0 kB): run migrate with a larger heap, e.g."
+                            + " RAYTRACER_JAVA_OPTS=-Xmx2g (nothing was changed)");
         }
     }
 
