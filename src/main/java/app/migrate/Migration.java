@@ -300,7 +300,9 @@ public final class Migration {
         // 1. The project as it is must compile (else its errors would be blamed on the library).
         step("compiling " + d.getFileName() + " as it is (" + (course.size() + extras.size()) + " classes, " + tests.size()
                 + " test files)");
-        requireCompilesAsIs(javac, d, course, extras, tests, junit, projectJars, scratch);
+        List<String> missing = project.libraries.stream().filter(l -> !project.resolved.containsKey(l))
+                .map(Libraries.Library::describe).toList();
+        requireCompilesAsIs(javac, d, course, extras, tests, junit, projectJars, missing, scratch);
 
         List<CourseChoices.Choice> choices = CourseChoices.find(course, tests, d);
 
@@ -385,7 +387,8 @@ public final class Migration {
     }
 
     private void requireCompilesAsIs(Javac javac, Path d, List<SourceFile> course, List<SourceFile> extras,
-            List<SourceFile> tests, List<Path> junit, List<Path> jars, Path scratch) throws IOException, MigrationException {
+            List<SourceFile> tests, List<Path> junit, List<Path> jars, List<String> missingLibraries, Path scratch)
+            throws IOException, MigrationException {
         List<Path> main = Stream.concat(course.stream(), extras.stream()).map(SourceFile::path).toList();
         Javac.Outcome m = javac.compile(main, jars, tools.jdk(), scratch.resolve("as-is-main"));
         List<Path> path = new ArrayList<>(List.of(scratch.resolve("as-is-main")));
@@ -423,6 +426,10 @@ public final class Migration {
             throw new MigrationException(d + " does not compile as it is (" + d.relativize(p.file()).toString().replace('\\', '/')
                     + ":" + p.line() + ": " + oneLine(p.message()) + "): fix it first"
                     + (syntax ? " (if that file is written for a Java newer than " + tools.jdk() + ", run migrate with that JDK)" : "")
+                    // A library of the project this machine lacks is the likelier cause of a missing name.
+                    + (!missingLibraries.isEmpty() && (p.code().startsWith("compiler.err.cant.resolve")
+                            || p.code().startsWith("compiler.err.doesnt.exist"))
+                            ? "; your libraries this machine does not have: " + String.join(", ", missingLibraries) : "")
                     + " (nothing was changed)");
         }
     }

@@ -555,6 +555,21 @@ class SurveyCasesTest {
                     "<systemPath>${project.basedir}/lib/shapes.jar</systemPath>").doesNotContain("junit-jupiter-api-5.8.1");
         }
 
+        @Test
+        @DisplayName("a library the project names that this machine lacks is named in the refusal it causes")
+        void missingLibrary() throws Exception {
+            courseProject("unittests");
+            write(dir, "course.iml", IML.replace("ENTRIES", "    <orderEntry type=\"module-library\">\n      <library>\n"
+                    + "        <CLASSES>\n          <root url=\"jar://$MAVEN_REPOSITORY$/com/google/code/gson/gson/2.10.1/"
+                    + "gson-2.10.1.jar!/\" />\n        </CLASSES>\n      </library>\n    </orderEntry>\n"));
+            write(dir, "src/renderer/Json.java", "package renderer;\n\nimport com.google.gson.Gson;\n\n"
+                    + "public class Json {\n    public static Gson gson() { return new Gson(); }\n}\n");
+            assertThatThrownBy(SurveyCasesTest.this::migrate).isInstanceOf(MigrationException.class)
+                    .hasMessageContaining("does not compile as it is (src/renderer/Json.java:3: package com.google.gson does not exist):"
+                            + " fix it first; your libraries this machine does not have: com.google.code.gson:gson:2.10.1 (your IDE's module)"
+                            + " (nothing was changed)");
+        }
+
         private void jar(String path, String entry) throws IOException {
             Path jar = dir.resolve(path);
             Files.createDirectories(jar.getParent());
