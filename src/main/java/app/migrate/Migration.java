@@ -172,7 +172,7 @@ public final class Migration {
             report.forEach(out::println);
             return false;
         }
-        apply(d, plan, report);
+        apply(d, plan, report, layout.iml());
         report.forEach(out::println);
         return true;
     }
@@ -262,6 +262,10 @@ public final class Migration {
             r.add("Tests kept: " + tests.size() + " files" + (leftOut.isEmpty() ? "" : "; left out of the build (the files"
                     + " stay where they are, excluded in pom.xml): " + leftOut.size()));
             leftOut.forEach((f, why) -> r.add("  " + why));
+            if (tests.isEmpty() && leftOut.isEmpty())
+                r.add("Warning: no JUnit test was found in this project (none in " + Layout.names(d, layout.mainRoots())
+                        + (layout.testRoots().isEmpty() ? "" : ", " + Layout.names(d, layout.testRoots())) + " or any other folder):"
+                        + " mvn test will run none; if your tests are elsewhere, name that folder in your .iml or pom and migrate again");
             if (!trimmed.isEmpty()) {
                 r.add("Tests kept with some of their methods left out (each replaced by a comment line naming why): "
                         + trimmed.size() + " files");
@@ -569,7 +573,7 @@ public final class Migration {
 
     // ===== applying the plan =====
 
-    private void apply(Path d, Plan plan, List<String> report) throws MigrationException {
+    private void apply(Path d, Plan plan, List<String> report, Path imlFile) throws MigrationException {
         Manifest manifest = new Manifest(d);
         try {
             for (SourceFile f : plan.course) manifest.move(f.relative(d), Layout.BACKUP + "/" + f.relative(d));
@@ -584,12 +588,13 @@ public final class Migration {
             } else {
                 manifest.create("pom.xml", PomFile.create(plan.build, d.getFileName().toString()));
             }
-            Layout after = Layout.read(d, tools.mavenRepository());
-            if (after.iml() != null) {
-                String iml = Files.readString(after.iml(), StandardCharsets.UTF_8);
+            // The module file read before the course classes moved (a project of course classes
+            // only has no source left to read a layout from).
+            if (imlFile != null) {
+                String iml = Files.readString(imlFile, StandardCharsets.UTF_8);
                 String added = ImlFile.addLibrary(iml, plan.build);
                 if (added != null && !added.equals(iml))
-                    manifest.replace(rel(d, after.iml()), rel(d, after.iml()), ORIGINALS + rel(d, after.iml()), added);
+                    manifest.replace(rel(d, imlFile), rel(d, imlFile), ORIGINALS + rel(d, imlFile), added);
             }
             Path compilerXml = d.resolve(".idea/compiler.xml");
             if (Files.isDirectory(d.resolve(".idea")) && !plan.leftOut.isEmpty()) {

@@ -183,6 +183,16 @@ class SurveyCasesTest {
         }
 
         @Test
+        @DisplayName("a project with no JUnit test anywhere is warned, not passed silently")
+        void none() throws Exception {
+            write(dir, "src/primitives/Point.java", CourseProjects.POINT);
+            write(dir, "src/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1"));
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("Tests kept: 0 files", "Warning: no JUnit test was found in this project (none in src/ or any"
+                    + " other folder): mvn test will run none");
+        }
+
+        @Test
         @DisplayName("the module .idea/modules.xml names is read and gets the library, not a stale one at the top")
         void modulesXml() throws Exception {
             courseProject("unittests");
