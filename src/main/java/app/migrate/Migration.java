@@ -326,7 +326,32 @@ public final class Migration {
         Map<SourceFile, String> setAside = explain(main.failed(), staged, reasons, d);
 
         // 3. The tests against the library and the kept extras; those that fail are left out.
-        List<Kept> keptTests = tests.stream().map(f -> kept(f, project.relocated)).toList();
+        // A test of a class of the student's that is named as one inside the library (their BVH's
+        // BoundingBox) would compile against the library's and test it instead: such methods go,
+        // or the whole file where they cannot be told apart.
+        Set<String> namesakes = new LinkedHashSet<>();
+        course.stream().filter(f -> !Catalog.isCourseClass(f.className())).forEach(f -> namesakes.add(f.simpleName()));
+        Map<SourceFile, String> trimmed = new LinkedHashMap<>();
+        Map<SourceFile, String> leftOutFirst = new LinkedHashMap<>();
+        List<Kept> keptTests = new ArrayList<>();
+        for (SourceFile f : tests) {
+            Kept k = kept(f, project.relocated);
+            String name = namesakes.stream().filter(n -> mentions(k.text, n) > 0).findFirst().orElse(null);
+            if (name == null) {
+                keptTests.add(k);
+                continue;
+            }
+            String why = "it uses your own " + name + ", moved to " + Layout.BACKUP + "/: the library has a class of that name inside"
+                    + " it, which this test would run against instead";
+            TestMethods.Trimmed t = TestMethods.without(k.text, linesMentioning(k.text, namesakes), why);
+            if (t == null) {
+                leftOutFirst.put(f, f.relative(d) + ":" + mentions(k.text, name) + ": " + why);
+                continue;
+            }
+            keptTests.add(new Kept(f, t.text(), k.target));
+            trimmed.put(f, f.relative(d) + ": " + t.removed().size() + " test method" + (t.removed().size() == 1 ? "" : "s")
+                    + " left out (" + String.join("(), ", t.removed()) + "()), the rest kept: " + why);
+        }
         Map<Path, Kept> stagedTests = stage(keptTests, d, scratch.resolve("stage-test"), charset);
         step("compiling your " + tests.size() + " test files against the library");
         List<Path> testPath = new ArrayList<>(libraryPath);
@@ -337,7 +362,6 @@ public final class Migration {
         // A test file whose errors all lie in some of its test methods keeps the others: those
         // methods give way to a comment line (the original kept in originals/), and the file is
         // compiled again with the rest; one that still fails is left out whole, as before.
-        Map<SourceFile, String> trimmed = new LinkedHashMap<>();
         Map<Path, List<Javac.Problem>> failedTests = new LinkedHashMap<>(test.failed());
         Map<Path, Kept> retried = new LinkedHashMap<>();
         Map<Path, String> trimmedLines = new LinkedHashMap<>();
@@ -368,7 +392,8 @@ public final class Migration {
             second.failed().forEach(failedTests::putIfAbsent);
             test = second;
         }
-        Map<SourceFile, String> leftOut = explain(failedTests, stagedTests, reasons, d);
+        Map<SourceFile, String> leftOut = new LinkedHashMap<>(leftOutFirst);
+        leftOut.putAll(explain(failedTests, stagedTests, reasons, d));
 
         // 4. The lowest release of 17, 21 and this JDK's at which all that stays compiles.
         List<Kept> extrasKept = main.compiled().stream().map(staged::get).toList();
@@ -453,6 +478,27 @@ public final class Migration {
         if (missing.find() && excusedPackages.stream().anyMatch(x -> x.equals(missing.group(1)) || x.startsWith(missing.group(1) + ".")))
             return true;
         return excused.stream().anyMatch(x -> Pattern.compile("\\b" + Pattern.quote(x) + "\\b").matcher(p.message()).find());
+    }
+
+    /** The first line (1-based) where {@code name} stands as a word in {@code text}, 0 when nowhere. */
+    private static long mentions(String text, String name) {
+        Matcher m = Pattern.compile("\\b" + Pattern.quote(name) + "\\b").matcher(text);
+        return m.find() ? text.substring(0, m.start()).chars().filter(c -> c == '\n').count() + 1 : 0;
+    }
+
+    /** Every line (1-based) where one of {@code names} stands as a word. */
+    private static List<Long> linesMentioning(String text, Set<String> names) {
+        List<Long> lines = new ArrayList<>();
+        long n = 0;
+        for (String line : text.split("\n", -1)) {
+            n++;
+            for (String name : names)
+                if (Pattern.compile("\\b" + Pattern.quote(name) + "\\b").matcher(line).find()) {
+                    lines.add(n);
+                    break;
+                }
+        }
+        return lines;
     }
 
     private static String className(Path file) {

@@ -485,6 +485,36 @@ class SurveyCasesTest {
         }
 
         @Test
+        @DisplayName("a test method of the student's own namesake class goes: it would test the library's class instead")
+        void namesakeTests() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/geometries/BoundingBox.java", "package geometries;\n\npublic class BoundingBox {\n}\n");
+            write(dir, "unittests/geometries/BoxTests.java", """
+                    package geometries;
+
+                    import static org.junit.jupiter.api.Assertions.assertNotNull;
+
+                    import org.junit.jupiter.api.Test;
+
+                    class BoxTests {
+                        @Test
+                        void box() {
+                            assertNotNull(new BoundingBox());
+                        }
+
+                        @Test
+                        void other() {
+                            assertNotNull(new Object());
+                        }
+                    }
+                    """);
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("Tests kept: 2 files", "  unittests/geometries/BoxTests.java: 1 test method left out (box()),"
+                    + " the rest kept: it uses your own BoundingBox, moved to course-backup/: the library has a class of that name inside"
+                    + " it, which this test would run against instead");
+        }
+
+        @Test
         @DisplayName("a helper of the student's named like a course class elsewhere stays theirs when the project has the course's too")
         void ownHelper() throws Exception {
             courseProject("unittests");
