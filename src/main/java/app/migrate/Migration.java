@@ -45,7 +45,6 @@ public final class Migration {
     static final String ORIGINALS = Layout.BACKUP + "/originals/";
     /** Jars of a project's lib/ that are JUnit's (the pom's JUnit replaces them), by name prefix. */
     private static final List<String> TEST_FRAMEWORK_JARS = List.of("junit", "opentest4j", "apiguardian", "hamcrest");
-    private static final Pattern MISSING_PACKAGE = Pattern.compile("package ([\\w.]+) does not exist");
 
     private final Toolchain tools;
     private final Catalog catalog;
@@ -306,7 +305,7 @@ public final class Migration {
                 + " test files)");
         List<String> missing = project.libraries.stream().filter(l -> !project.resolved.containsKey(l))
                 .map(Libraries.Library::describe).toList();
-        requireCompilesAsIs(javac, d, course, extras, tests, junit, projectJars, missing, scratch);
+        AsIsCheck.require(javac, tools.jdk(), d, course, extras, tests, junit, projectJars, missing, scratch);
 
         List<CourseChoices.Choice> choices = CourseChoices.find(course, tests, d);
 
@@ -413,71 +412,6 @@ public final class Migration {
         }
         return new Plan(course, extrasKept, setAside, testsKept, leftOut, trimmed, choices,
                 buildPlan(project, extras, tests, leftOut.keySet(), release, d));
-    }
-
-    private void requireCompilesAsIs(Javac javac, Path d, List<SourceFile> course, List<SourceFile> extras,
-            List<SourceFile> tests, List<Path> junit, List<Path> jars, List<String> missingLibraries, Path scratch)
-            throws IOException, MigrationException {
-        List<Path> main = Stream.concat(course.stream(), extras.stream()).map(SourceFile::path).toList();
-        Javac.Outcome m = javac.compile(main, jars, tools.jdk(), scratch.resolve("as-is-main"));
-        List<Path> path = new ArrayList<>(List.of(scratch.resolve("as-is-main")));
-        path.addAll(junit);
-        path.addAll(jars);
-        Javac.Outcome t = javac.compile(tests.stream().map(SourceFile::path).toList(), path, tools.jdk(),
-                scratch.resolve("as-is-test"));
-        Map<Path, List<Javac.Problem>> failed = new LinkedHashMap<>(m.failed());
-        failed.putAll(t.failed());
-        // A file that needs a newer Java than this JDK's is named later, with its reason (a course
-        // class among them is replaced by the library's anyway); so is a file that failed only
-        // because such a file was left out, directly or through others: javac reports those as a
-        // missing class or a missing package (every file of 2025-26's geometries.api left out).
-        Map<Path, String> packages = new LinkedHashMap<>();
-        Stream.of(course, extras, tests).flatMap(List::stream)
-                .forEach(f -> packages.put(f.path().toAbsolutePath().normalize(), f.packageName()));
-        Set<String> excused = new LinkedHashSet<>();
-        Set<String> excusedPackages = new LinkedHashSet<>();
-        failed.forEach((f, problems) -> {
-            if (Reasons.releaseNeeded(problems.get(0)) > tools.jdk()) excuse(f, packages, excused, excusedPackages);
-        });
-        for (boolean grew = !excused.isEmpty(); grew;) {
-            grew = false;
-            for (Map.Entry<Path, List<Javac.Problem>> e : failed.entrySet())
-                if (!excused.contains(className(e.getKey())) && knockOn(e.getValue().get(0), excused, excusedPackages)) {
-                    excuse(e.getKey(), packages, excused, excusedPackages);
-                    grew = true;
-                }
-        }
-        for (Map.Entry<Path, List<Javac.Problem>> e : failed.entrySet()) {
-            if (excused.contains(className(e.getKey()))) continue;
-            Javac.Problem p = e.getValue().get(0);
-            boolean syntax = p.code().startsWith("compiler.err.expected") || p.code().startsWith("compiler.err.illegal.start")
-                    || p.code().startsWith("compiler.err.premature.eof") || p.code().startsWith("compiler.err.not.stmt");
-            throw new MigrationException(d + " does not compile as it is (" + d.relativize(p.file()).toString().replace('\\', '/')
-                    + ":" + p.line() + ": " + oneLine(p.message()) + "): fix it first"
-                    + (syntax ? " (if that file is written for a Java newer than " + tools.jdk() + ", run migrate with that JDK)" : "")
-                    // A library of the project this machine lacks is the likelier cause of a missing name.
-                    + (!missingLibraries.isEmpty() && (p.code().startsWith("compiler.err.cant.resolve")
-                            || p.code().startsWith("compiler.err.doesnt.exist"))
-                            ? "; your libraries this machine does not have: " + String.join(", ", missingLibraries) : "")
-                    + " (nothing was changed)");
-        }
-    }
-
-    /** Records a file left out of the as-is check: its class, and its package as far as javac would miss it. */
-    private static void excuse(Path file, Map<Path, String> packages, Set<String> excused, Set<String> excusedPackages) {
-        excused.add(className(file));
-        excusedPackages.add(packages.getOrDefault(file, ""));
-    }
-
-    /**
-     * Whether a file's first error is the knock-on of files left out: it names one of their
-     * classes, or a package of theirs ("package geometries.api does not exist").
-     */
-    private static boolean knockOn(Javac.Problem p, Set<String> excused, Set<String> excusedPackages) {
-        Matcher missing = MISSING_PACKAGE.matcher(p.message());
-        if (missing.find() && excusedPackages.stream().anyMatch(x -> x.equals(missing.group(1)) || x.startsWith(missing.group(1) + ".")))
-            return true;
-        return excused.stream().anyMatch(x -> Pattern.compile("\\b" + Pattern.quote(x) + "\\b").matcher(p.message()).find());
     }
 
     /** The first line (1-based) where {@code name} stands as a word in {@code text}, 0 when nowhere. */
