@@ -25,7 +25,15 @@ final class CourseChoices {
         }
     }
 
-    private record Rule(String className, Pattern pattern, String what, String library, Predicate<String> touches) {
+    /**
+     * @param sayUntouched whether the choice is named when no test touches it (false where most
+     *                     students' classes make it and only the tests that rely on it matter)
+     */
+    private record Rule(String className, Pattern pattern, String what, String library, Predicate<String> touches,
+            boolean sayUntouched) {
+        Rule(String className, Pattern pattern, String what, String library, Predicate<String> touches) {
+            this(className, pattern, what, library, touches, true);
+        }
     }
 
     private static final Pattern QUERY_WITH_MAX = Pattern.compile(
@@ -69,7 +77,8 @@ final class CourseChoices {
                     Pattern.compile("(?s)\\A(?!.*\\b(?:isBlank|isEmpty|trim\\(\\)\\.length)\\s*\\()"),
                     "your ImageWriter takes a blank image name",
                     "a blank image name is refused (IllegalArgumentException: image name must not be blank)",
-                    CourseChoices::namesImageBlank));
+                    // Most students' writers take any name: said only where a test gives a blank one.
+                    CourseChoices::namesImageBlank, false));
 
     /** A test that names an image "" (directly, or through a variable set to ""). */
     private static final Pattern BLANK_NAME = Pattern.compile("(?:ImageWriter|writeToImage)\\s*\\(\\s*\"\\s*\"|\\bString\\s+\\w+\\s*=\\s*\"\\s*\"\\s*;");
@@ -122,6 +131,7 @@ final class CourseChoices {
                 if (!m.find()) continue;
                 List<String> touched = tests.stream().filter(t -> rule.touches.test(t.text()))
                         .map(t -> t.path().getFileName().toString()).toList();
+                if (touched.isEmpty() && !rule.sayUntouched) break;
                 found.add(new Choice(rule.what, f.relative(projectDir) + ":" + line(f.text(), m.start()), rule.library, touched));
                 break; // one line per choice: the first class that makes it
             }

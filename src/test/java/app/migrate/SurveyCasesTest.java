@@ -338,6 +338,16 @@ class SurveyCasesTest {
         }
 
         @Test
+        @DisplayName("an ImageWriter that takes a blank name is not named when no test gives one (most students' do)")
+        void blankNameUntouched() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/renderer/ImageWriter.java", "package renderer;\n\npublic class ImageWriter {\n"
+                    + "    public ImageWriter(String name, int nX, int nY) { }\n}\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).doesNotContain("blank image name");
+        }
+
+        @Test
         @DisplayName("the buildsWithoutLocation rule: per statement, through the builder's declaration")
         void buildsWithoutLocation() {
             String builder = "Camera.Builder b = Camera.getBuilder().setLocation(p);\n";
