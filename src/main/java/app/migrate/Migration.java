@@ -88,8 +88,13 @@ public final class Migration {
     /**
      * As {@link #migrate(Path, boolean, boolean)}, the sources read in the encoding named.
      *
-     * @param encoding the sources' character encoding ({@code windows-1255}), or null: as the
-     *                 project states it, else detected ({@link SourceEncoding})
+     * @param dir        the course project's folder
+     * @param allowDirty go on despite uncommitted changes in a git folder
+     * @param dryRun     print what would change, change nothing
+     * @param encoding   the sources' character encoding ({@code windows-1255}), or null: as the
+     *                   project states it, else detected
+     * @return true when it changed the project; false when there was nothing to do (already migrated)
+     * @throws MigrationException refused or taken back, with the one line to print; nothing changed
      */
     public boolean migrate(Path dir, boolean allowDirty, boolean dryRun, String encoding) throws MigrationException {
         Layout named = Layout.read(dir, tools.mavenRepository());
