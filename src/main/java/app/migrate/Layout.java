@@ -183,8 +183,9 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
             case "$MODULE_DIR$" -> moduleFolder(d, iml, path);
             case "$PROJECT_DIR$" -> d.resolve(path).normalize();
             case "$MAVEN_REPOSITORY$" -> repo.resolve(path).normalize();
-            // $APPLICATION_HOME_DIR$ (IntelliJ's own lib/, its bundled annotations): not on this machine.
-            default -> Path.of(System.getProperty("java.io.tmpdir"), variable.replace("$", ""), path).normalize();
+            // $APPLICATION_HOME_DIR$ (IntelliJ's own lib/, its bundled annotations): not on this
+            // machine; kept as a relative name, which Libraries tells by its file name.
+            default -> Path.of(variable.replace("$", "")).resolve(path).normalize();
         };
     }
 

@@ -40,14 +40,17 @@ final class Libraries {
     /** {@code group/path/artifact/version/artifact-version.jar} under a Maven repository. */
     private static final Pattern REPOSITORY_PATH = Pattern.compile("(.+)/([^/]+)/([^/]+)/\\2-\\3(?:-[^/]*)?\\.jar");
 
-    /** Jars known by their file name's artifact: group, test only. */
-    private static final Map<String, String[]> KNOWN_JARS = Map.of(
-            "annotations", new String[] { "org.jetbrains", "false" },
-            "gson", new String[] { "com.google.code.gson", "false" },
-            "json-simple", new String[] { "com.googlecode.json-simple", "false" },
-            "json", new String[] { "org.json", "false" },
-            "junit", new String[] { "junit", "true" },
-            "hamcrest-core", new String[] { "org.hamcrest", "true" });
+    /** A jar known by its file name's artifact: its group, a package it holds, whether only tests use it. */
+    private record KnownJar(String group, String pkg, boolean testOnly) {
+    }
+
+    private static final Map<String, KnownJar> KNOWN_JARS = Map.of(
+            "annotations", new KnownJar("org.jetbrains", "org/jetbrains/annotations/", false),
+            "gson", new KnownJar("com.google.code.gson", "com/google/gson/", false),
+            "json-simple", new KnownJar("com.googlecode.json-simple", "org/json/simple/", false),
+            "json", new KnownJar("org.json", "org/json/", false),
+            "junit", new KnownJar("junit", "org/junit/", true),
+            "hamcrest-core", new KnownJar("org.hamcrest", "org/hamcrest/", true));
 
     /** A package a student imports, the library that has it, and its version when nothing names one. */
     private record Known(Pattern imported, String group, String artifact, String version, boolean testOnly) {
@@ -108,14 +111,14 @@ final class Libraries {
         if (jar.startsWith(mavenRepository)) {
             Matcher m = REPOSITORY_PATH.matcher(mavenRepository.relativize(jar).toString().replace('\\', '/'));
             if (m.matches()) {
-                boolean test = KNOWN_JARS.containsKey(m.group(2)) && Boolean.parseBoolean(KNOWN_JARS.get(m.group(2))[1]);
+                boolean test = KNOWN_JARS.containsKey(m.group(2)) && KNOWN_JARS.get(m.group(2)).testOnly();
                 return new Library(m.group(1).replace('/', '.'), m.group(2), m.group(3), null, test, "your IDE's module");
             }
         }
         Matcher m = JAR_NAME.matcher(name);
-        if (m.matches() && KNOWN_JARS.containsKey(m.group(1)) && isKnown(m.group(1), jar)) {
-            String[] k = KNOWN_JARS.get(m.group(1));
-            return new Library(k[0], m.group(1), m.group(2), null, Boolean.parseBoolean(k[1]), from);
+        if (m.matches() && KNOWN_JARS.containsKey(m.group(1)) && holds(jar, KNOWN_JARS.get(m.group(1)).pkg())) {
+            KnownJar k = KNOWN_JARS.get(m.group(1));
+            return new Library(k.group(), m.group(1), m.group(2), null, k.testOnly(), from);
         }
         if (name.equals("annotations.jar") && !jar.startsWith(d)) // IntelliJ's bundled copy, in its lib/
             return new Library("org.jetbrains", "annotations", "24.1.0", null, false, "IntelliJ's bundled annotations");
@@ -128,16 +131,8 @@ final class Libraries {
      * A jar named like a known artifact holds that artifact's package (a student's own "json.jar"
      * may not); one the project names but does not have (its lib/ not committed) is taken at its word.
      */
-    private static boolean isKnown(String artifact, Path jar) {
+    private static boolean holds(Path jar, String pkg) {
         if (!Files.exists(jar)) return true;
-        String pkg = switch (artifact) {
-            case "annotations" -> "org/jetbrains/annotations/";
-            case "gson" -> "com/google/gson/";
-            case "json-simple" -> "org/json/simple/";
-            case "json" -> "org/json/";
-            case "junit" -> "org/junit/";
-            default -> "org/hamcrest/";
-        };
         try (var zip = new java.util.zip.ZipFile(jar.toFile())) {
             return zip.stream().anyMatch(e -> e.getName().startsWith(pkg));
         } catch (IOException e) {

@@ -564,6 +564,21 @@ class SurveyCasesTest {
         }
 
         @Test
+        @DisplayName("IntelliJ's own bundled annotations.jar becomes org.jetbrains:annotations")
+        void bundledAnnotations() throws Exception {
+            courseProject("unittests");
+            CourseProjects.install(dir, "org.jetbrains:annotations:24.1.0");
+            write(dir, "course.iml", IML.replace("ENTRIES", "    <orderEntry type=\"module-library\">\n      <library>\n"
+                    + "        <CLASSES>\n          <root url=\"jar://$APPLICATION_HOME_DIR$/lib/annotations.jar!/\" />\n"
+                    + "        </CLASSES>\n      </library>\n    </orderEntry>\n"));
+            write(dir, "src/renderer/Names.java", "package renderer;\n\nimport org.jetbrains.annotations.NotNull;\n\n"
+                    + "public class Names {\n    public static @NotNull String name() { return \"n\"; }\n}\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("  org.jetbrains:annotations:24.1.0 (IntelliJ's bundled annotations)",
+                    "Kept (your own classes; they compile against the library): 1");
+        }
+
+        @Test
         @DisplayName("JUnit 4 tests get JUnit 4 and the Vintage engine beside Jupiter, and are kept")
         void junit4() throws Exception {
             courseProject("unittests");
