@@ -238,8 +238,8 @@ public final class Migration {
             if (!project.libraries.isEmpty()) {
                 r.add("Your libraries, now dependencies in pom.xml: " + project.libraries.size());
                 project.libraries.forEach(l -> r.add("  " + l.describe() + (project.resolved.containsKey(l) ? ""
-                        : l.systemPath() != null ? "; not in the project (never committed?): not in pom.xml, the files that use it are left out"
-                        : "; not in " + tools.mavenRepository() + " and mvn could not fetch it: the files that use it are left out")));
+                        : l.systemPath() != null ? "; not in the project (never committed?): left out of pom.xml"
+                        : "; not in " + tools.mavenRepository() + ", and mvn could not fetch it now (mvn test will try again)")));
             }
             if (!choices.isEmpty()) {
                 r.add("Where your code chose otherwise than the library (README, \"Which course year?\"):");

@@ -635,6 +635,23 @@ class SurveyCasesTest {
                             + " (nothing was changed)");
         }
 
+        @Test
+        @DisplayName("libraries named but absent: a known one stays in the pom for Maven to fetch, a jar never committed is left out")
+        void absent() throws Exception {
+            courseProject("unittests");
+            write(dir, "course.iml", IML.replace("ENTRIES", "    <orderEntry type=\"library\" name=\"gson\" level=\"project\" />\n"
+                    + "    <orderEntry type=\"library\" name=\"shapes\" level=\"project\" />\n"));
+            write(dir, ".idea/libraries/gson.xml", "<component name=\"libraryTable\">\n  <library name=\"gson\" type=\"repository\">\n"
+                    + "    <properties maven-id=\"com.google.code.gson:gson:2.10.1\" />\n  </library>\n</component>\n");
+            write(dir, ".idea/libraries/shapes.xml", "<component name=\"libraryTable\">\n  <library name=\"shapes\">\n"
+                    + "    <CLASSES>\n      <root url=\"jar://$PROJECT_DIR$/lib/shapes.jar!/\" />\n    </CLASSES>\n  </library>\n</component>\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("  com.google.code.gson:gson:2.10.1 (your IDE's module); not in " + CourseProjects.repository(dir)
+                    + ", and mvn could not fetch it now (mvn test will try again)",
+                    "  lib/shapes.jar (lib/shapes.jar); not in the project (never committed?): left out of pom.xml");
+            assertThat(read("pom.xml")).contains("<artifactId>gson</artifactId>").doesNotContain("shapes");
+        }
+
         private void jar(String path, String entry) throws IOException {
             Path jar = dir.resolve(path);
             Files.createDirectories(jar.getParent());
