@@ -78,7 +78,57 @@ final class CourseChoices {
                     "your ImageWriter takes a blank image name",
                     "a blank image name is refused (IllegalArgumentException: image name must not be blank)",
                     // Most students' writers take any name: said only where a test gives a blank one.
-                    CourseChoices::namesImageBlank, false));
+                    CourseChoices::namesImageBlank, false),
+            new Rule("lighting.PointLight",
+                    // A light of theirs that never refuses a point: it answers at its own position.
+                    Pattern.compile("(?s)\\A(?!.*throw\\s+new\\s+IllegalArgumentException)"),
+                    "your lights answer getL/getIntensity at their own position",
+                    "a point at a light's position is refused (IllegalArgumentException: the direction from the light to it"
+                            + " is undefined)",
+                    CourseChoices::asksLightAtItsPosition, false));
+
+    private static final Pattern LIGHT = Pattern.compile("\\bnew\\s+(?:PointLight|SpotLight)\\s*\\(");
+    private static final Pattern LIGHT_QUERY = Pattern.compile("\\.(?:getL|getIntensity)\\s*\\(");
+
+    /**
+     * Whether a test asks a point or spot light about the very point it was built at: a
+     * {@code getL}/{@code getIntensity} argument that is, word for word, an argument of a
+     * {@code new PointLight(…)}/{@code new SpotLight(…)} of the file ({@code new Point(1, 2, 3)},
+     * or a constant such as {@code POSITION}). A call inside {@code assertThrows} expects the refusal.
+     */
+    static boolean asksLightAtItsPosition(String text) {
+        List<String> positions = new ArrayList<>();
+        Matcher light = LIGHT.matcher(text);
+        while (light.find()) positions.addAll(arguments(text, light.end()));
+        if (positions.isEmpty()) return false;
+        Matcher query = LIGHT_QUERY.matcher(text);
+        while (query.find()) {
+            List<String> asked = arguments(text, query.end());
+            int statement = Math.max(text.lastIndexOf(';', query.start()), text.lastIndexOf('{', query.start()));
+            if (asked.size() == 1 && positions.contains(asked.get(0))
+                    && !text.substring(statement + 1, query.start()).contains("assertThrows"))
+                return true;
+        }
+        return false;
+    }
+
+    /** The top-level arguments of the call whose {@code (} ends at {@code from}, whitespace squeezed. */
+    private static List<String> arguments(String text, int from) {
+        List<String> args = new ArrayList<>();
+        int depth = 0, start = from;
+        for (int i = from; i < text.length(); i++) {
+            char c = text.charAt(i);
+            if (c == '(') depth++;
+            else if (c == ')' && depth-- == 0) {
+                args.add(text.substring(start, i).replaceAll("\\s+", " ").strip());
+                break;
+            } else if (c == ',' && depth == 0) {
+                args.add(text.substring(start, i).replaceAll("\\s+", " ").strip());
+                start = i + 1;
+            }
+        }
+        return args;
+    }
 
     /** A test that names an image "" (directly, or through a variable set to ""). */
     private static final Pattern BLANK_NAME = Pattern.compile("(?:ImageWriter|writeToImage)\\s*\\(\\s*\"\\s*\"|\\bString\\s+\\w+\\s*=\\s*\"\\s*\"\\s*;");

@@ -348,6 +348,20 @@ class SurveyCasesTest {
         }
 
         @Test
+        @DisplayName("the light rule: a test that asks a light about the point it was built at, not inside assertThrows")
+        void lightAtItsPosition() {
+            assertThat(CourseChoices.asksLightAtItsPosition("PointLight l = new PointLight(WHITE, new Point(1, 2, 3));\n"
+                    + "assertNull(l.getL(new Point(1,  2, 3)));")).isTrue();
+            assertThat(CourseChoices.asksLightAtItsPosition("static final SpotLight LIGHT = new SpotLight(I0, POSITION, DIR);\n"
+                    + "void t() { assertEquals(I0, LIGHT.getIntensity(POSITION)); }")).isTrue();
+            assertThat(CourseChoices.asksLightAtItsPosition("SpotLight l = new SpotLight(I0, POSITION, DIR);\n"
+                    + "void t() { assertThrows(IllegalArgumentException.class, () -> l.getL(POSITION)); }")).isFalse();
+            assertThat(CourseChoices.asksLightAtItsPosition("PointLight l = new PointLight(WHITE, new Point(1, 2, 3));\n"
+                    + "assertEquals(v, l.getL(new Point(1, 2, 4)));")).isFalse();
+            assertThat(CourseChoices.asksLightAtItsPosition("assertEquals(v, light.getL(POSITION));")).isFalse();
+        }
+
+        @Test
         @DisplayName("the buildsWithoutLocation rule: per statement, through the builder's declaration")
         void buildsWithoutLocation() {
             String builder = "Camera.Builder b = Camera.getBuilder().setLocation(p);\n";
