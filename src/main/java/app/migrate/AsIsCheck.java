@@ -21,6 +21,8 @@ import java.util.stream.Stream;
  * the first true cause.
  */
 final class AsIsCheck {
+    /** Where, under the scratch folder, the student's classes compiled as they are stay for the course probes. */
+    static final String MAIN_CLASSES = "as-is-main";
     private static final Pattern MISSING_PACKAGE = Pattern.compile("package ([\\w.]+) does not exist");
 
     private AsIsCheck() {
@@ -35,8 +37,8 @@ final class AsIsCheck {
     static void require(Javac javac, int jdk, Path d, List<SourceFile> course, List<SourceFile> extras, List<SourceFile> tests,
             List<Path> junit, List<Path> jars, List<String> missingLibraries, Path scratch) throws IOException, MigrationException {
         List<Path> main = Stream.concat(course.stream(), extras.stream()).map(SourceFile::path).toList();
-        Javac.Outcome m = javac.compile(main, jars, jdk, scratch.resolve("as-is-main"));
-        List<Path> path = new ArrayList<>(List.of(scratch.resolve("as-is-main")));
+        Javac.Outcome m = javac.compile(main, jars, jdk, scratch.resolve(MAIN_CLASSES));
+        List<Path> path = new ArrayList<>(List.of(scratch.resolve(MAIN_CLASSES)));
         path.addAll(junit);
         path.addAll(jars);
         Javac.Outcome t = javac.compile(tests.stream().map(SourceFile::path).toList(), path, jdk,

@@ -312,7 +312,8 @@ public final class Migration {
                 .map(Libraries.Library::describe).toList();
         AsIsCheck.require(javac, tools.jdk(), d, course, extras, tests, junit, projectJars, missing, scratch);
 
-        List<CourseChoices.Choice> choices = CourseChoices.find(course, tests, d);
+        List<CourseChoices.Choice> choices = new ArrayList<>(CourseChoices.find(course, tests, d));
+        choices.addAll(CourseProbes.find(scratch.resolve(AsIsCheck.MAIN_CLASSES), course, tests, d));
 
         // 2. The extras against the library, folded and staged; those that fail are set aside.
         Map<String, String> own = new LinkedHashMap<>();

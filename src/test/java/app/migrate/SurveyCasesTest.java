@@ -27,6 +27,8 @@ import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * The cases a survey of real course projects found {@code migrate} refusing or losing tests on,
@@ -345,6 +347,59 @@ class SurveyCasesTest {
                     + "    public ImageWriter(String name, int nX, int nY) { }\n}\n");
             assertThat(migrate()).isTrue();
             assertThat(printed()).doesNotContain("blank image name");
+        }
+
+        @ParameterizedTest(name = "a bottom-base normal of {0}: named {1}")
+        @CsvSource({ "dir, true", "dir.scale(-1), false" })
+        @DisplayName("a cylinder whose bottom-base normal is the axis direction is named, found by running the student's class")
+        void cylinderBottomNormal(String bottom, boolean named) throws Exception {
+            write(dir, "src/primitives/Point.java", """
+                    package primitives;
+
+                    public class Point {
+                        protected final double x, y, z;
+                        public Point(double x, double y, double z) { this.x = x; this.y = y; this.z = z; }
+                        public Vector subtract(Point p) { return new Vector(x - p.x, y - p.y, z - p.z); }
+                    }
+                    """);
+            write(dir, "src/primitives/Vector.java", """
+                    package primitives;
+
+                    public class Vector extends Point {
+                        public Vector(double x, double y, double z) { super(x, y, z); }
+                        public double dotProduct(Vector v) { return x * v.x + y * v.y + z * v.z; }
+                        public Vector scale(double k) { return new Vector(k * x, k * y, k * z); }
+                    }
+                    """);
+            write(dir, "src/primitives/Ray.java", "package primitives;\n\npublic class Ray {\n    public final Point p0;\n"
+                    + "    public final Vector dir;\n    public Ray(Point p0, Vector dir) { this.p0 = p0; this.dir = dir; }\n}\n");
+            write(dir, "src/geometries/Cylinder.java", "package geometries;\n\nimport primitives.*;\n\npublic class Cylinder {\n"
+                    + "    private final Vector dir;\n    public Cylinder(double radius, Ray axis, double height) { dir = axis.dir; }\n"
+                    + "    public Vector getNormal(Point p) { return " + bottom + "; }\n}\n");
+            write(dir, "unittests/geometries/CylinderTests.java", "package geometries;\n\nimport org.junit.jupiter.api.Test;\n\n"
+                    + "class CylinderTests {\n    @Test\n    void normal() {\n        new Cylinder(1, null, 1).getNormal(null);\n    }\n}\n");
+            assertThat(migrate()).isTrue();
+            String line = "your Cylinder's normal at the centre of its bottom base is the axis direction (src/geometries/Cylinder.java);"
+                    + " the library: the outward normal there, minus the axis direction; 1 test file will change: CylinderTests.java";
+            if (named) assertThat(printed()).contains(line);
+            else assertThat(printed()).doesNotContain("bottom base");
+        }
+
+        @Test
+        @DisplayName("a cylinder probe that cannot tell (a student's class that loops) names nothing, within its time limit")
+        void cylinderProbeLoops() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/primitives/Ray.java", "package primitives;\n\npublic class Ray {\n"
+                    + "    public Ray(Point p0, Vector dir) { }\n}\n");
+            write(dir, "src/geometries/Cylinder.java", "package geometries;\n\nimport primitives.*;\n\npublic class Cylinder {\n"
+                    + "    public Cylinder(double radius, Ray axis, double height) { }\n"
+                    // Ends when interrupted (the probe's thread is, at its time limit), so that no
+                    // spinning thread is left in the test JVM.
+                    + "    public Vector getNormal(Point p) {\n        while (true) {\n            try {\n"
+                    + "                Thread.sleep(10);\n            } catch (InterruptedException e) {\n                return null;\n"
+                    + "            }\n        }\n    }\n}\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).doesNotContain("bottom base");
         }
 
         @Test
