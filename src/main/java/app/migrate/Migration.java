@@ -354,8 +354,7 @@ public final class Migration {
                 continue;
             }
             keptTests.add(new Kept(f, t.text(), k.target));
-            trimmed.put(f, f.relative(d) + ": " + t.removed().size() + " test method" + (t.removed().size() == 1 ? "" : "s")
-                    + " left out (" + String.join("(), ", t.removed()) + "()), the rest kept: " + why);
+            trimmed.put(f, trimmedLine(f, d, t, why));
         }
         Map<Path, Kept> stagedTests = stage(keptTests, d, scratch.resolve("stage-test"), charset);
         step("compiling your " + tests.size() + " test files against the library");
@@ -378,9 +377,7 @@ public final class Migration {
             if (t == null) continue;
             Files.write(e.getKey(), t.text().getBytes(charset));
             retried.put(e.getKey(), new Kept(k.file, t.text(), k.target));
-            trimmedLines.put(e.getKey(), k.file.relative(d) + ": " + t.removed().size() + " test method"
-                    + (t.removed().size() == 1 ? "" : "s") + " left out (" + String.join("(), ", t.removed()) + "()), the rest kept: "
-                    + first.line() + ": " + reasons.explain(first, true));
+            trimmedLines.put(e.getKey(), trimmedLine(k.file, d, t, first.line() + ": " + reasons.explain(first, true)));
         }
         if (!retried.isEmpty()) {
             step("compiling " + retried.size() + " of your test files again without the test methods that do not compile");
@@ -418,6 +415,13 @@ public final class Migration {
         }
         return new Plan(course, extrasKept, setAside, testsKept, leftOut, trimmed, choices,
                 buildPlan(project, extras, tests, leftOut.keySet(), release, d));
+    }
+
+    /** The summary's line for a test file kept without some of its methods. */
+    private static String trimmedLine(SourceFile f, Path d, TestMethods.Trimmed t, String why) {
+        int n = t.removed().size();
+        return f.relative(d) + ": " + n + " test method" + (n == 1 ? "" : "s") + " left out (" + String.join("(), ", t.removed())
+                + "()), the rest kept: " + why;
     }
 
     /** The first line (1-based) where {@code name} stands as a word in {@code text}, 0 when nowhere. */
