@@ -39,8 +39,14 @@ final class Javac {
 
         /** The text of the line the error is on ({@code ""} when it cannot be read). */
         String sourceLine() {
+            return sourceText(0);
+        }
+
+        /** The error's line and the {@code more} lines after it, joined by line breaks. */
+        String sourceText(int more) {
             try {
-                return line < 1 ? "" : new String(Files.readAllBytes(file), encoding).lines().skip(line - 1).findFirst().orElse("");
+                return line < 1 ? "" : String.join("\n", new String(Files.readAllBytes(file), encoding).lines().skip(line - 1)
+                        .limit(more + 1L).toList());
             } catch (IOException e) {
                 return ""; // the file was just compiled; unreadable now, its line is simply not shown
             }

@@ -21,6 +21,11 @@ final class Reasons {
     /** javac's "cannot be applied": the library's method or constructor, what it takes, what the call gave. */
     private static final Pattern CANT_APPLY = Pattern.compile("(method|constructor) (\\w+) in (?:class|interface|enum|record)"
             + " ([\\w.$]+) cannot be applied to given types;\\s*required: ([^\\n]*?)\\s*found:\\s*([^\\n]*)");
+    /** javac's "cannot override": the student's method and class, the library's class, and why. */
+    private static final Pattern CANT_OVERRIDE = Pattern.compile(
+            "(\\w+)\\([^)]*\\) in ([\\w.$]+) cannot (?:override|implement) \\w+\\([^)]*\\) in ([\\w.$]+)\\s+([^\\n]+)");
+    /** The method an {@code @Override} stands on: its name, before its parameters. */
+    private static final Pattern DECLARED = Pattern.compile("(\\w+)\\s*\\(");
     /** javac's "no suitable method": the call, with the types it gave. */
     private static final Pattern NO_SUITABLE = Pattern.compile("no suitable (method|constructor) found for (\\w+)\\(([^)]*)\\)"
             + "(?:\\s*(?:method|constructor) ([\\w.$]+?)\\.\\w+\\()?");
@@ -79,6 +84,8 @@ final class Reasons {
                     + ": run migrate with JDK " + release + " or newer, or port it";
         String overload = overload(p, test);
         if (overload != null) return overload;
+        String override = override(p, test);
+        if (override != null) return override;
         Matcher pkg = PACKAGE_MISSING.matcher(p.message());
         if (pkg.find()) return "package " + pkg.group(1) + " is not in the build (neither the library's nor yours)";
         if (p.code().startsWith("compiler.err.cant.resolve")) {
@@ -138,6 +145,33 @@ final class Reasons {
             return call + " is your own overload (not in the course API" + takes + "): port " + (test ? "the test" : "it")
                     + " or keep it aside";
         return call + " is not in the library (nor in your course classes" + takes + ")";
+    }
+
+    /**
+     * A method of the student's that the library's classes do not let it override: one of the
+     * course API's (final there, or of another return type), or one of the library's insides a
+     * course class of it inherits (their BVH's {@code getBoundingBox()}), which is named as such
+     * rather than by the internal class; or an {@code @Override} of a method only their own course
+     * class had. Null for another error.
+     */
+    private String override(Javac.Problem p, boolean test) {
+        String advice = ": port " + (test ? "the test" : "it") + " or keep it aside";
+        Matcher m = CANT_OVERRIDE.matcher(p.message());
+        if (m.find()) {
+            String mine = simple(m.group(2)) + "." + m.group(1) + "()", theirs = m.group(3);
+            String why = m.group(4).trim().replaceAll("\\b(?:[a-z]\\w*\\.)+([A-Z])", "$1");
+            if (Catalog.isCourseClass(theirs))
+                return mine + " cannot override the library's " + simple(theirs) + "." + m.group(1) + "() (" + why + ")" + advice;
+            return mine + " clashes with a method of that name inside the library, which its course classes inherit (" + why
+                    + "): rename yours" + (test ? ", or port the test" : "");
+        }
+        if (p.code().equals("compiler.err.method.does.not.override.superclass")) {
+            Matcher d = DECLARED.matcher(p.sourceText(3).replaceAll("@\\w+(\\([^)]*\\))?", ""));
+            String name = d.find() ? d.group(1) + "()" : "a method";
+            return name + " is marked @Override, but nothing in the library has it to override (it overrode one of your own"
+                    + " course classes)" + advice;
+        }
+        return null;
     }
 
     /** {@code java.util.List<primitives.Point>,int} → {@code List<Point>, int}. */

@@ -506,6 +506,34 @@ class SurveyCasesTest {
         }
 
         @Test
+        @DisplayName("a method that clashes with one inside the library is said so, without naming the library's insides")
+        void clashInside() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/geometries/AABB.java", "package geometries;\n\npublic class AABB {\n}\n");
+            write(dir, "src/geometries/Intersectable.java", "package geometries;\n\npublic abstract class Intersectable {\n"
+                    + "    public AABB getBoundingBox() { return null; }\n}\n");
+            write(dir, "src/geometries/BVHNode.java", "package geometries;\n\npublic abstract class BVHNode extends Intersectable {\n"
+                    + "    @Override\n    public AABB getBoundingBox() { return new AABB(); }\n}\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("src/geometries/BVHNode.java:5: BVHNode.getBoundingBox() clashes with a method of that name"
+                    + " inside the library, which its course classes inherit (return type AABB is not compatible with BoundingBox):"
+                    + " rename yours").doesNotContain("BvhLeaf");
+        }
+
+        @Test
+        @DisplayName("an @Override of a method only the student's course class had is named")
+        void overrideOfOwn() throws Exception {
+            courseProject("unittests");
+            write(dir, "src/primitives/Material.java", "package primitives;\n\npublic class Material {\n"
+                    + "    public Material setGlossy(double g) { return this; }\n}\n");
+            write(dir, "src/renderer/Gold.java", "package renderer;\n\nimport primitives.Material;\n\npublic class Gold extends Material {\n"
+                    + "    @Override\n    public Material setGlossy(double g) { return this; }\n}\n");
+            assertThat(migrate()).isTrue();
+            assertThat(printed()).contains("src/renderer/Gold.java:6: setGlossy() is marked @Override, but nothing in the library has"
+                    + " it to override (it overrode one of your own course classes): port it or keep it aside");
+        }
+
+        @Test
         @DisplayName("a constructor of the student's own is named as theirs")
         void constructor() throws Exception {
             courseProject("unittests");
