@@ -643,36 +643,24 @@ class SurveyCasesTest {
                 + "      <sourceFolder url=\"file://$MODULE_DIR$/unittests\" isTestSource=\"true\" />\n    </content>\n"
                 + "    <orderEntry type=\"inheritedJdk\" />\nENTRIES  </component>\n</module>\n";
 
-        @Test
-        @DisplayName("IntelliJ's annotations from the module's Maven library become org.jetbrains:annotations")
-        void annotations() throws Exception {
+        @ParameterizedTest(name = "{0}")
+        @CsvSource(delimiter = '|', quoteCharacter = '"', value = {
+                "$MAVEN_REPOSITORY$/org/jetbrains/annotations/24.1.0/annotations-24.1.0.jar | your IDE's module",
+                "$APPLICATION_HOME_DIR$/lib/annotations.jar | IntelliJ's bundled annotations" })
+        @DisplayName("IntelliJ's annotations, from the module's Maven library or IntelliJ's own lib/, become org.jetbrains:annotations")
+        void annotations(String jar, String from) throws Exception {
             courseProject("unittests");
             CourseProjects.install(dir, "org.jetbrains:annotations:24.1.0");
             write(dir, "course.iml", IML.replace("ENTRIES", "    <orderEntry type=\"module-library\">\n      <library>\n"
-                    + "        <CLASSES>\n          <root url=\"jar://$MAVEN_REPOSITORY$/org/jetbrains/annotations/24.1.0/"
-                    + "annotations-24.1.0.jar!/\" />\n        </CLASSES>\n      </library>\n    </orderEntry>\n"));
+                    + "        <CLASSES>\n          <root url=\"jar://" + jar + "!/\" />\n        </CLASSES>\n      </library>\n"
+                    + "    </orderEntry>\n"));
             write(dir, "src/renderer/Names.java", "package renderer;\n\nimport org.jetbrains.annotations.NotNull;\n\n"
                     + "public class Names {\n    public static @NotNull String name() { return \"n\"; }\n}\n");
             assertThat(migrate()).isTrue();
             assertThat(printed()).contains("Your libraries, now dependencies in pom.xml: 1",
-                    "  org.jetbrains:annotations:24.1.0 (your IDE's module)", "Kept (your own classes; they compile against the library): 1");
+                    "  org.jetbrains:annotations:24.1.0 (" + from + ")", "Kept (your own classes; they compile against the library): 1");
             assertThat(read("pom.xml")).contains("<groupId>org.jetbrains</groupId>\n      <artifactId>annotations</artifactId>\n"
                     + "      <version>24.1.0</version>");
-        }
-
-        @Test
-        @DisplayName("IntelliJ's own bundled annotations.jar becomes org.jetbrains:annotations")
-        void bundledAnnotations() throws Exception {
-            courseProject("unittests");
-            CourseProjects.install(dir, "org.jetbrains:annotations:24.1.0");
-            write(dir, "course.iml", IML.replace("ENTRIES", "    <orderEntry type=\"module-library\">\n      <library>\n"
-                    + "        <CLASSES>\n          <root url=\"jar://$APPLICATION_HOME_DIR$/lib/annotations.jar!/\" />\n"
-                    + "        </CLASSES>\n      </library>\n    </orderEntry>\n"));
-            write(dir, "src/renderer/Names.java", "package renderer;\n\nimport org.jetbrains.annotations.NotNull;\n\n"
-                    + "public class Names {\n    public static @NotNull String name() { return \"n\"; }\n}\n");
-            assertThat(migrate()).isTrue();
-            assertThat(printed()).contains("  org.jetbrains:annotations:24.1.0 (IntelliJ's bundled annotations)",
-                    "Kept (your own classes; they compile against the library): 1");
         }
 
         @Test
