@@ -54,9 +54,8 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
     private static final Pattern IML_LIBRARY = Pattern.compile("<orderEntry\\s+type=\"library\"[^>]*?name=\"([^\"]+)\"");
     private static final Pattern MODULES_XML = Pattern.compile("filepath=\"\\$PROJECT_DIR\\$/([^\"]+\\.iml)\"");
     private static final Pattern ECLIPSE_ENTRY = Pattern.compile("<classpathentry\\s+[^>]*?kind=\"(src|lib)\"[^>]*?path=\"([^\"]+)\"");
-    /** A JUnit test file: JUnit imported (any generation) and a test annotated. */
-    private static final Pattern TEST_FILE = Pattern.compile("(?s)^(?=.*\\bimport\\s+(?:static\\s+)?org\\.junit\\.)(?=.*@(?:Test|ParameterizedTest)\\b)");
-    private static final Pattern PACKAGE = Pattern.compile("(?m)^\\s*package\\s+([\\w.]+)\\s*;");
+    /** A test annotated; with a JUnit import ({@link SourceFile#JUNIT}), a JUnit test file. */
+    private static final Pattern TEST_ANNOTATION = Pattern.compile("@(?:Test|ParameterizedTest)\\b");
     private static final Pattern POM_SOURCE = Pattern.compile("<sourceDirectory>\\s*([^<]+?)\\s*</sourceDirectory>");
     private static final Pattern POM_TEST = Pattern.compile("<testSourceDirectory>\\s*([^<]+?)\\s*</testSourceDirectory>");
 
@@ -101,8 +100,8 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
             for (Path f : walk.filter(f -> f.toString().endsWith(".java") && Files.isRegularFile(f)).sorted().toList()) {
                 if (skipped(dir, f) || roots.stream().anyMatch(f::startsWith)) continue;
                 String text = Files.readString(f, StandardCharsets.ISO_8859_1);
-                if (!TEST_FILE.matcher(text).find()) continue;
-                Matcher p = PACKAGE.matcher(text);
+                if (!SourceFile.JUNIT.matcher(text).find() || !TEST_ANNOTATION.matcher(text).find()) continue;
+                Matcher p = SourceFile.PACKAGE.matcher(text);
                 Path root = f.getParent();
                 if (p.find()) {
                     Path pkg = Path.of(p.group(1).replace('.', '/'));

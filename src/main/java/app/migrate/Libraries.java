@@ -149,9 +149,7 @@ final class Libraries {
     /** The jar of a library for the compile checks: the project's own, or the local repository's (empty when not there). */
     static Optional<Path> jar(Library l, Path d, Path mavenRepository) {
         if (l.systemPath != null) return Optional.of(d.resolve(l.systemPath)).filter(Files::isRegularFile);
-        Path p = mavenRepository.resolve(l.group.replace('.', '/')).resolve(l.artifact).resolve(l.version)
-                .resolve(l.artifact + "-" + l.version + ".jar");
-        return Files.isRegularFile(p) ? Optional.of(p) : Optional.empty();
+        return Optional.of(Toolchain.repositoryJar(mavenRepository, l.group, l.artifact, l.version)).filter(Files::isRegularFile);
     }
 
     /** IntelliJ's project libraries ({@code .idea/libraries/*.xml}) by name: their jars' URLs. */

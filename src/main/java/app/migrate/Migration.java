@@ -445,10 +445,6 @@ public final class Migration {
         return lines;
     }
 
-    private static String className(Path file) {
-        return file.getFileName().toString().replaceFirst("\\.java$", "");
-    }
-
     /**
      * The file with 2025–26's {@code geometries.api/impl} and {@code lighting.api/impl} folded and
      * relocated course classes named as the library's, and its new place.

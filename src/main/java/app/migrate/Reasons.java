@@ -159,7 +159,7 @@ final class Reasons {
         Matcher m = CANT_OVERRIDE.matcher(p.message());
         if (m.find()) {
             String mine = simple(m.group(2)) + "." + m.group(1) + "()", theirs = m.group(3);
-            String why = m.group(4).trim().replaceAll("\\b(?:[a-z]\\w*\\.)+([A-Z])", "$1");
+            String why = shortTypes(m.group(4).trim());
             if (Catalog.isCourseClass(theirs))
                 return mine + " cannot override the library's " + simple(theirs) + "." + m.group(1) + "() (" + why + ")" + advice;
             return mine + " clashes with a method of that name inside the library, which its course classes inherit (" + why

@@ -21,9 +21,9 @@ import java.util.regex.Pattern;
  */
 record SourceFile(Path path, Path root, String packageName, String simpleName, boolean test, String text) {
     /** {@code package a.b;} after any comments; the first one (a package line is unique). */
-    private static final Pattern PACKAGE = Pattern.compile("(?m)^\\s*package\\s+([\\w.]+)\\s*;");
+    static final Pattern PACKAGE = Pattern.compile("(?m)^\\s*package\\s+([\\w.]+)\\s*;");
     /** A JUnit import, static or not, of any JUnit generation (4's {@code org.junit.Test} too). */
-    private static final Pattern JUNIT = Pattern.compile("(?m)^\\s*import\\s+(static\\s+)?org\\.junit\\.");
+    static final Pattern JUNIT = Pattern.compile("(?m)^\\s*import\\s+(static\\s+)?org\\.junit\\.");
 
     static SourceFile read(Path path, Path root, boolean inTestFolder, Charset encoding) throws IOException {
         String text = new String(Files.readAllBytes(path), encoding);

@@ -94,13 +94,17 @@ record Toolchain(Path library, List<Path> junit, Path mavenRepository, String co
 
     private Path jarOf(String coordinates) {
         String[] c = coordinates.split(":");
-        return mavenRepository.resolve(c[0].replace('.', '/')).resolve(c[1]).resolve(c[2]).resolve(c[1] + "-" + c[2] + ".jar");
+        return repositoryJar(mavenRepository, c[0], c[1], c[2]);
+    }
+
+    /** Where Maven keeps {@code group:artifact:version}'s jar in a local repository. */
+    static Path repositoryJar(Path repository, String group, String artifact, String version) {
+        return repository.resolve(group.replace('.', '/')).resolve(artifact).resolve(version).resolve(artifact + "-" + version + ".jar");
     }
 
     /** Where the library's jar lies in the local repository (it may not be installed yet). */
     Path installedJar() {
-        String[] c = coordinates.split(":");
-        return mavenRepository.resolve(c[0].replace('.', '/')).resolve(c[1]).resolve(c[2]).resolve(c[1] + "-" + c[2] + ".jar");
+        return jarOf(coordinates);
     }
 
     /** {@code -Dmaven.repo.local}, else {@code localRepository} of {@code ~/.m2/settings.xml}, else {@code ~/.m2/repository}. */
