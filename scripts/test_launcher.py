@@ -1,6 +1,7 @@
-"""The launcher script `raytracer` at the project root: what it does without a jar, with a stale or
-broken class-data-sharing archive, with the user's options, and which archive it takes on which
-JDK. Needs the runnable jar (`mvn package`) except for the last; those cases are skipped without it."""
+"""The launcher script `raytracer` at the project root: what it does without a jar, how it makes its
+start-up archive (once per JDK and jar) and what it does with a broken one, with the user's
+options, and which archive it takes on which JDK. Needs the runnable jar (`mvn package`) except for
+the fake-JDK cases; those are skipped without it."""
 from __future__ import annotations
 
 import os
@@ -21,6 +22,23 @@ def project(tmp_path: Path, with_jar: bool) -> Path:
         (tmp_path / "target").mkdir()
         os.symlink(JAR, tmp_path / "target" / "raytracer.jar")
     return tmp_path
+
+
+def startup(folder: Path, home: Path, suffix: str) -> Path:
+    """Where the launcher keeps its start-up archive for the JDK at `home`: named by the checksum
+    of the JDK's release file, as POSIX cksum computes it."""
+    key = subprocess.run(["cksum"], stdin=(home / "release").open("rb"), capture_output=True, text=True,
+                         check=True).stdout.split()[0]
+    return folder / "target" / "startup" / f"raytracer-{key}.{suffix}"
+
+
+def this_jdk() -> tuple[Path, str]:
+    """The JDK the launcher runs here (JAVA_HOME or java on the PATH) and its archive's suffix."""
+    java = Path(os.environ["JAVA_HOME"]) / "bin" / "java" if os.environ.get("JAVA_HOME") else Path(shutil.which("java"))
+    home = java.resolve().parent.parent
+    feature = int(next(line for line in (home / "release").read_text().splitlines()
+                       if line.startswith("JAVA_VERSION=")).split('"')[1].split(".")[0])
+    return home, "aot" if feature >= 25 else "jsa"
 
 
 def run(folder: Path, *args: str, env: dict | None = None) -> subprocess.CompletedProcess:
@@ -45,9 +63,29 @@ def test_it_runs_the_command_line_with_its_arguments(tmp_path):
 
 
 @needs_jar
+def test_the_first_run_makes_the_start_up_archive_and_the_next_runs_use_it(tmp_path):
+    folder = project(tmp_path, with_jar=True)
+    archive = startup(folder, *this_jdk())
+    first = run(folder, "--version")
+    assert first.returncode == 0, first.stderr
+    assert first.stderr == f"raytracer: making the start-up archive for this JDK and jar (once, a few seconds): {archive}\n"
+    assert archive.stat().st_size > 0
+    assert [p.name for p in archive.parent.iterdir()] == [archive.name]  # no scratch folder left
+    second = run(folder, "--version", env={"RAYTRACER_JAVA_OPTS": "-XX:+PrintCommandLineFlags"})
+    assert second.returncode == 0 and second.stderr == ""
+    # a jar newer than the archive (a rebuild): made again
+    jar_time = (folder / "target" / "raytracer.jar").stat().st_mtime
+    os.utime(archive, (jar_time - 10, jar_time - 10))
+    third = run(folder, "--version")
+    assert third.returncode == 0 and "making the start-up archive" in third.stderr
+
+
+@needs_jar
 def test_an_archive_that_does_not_fit_is_ignored_without_a_word(tmp_path):
     folder = project(tmp_path, with_jar=True)
-    (folder / "target" / "raytracer.jsa").write_bytes(b"not an archive")
+    archive = startup(folder, *this_jdk())
+    archive.parent.mkdir(parents=True)
+    archive.write_bytes(b"not an archive")
     done = run(folder, "--version")
     assert done.returncode == 0
     assert done.stderr == ""
@@ -104,30 +142,57 @@ def test_the_vector_module_is_added_when_asked_where_the_jdk_has_it_and_its_warn
     folder = project(tmp_path / "project", with_jar=False)
     (folder / "target").mkdir()
     (folder / "target" / "raytracer.jar").write_bytes(b"")
-    done = run(folder, "scene.xml", env={"JAVA_HOME": str(fake_jdk(tmp_path, "17.0.12", modules)),
-                                         "RAYTRACER_VECTOR": asked})
+    home = fake_jdk(tmp_path, "17.0.12", modules)
+    startup(folder, home, "jsa").parent.mkdir()
+    startup(folder, home, "jsa").write_bytes(b"")  # as after a start-up archive that could not be made
+    done = run(folder, "scene.xml", env={"JAVA_HOME": str(home), "RAYTRACER_VECTOR": asked})
     assert done.returncode == 3  # the JVM's own exit status
     assert ("jdk.incubator.vector" in done.stdout.splitlines()) == vector
     assert done.stderr == "the JVM's own line\n"  # the warning, and only it, dropped
 
 
-@pytest.mark.parametrize("version, uses_cache", [("25.0.1", True), ("24", True), ("21.0.5", False), ("17.0.12", False)])
-def test_the_ahead_of_time_cache_is_used_on_jdk_24_and_later_only(tmp_path, version, uses_cache):
-    # JDK 17 refuses -XX:AOTCache as an unknown option, so the launcher reads the JDK's release file.
+@pytest.mark.parametrize("version, uses_cache", [("25.0.1", True), ("26", True), ("24", False), ("21.0.5", False),
+                                                 ("17.0.12", False)])
+def test_the_ahead_of_time_cache_is_used_on_jdk_25_and_later_only(tmp_path, version, uses_cache):
+    # JDK 17 refuses -XX:AOTCache as an unknown option, so the launcher reads the JDK's release
+    # file; the one-step cache (-XX:AOTCacheOutput) the launcher makes came with JDK 25.
     (tmp_path / "project").mkdir()
     folder = project(tmp_path / "project", with_jar=False)
     (folder / "target").mkdir()
-    for name in ("raytracer.jar", "raytracer.jsa", "raytracer.aot"):
-        (folder / "target" / name).write_bytes(b"")
-    done = run(folder, "scene.xml", env={"JAVA_HOME": str(fake_jdk(tmp_path, version)), "RAYTRACER_JAVA_OPTS": "-Dmine=1"})
+    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    home = fake_jdk(tmp_path, version)
+    archive = startup(folder, home, "aot" if uses_cache else "jsa")
+    archive.parent.mkdir()
+    archive.write_bytes(b"made")
+    done = run(folder, "scene.xml", env={"JAVA_HOME": str(home), "RAYTRACER_JAVA_OPTS": "-Dmine=1"})
     assert done.returncode == 3, done.stderr
+    assert done.stderr == "the JVM's own line\n"  # nothing made: the archive is there, newer than the jar
     args = done.stdout.splitlines()
     assert args[-3:] == ["-jar", str(folder / "target" / "raytracer.jar"), "scene.xml"]
     assert args[-4] == "-Dmine=1"  # the user's options last before the jar
     if uses_cache:
-        assert f"-XX:AOTCache={folder / 'target' / 'raytracer.aot'}" in args
+        assert f"-XX:AOTCache={archive}" in args
         assert not any(a.startswith("-XX:SharedArchiveFile") for a in args)
     else:
         assert not any(a.startswith("-XX:AOTCache") for a in args)
-        assert f"-XX:SharedArchiveFile={folder / 'target' / 'raytracer.jsa'}" in args
+        assert f"-XX:SharedArchiveFile={archive}" in args
     assert "-XX:+UseSerialGC" in args and not any(a.startswith("-XX:TieredStopAtLevel") for a in args)
+
+
+def test_an_archive_that_cannot_be_made_is_said_once_and_not_tried_again(tmp_path):
+    # The fake JVM fails the training render: one line, an empty file in its place, and the next
+    # run neither tries again nor passes the empty file to the JVM.
+    (tmp_path / "project").mkdir()
+    folder = project(tmp_path / "project", with_jar=False)
+    (folder / "target").mkdir()
+    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    home = fake_jdk(tmp_path, "17.0.12")
+    first = run(folder, "scene.xml", env={"JAVA_HOME": str(home)})
+    lines = first.stderr.splitlines()
+    assert lines[0].startswith("raytracer: making the start-up archive")
+    assert lines[1] == "raytracer: no start-up archive (-XX:+UseSerialGC); running without it" or \
+        lines[1].startswith("raytracer: no start-up archive (")
+    assert startup(folder, home, "jsa").read_bytes() == b""
+    second = run(folder, "scene.xml", env={"JAVA_HOME": str(home)})
+    assert second.stderr == "the JVM's own line\n"
+    assert not any(a.startswith("-XX:SharedArchiveFile") for a in second.stdout.splitlines())

@@ -66,20 +66,37 @@ class PublishedPomTest {
                 .singleElement().satisfies(d -> assertThat(text(d, "optional")).isEqualTo("true"));
     }
 
+    private static Element profile(String id) {
+        return children(children(project, "profiles").get(0), "profile").stream()
+                .filter(p -> text(p, "id").equals(id)).findFirst().orElseThrow();
+    }
+
     @Test
-    @DisplayName("Spark is a dependency of the profile spark only: a build that skips the tests downloads none of it")
+    @DisplayName("Spark is a dependency of the profile spark only, which nothing but -Pspark activates")
     void sparkOnlyInItsProfile() {
         List<Element> dependencies = children(children(project, "dependencies").get(0), "dependency");
         assertThat(dependencies).noneSatisfy(d -> assertThat(text(d, "groupId")).isEqualTo("org.apache.spark"));
-        Element spark = children(children(project, "profiles").get(0), "profile").stream()
-                .filter(p -> text(p, "id").equals("spark")).findFirst().orElseThrow();
-        Element activation = children(children(spark, "activation").get(0), "property").get(0);
-        assertThat(text(activation, "name")).as("active unless the tests are skipped").isEqualTo("!skipTests");
+        Element spark = profile("spark");
+        assertThat(children(spark, "activation")).as("no activation: -DskipTests, -Dmaven.test.skip=true and -o never download Spark").isEmpty();
         assertThat(children(children(spark, "dependencies").get(0), "dependency"))
                 .singleElement().satisfies(d -> {
                     assertThat(text(d, "artifactId")).startsWith("spark-core_");
                     assertThat(text(d, "scope")).isEqualTo("provided");
                 });
+    }
+
+    @Test
+    @DisplayName("the test libraries are in the profile tests, which -DskipTests turns off: the first command resolves none")
+    void testLibrariesOnlyWhereTestsRun() {
+        List<Element> dependencies = children(children(project, "dependencies").get(0), "dependency");
+        assertThat(dependencies).noneSatisfy(d -> assertThat(text(d, "scope")).isEqualTo("test"));
+        Element tests = profile("tests");
+        Element activation = children(children(tests, "activation").get(0), "property").get(0);
+        assertThat(text(activation, "name")).isEqualTo("!skipTests");
+        assertThat(children(children(tests, "dependencies").get(0), "dependency"))
+                .extracting(d -> text(d, "artifactId")).contains("junit-jupiter", "assertj-core", "jazzer-junit");
+        assertThat(text(children(project, "properties").get(0), "maven.test.skip"))
+                .as("no test compiled when the tests are skipped").isEqualTo("${skipTests}");
     }
 
     @ParameterizedTest(name = "{0}")
