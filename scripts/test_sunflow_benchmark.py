@@ -42,7 +42,7 @@ def test_rays_per_pixel_from_either_sides_statistics():
                "SCENE  info  :       shadow          3000000      8.33         4.53       62.55%\n"
                "SCENE  info  :       total           4795920     13.32         7.24      100.00%\n")
     assert sb.rays_per_pixel(sunflow, False, 360000) == pytest.approx((662808 / 360000, 4795920 / 360000))
-    ours = "render x 600x600 [NONE] 1.082 s, 360000 px, rays: camera 360000, shadow 1744211, secondary 400643, 1.00"
+    ours = "render x: 1.082 s, 600x600 [NONE] of scene 's', 360000 px, rays: camera 360000, shadow 1744211, secondary 400643, 1.00"
     assert sb.rays_per_pixel(ours, True, 360000) == pytest.approx((1.0, 2504854 / 360000))
     assert sb.rays_per_pixel("nothing", True, 1) is None and sb.rays_per_pixel("nothing", False, 1) is None
 

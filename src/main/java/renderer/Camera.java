@@ -177,8 +177,8 @@ public final class Camera {
 
     /**
      * Renders the image into the image writer and returns what it did; prints the one-line
-     * summary unless silenced ({@code render NAME WxH [sampling] of scene 'SCENE': figures}, the figures being
-     * {@link RenderStats#toString()}). NAME is the image writer's name or, for a writer named only
+     * summary unless silenced ({@code render NAME: TIME, WxH [sampling] of scene 'SCENE', figures},
+     * the time and figures being those of {@link RenderStats#toString()}). NAME is the image writer's name or, for a writer named only
      * when written ({@link Builder#setResolution}), the calling test method's
      * ({@code SpheresTest.twoSpheres()}). While a JDK Flight Recorder recording runs, the render
      * is also a {@code raytracer.Render} event.
@@ -196,8 +196,8 @@ public final class Camera {
         RenderStats stats = new RenderLoop(view, sampling, execution, rayTracer, imageWriter).render(name);
         if (event != null) event.commit(name, scene, imageWriter, sampling.antiAliasing(), stats);
         renderListener.accept(this, stats);
-        if (summary) execution.output().println("render " + name + " " + imageWriter.getNx() + "x"
-                + imageWriter.getNy() + " [" + describe() + "] of scene '" + scene + "': " + stats + rayTracer.walk());
+        if (summary) execution.output().println("render " + name + ": " + stats.time() + ", " + imageWriter.getNx() + "x"
+                + imageWriter.getNy() + " [" + describe() + "] of scene '" + scene + "', " + stats.figures() + rayTracer.walk());
         return stats;
     }
 
@@ -290,7 +290,8 @@ public final class Camera {
     /**
      * Writes the PNG (a {@code raytracer.ImageWrite} JFR event while a recording runs), tells a
      * render listener that is also a {@link WriteListener}, and unless silenced prints a line with
-     * the image's name, the file and the time it took.
+     * the image's name, the file and the time it took, and says so when nothing was drawn on the
+     * image (no render or grid: the PNG is all black).
      */
     private Camera write(Path file) {
         String name = getImageLabel();
@@ -299,7 +300,8 @@ public final class Camera {
         imageWriter.writeToImage(target); // the public method: a subclass of ImageWriter may override it
         double seconds = (System.nanoTime() - start) / 1e9;
         if (renderListener instanceof WriteListener listener) listener.written(this, target, seconds);
-        if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", name, target, seconds));
+        if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", name, target, seconds)
+                + (imageWriter.isBlank() ? " (" + ImageWriter.BLANK + ")" : ""));
         return this;
     }
 

@@ -47,6 +47,12 @@ public class ImageWriter {
     private final int nY;
     /** Packed 0xRRGGBB per pixel, row-major. */
     private final int[] pixels;
+    /**
+     * Whether any pixel was written: a write of an image nothing was drawn on (a render or grid
+     * forgotten) says so rather than leave an all-black PNG unexplained. Set by every pixel write,
+     * by any thread; read after the render, whose end orders the workers' writes before it.
+     */
+    private boolean drawn;
 
     /**
      * @param imageName the file name without ".png"; may contain sub-folders ("golden/spheres")
@@ -266,6 +272,7 @@ public class ImageWriter {
      */
     public void writePixel(int x, int y, Color color) {
         pixels[index(x, y)] = color.toRgb();
+        drawn = true;
     }
 
     /**
@@ -292,6 +299,7 @@ public class ImageWriter {
             throw new IndexOutOfBoundsException("tile of " + width + "x" + height + " pixels at (" + x + "," + y
                     + ") with " + rgb.length + " values does not fit the " + nX + "x" + nY + " image");
         for (int row = 0; row < height; ++row) System.arraycopy(rgb, row * width, pixels, (y + row) * nX + x, width);
+        drawn = true;
     }
 
     /**
@@ -321,23 +329,43 @@ public class ImageWriter {
     }
 
     /**
-     * Writes images/&lt;name&gt;.png, creating folders as needed.
+     * Writes images/&lt;name&gt;.png, creating folders as needed. Of an image nothing was drawn on
+     * (no pixel written), it says so in one line on standard error, and writes the black PNG.
      *
      * @throws IllegalStateException for a writer made without a name
      */
     public void writeToImage() {
-        writeToImage(getPath());
+        Path file = getPath();
+        warnIfBlank(file);
+        writeToImage(file);
     }
 
     /**
      * Writes images/&lt;imageName&gt;.png, creating folders as needed (the 2024–25 course's form;
-     * the name given here wins over one given to the constructor).
+     * the name given here wins over one given to the constructor). Of an image nothing was drawn
+     * on, it says so in one line on standard error, as {@link #writeToImage()} does.
      *
      * @param imageName the file name without ".png"; may contain sub-folders
      * @throws IllegalArgumentException for a blank name
      */
     public void writeToImage(String imageName) {
-        writeToImage(pathOf(imageName));
+        Path file = pathOf(imageName);
+        warnIfBlank(file);
+        writeToImage(file);
+    }
+
+    /** A student's own write ({@code Camera} says the same in its write line instead). */
+    private void warnIfBlank(Path file) {
+        if (!drawn) System.err.println("write " + file + ": " + BLANK);
+    }
+
+    /** What a write of an image nothing was drawn on adds to its line. */
+    static final String BLANK = "nothing was drawn on this image (no render, grid or writePixel before the write):"
+            + " its PNG is all black";
+
+    /** @return whether no pixel was written yet: its PNG would be all black */
+    boolean isBlank() {
+        return !drawn;
     }
 
     /** images/&lt;imageName&gt;.png, after checking the name (not blank). */

@@ -34,18 +34,28 @@ public record RenderStats(double seconds, long pixels, long cameraRays, long sha
     }
 
     /**
-     * The figures of the summary line (not the record's usual {@code RenderStats[seconds=…]} form):
+     * The figures of a render (not the record's usual {@code RenderStats[seconds=…]} form):
      * {@code 0.122 s, 250000 px, rays: camera 311790, shadow 204158, secondary 201014, 1.25 camera
-     * rays per px, 5.89 Mrays/s (all rays), 2 threads, prepared in 0.000 s}. {@link Camera#render()}
-     * prints it after the image's name, size and sampling settings.
+     * rays per px, 5.89 Mrays/s (all rays), 2 threads, prepared in 0.000 s}. The summary line
+     * {@link Camera#render()} prints has the same figures, the time first after the image's name.
      *
      * @return the figures in words, in {@link Locale#ROOT} number format
      */
     @Override
     public String toString() {
+        return time() + ", " + figures();
+    }
+
+    /** The wall time, as the summary line starts with it: {@code 0.122 s}. */
+    String time() {
+        return String.format(Locale.ROOT, "%.3f s", seconds);
+    }
+
+    /** Every figure but the time, as the summary line ends with them. */
+    String figures() {
         return String.format(Locale.ROOT,
-                "%.3f s, %d px, rays: camera %d, shadow %d, secondary %d, %.2f camera rays per px, %.2f Mrays/s (all rays), %s, prepared in %.3f s",
-                seconds, pixels, cameraRays, shadowRays, secondaryRays, samplesPerPixel(), mraysPerSecond(),
+                "%d px, rays: camera %d, shadow %d, secondary %d, %.2f camera rays per px, %.2f Mrays/s (all rays), %s, prepared in %.3f s",
+                pixels, cameraRays, shadowRays, secondaryRays, samplesPerPixel(), mraysPerSecond(),
                 threads == 0 ? "calling thread" : threads == 1 ? "1 thread" : threads + " threads", prepareSeconds);
     }
 

@@ -111,6 +111,22 @@ class ImageWriterTest {
     }
 
     @Nested
+    @DisplayName("an image nothing was drawn on")
+    class Blank {
+        @Test
+        @DisplayName("is blank until a pixel or a tile is written")
+        void blankUntilDrawn() {
+            ImageWriter byPixel = new ImageWriter("blank", 3, 2);
+            assertThat(byPixel.isBlank()).isTrue();
+            byPixel.writePixel(2, 1, new primitives.Color(0, 0, 0)); // black, but drawn
+            assertThat(byPixel.isBlank()).isFalse();
+            ImageWriter byTile = new ImageWriter("blank", 3, 2);
+            byTile.writeTile(0, 0, 1, 1, new int[] { 0 });
+            assertThat(byTile.isBlank()).isFalse();
+        }
+    }
+
+    @Nested
     @DisplayName("writing the PNG")
     class Writing {
         /** A folder under images/ no other test uses; deleted after each test. */

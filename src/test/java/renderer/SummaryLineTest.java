@@ -50,14 +50,14 @@ class SummaryLineTest {
         @DisplayName("2023–24: the name given to the ImageWriter")
         void writerName() {
             assertThat(printed(b -> b.setImageWriter(new ImageWriter("named", 4, 4)).build().render()))
-                    .singleElement().asString().startsWith("render named 4x4 [NONE, ");
+                    .singleElement().asString().matches("render named: \\d+\\.\\d{3} s, 4x4 \\[NONE, .*");
         }
 
         @Test
         @DisplayName("2024–25 (setResolution, named only when written): the calling test method")
         void testName() {
             assertThat(printed(b -> b.setResolution(4, 4).build().render()))
-                    .singleElement().asString().startsWith("render SummaryLineTest.Naming.testName() 4x4 [NONE, ");
+                    .singleElement().asString().startsWith("render SummaryLineTest.Naming.testName(): ").contains(" s, 4x4 [NONE, ");
         }
 
         @ParameterizedTest(name = "render {0}")
@@ -65,7 +65,7 @@ class SummaryLineTest {
         @DisplayName("a parameterized test is a test too")
         void parameterizedTestName(int run) {
             assertThat(printed(b -> b.setResolution(4, 4).build().render())).singleElement().asString()
-                    .startsWith("render SummaryLineTest.Naming.parameterizedTestName() 4x4 ");
+                    .startsWith("render SummaryLineTest.Naming.parameterizedTestName(): ").contains(" s, 4x4 [");
         }
 
         @Test
@@ -75,19 +75,19 @@ class SummaryLineTest {
             Thread main = new Thread(() -> lines.set(printed(b -> b.setResolution(4, 4).build().render())));
             main.start();
             main.join();
-            assertThat(lines.get()).singleElement().asString().startsWith("render (unnamed) 4x4 ");
+            assertThat(lines.get()).singleElement().asString().startsWith("render (unnamed): ").contains(" s, 4x4 [");
         }
 
         @Test
         @DisplayName("the scene's name follows the settings; a camera given no tracer renders the builder's empty scene")
         void sceneName() {
             assertThat(printed(b -> b.setRayTracer(new RayTracerBasic(new Scene("Two spheres"))).build().render()))
-                    .singleElement().asString().startsWith("render SummaryLineTest.Naming.sceneName() 1x1 [NONE, ")
-                    .contains(", seed 0] of scene 'Two spheres': ");
+                    .singleElement().asString().startsWith("render SummaryLineTest.Naming.sceneName(): ").contains(" s, 1x1 [NONE, ")
+                    .contains(", seed 0] of scene 'Two spheres', 1 px, ");
             ByteArrayOutputStream bytes = new ByteArrayOutputStream();
             Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), Vector.AXIS_Y).setVpSize(1, 1)
                     .setVpDistance(1).setOutput(new PrintStream(bytes, true, StandardCharsets.UTF_8)).build().render();
-            assertThat(bytes.toString(StandardCharsets.UTF_8)).contains("] of scene 'empty scene': ");
+            assertThat(bytes.toString(StandardCharsets.UTF_8)).contains("] of scene 'empty scene', ");
         }
     }
 
@@ -102,7 +102,7 @@ class SummaryLineTest {
             List<String> lines = printed(b -> b.setImageWriter(new ImageWriter("summary/written", 4, 4)).build()
                     .renderImage().writeToImage());
             assertThat(lines).hasSize(2);
-            assertThat(lines.get(0)).startsWith("render summary/written 4x4 ");
+            assertThat(lines.get(0)).startsWith("render summary/written: ").contains(" s, 4x4 [");
             assertThat(lines.get(1)).matches("write summary/written: \\S+ in \\d+\\.\\d{3} s")
                     .contains(" " + file.toAbsolutePath() + " in ");
             assertThat(file).isRegularFile();
@@ -115,8 +115,30 @@ class SummaryLineTest {
             Path file = Path.of("images", "summary", "5785.png");
             List<String> lines = printed(b -> b.setResolution(4, 4).build().renderImage().writeToImage("summary/5785"));
             assertThat(lines).hasSize(2);
-            assertThat(lines.get(0)).startsWith("render SummaryLineTest.Writing.courseYear5785() 4x4 ");
+            assertThat(lines.get(0)).startsWith("render SummaryLineTest.Writing.courseYear5785(): ");
             assertThat(lines.get(1)).startsWith("write SummaryLineTest.Writing.courseYear5785(): " + file.toAbsolutePath() + " in ");
+            Files.delete(file);
+        }
+
+        @Test
+        @DisplayName("a write of an image nothing was drawn on says so on its line, and still writes the PNG")
+        void blankImage() throws Exception {
+            Path file = Path.of("images", "summary", "blank.png");
+            List<String> lines = printed(b -> b.setImageWriter(new ImageWriter("summary/blank", 4, 4)).build().writeToImage());
+            assertThat(lines).singleElement().asString().startsWith("write summary/blank: ")
+                    .endsWith(" s (nothing was drawn on this image (no render, grid or writePixel before the write):"
+                            + " its PNG is all black)");
+            assertThat(file).isRegularFile();
+            Files.delete(file);
+        }
+
+        @Test
+        @DisplayName("the course's grid test draws only the grid: its write line is the usual one")
+        void gridOnly() throws Exception {
+            Path file = Path.of("images", "summary", "grid.png");
+            List<String> lines = printed(b -> b.setImageWriter(new ImageWriter("summary/grid", 4, 4)).build()
+                    .printGrid(2, new primitives.Color(255, 0, 0)).writeToImage());
+            assertThat(lines).singleElement().asString().matches("write summary/grid: \\S+ in \\d+\\.\\d{3} s");
             Files.delete(file);
         }
 

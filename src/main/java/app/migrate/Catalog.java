@@ -59,6 +59,16 @@ final class Catalog {
     }
 
     /**
+     * Whether a class is one of the course's by name and package ({@code geometries.impl.RadialGeometry}):
+     * kept where the library has no class of its name, it is still the course's, not the student's own.
+     */
+    static boolean isCourseClassInCoursePackage(String className) {
+        String name = libraryName(className);
+        int dot = name.lastIndexOf('.');
+        return dot > 0 && COURSE_PACKAGES.contains(name.substring(0, dot)) && COURSE.contains(name.substring(dot + 1));
+    }
+
+    /**
      * The library's name for a course class the student keeps in another course package
      * ({@code lighting.Material} → {@code primitives.Material}), or null when it is no such class.
      */

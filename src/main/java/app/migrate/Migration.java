@@ -144,11 +144,11 @@ public final class Migration {
                     + " renderer.Camera, in " + Layout.names(d, layout.mainRoots()) + "): nothing to migrate");
         if (!allowDirty && !dryRun) requireCleanGit(d);
         if (!dryRun) requireWritable(d, files, layout);
-        List<Path> junit = new ArrayList<>(tools.junit());
+        List<Path> junit = new ArrayList<>(tools.junitFetchedIfMissing());
         if (junit.isEmpty() && layout.jars().stream().noneMatch(j -> j.getFileName().toString().startsWith("junit-jupiter-api")
                 && Files.isRegularFile(j)))
-            throw new MigrationException("JUnit 5 is not in " + tools.mavenRepository() + " (the library's own build puts it"
-                    + " there): run mvn -q install -DskipTests in the library's clone first, then migrate again");
+            throw new MigrationException("JUnit 5 is not in " + tools.mavenRepository() + " and Maven could not fetch it"
+                    + " (offline?): run mvn -q install in the library's clone first (its tests fetch JUnit), then migrate again");
 
         List<Libraries.Library> libraries = Libraries.of(d, tools.mavenRepository(), layout.jars(), files);
         Map<Libraries.Library, Path> resolved = new LinkedHashMap<>();
@@ -257,8 +257,14 @@ public final class Migration {
                 r.add("Moved to " + Layout.BACKUP + "/ too (your own classes, named as classes inside the library, beside which they"
                         + " cannot stay; the library's BVH is always on in place of one of yours): " + String.join(", ",
                                 namesakes.stream().map(SourceFile::className).toList()));
-            r.add("Kept (your own classes; they compile against the library): " + extras.size());
-            extras.forEach(k -> r.add("  " + d.relativize(k.target).toString().replace('\\', '/')));
+            List<Kept> keptCourse = extras.stream().filter(k -> Catalog.isCourseClassInCoursePackage(k.file.className())).toList();
+            if (!keptCourse.isEmpty()) {
+                r.add("Kept (course classes the library has no class for; they compile against it): " + keptCourse.size());
+                keptCourse.forEach(k -> r.add("  " + d.relativize(k.target).toString().replace('\\', '/')));
+            }
+            r.add("Kept (your own classes; they compile against the library): " + (extras.size() - keptCourse.size()));
+            extras.stream().filter(k -> !keptCourse.contains(k))
+                    .forEach(k -> r.add("  " + d.relativize(k.target).toString().replace('\\', '/')));
             if (!setAside.isEmpty()) {
                 r.add("Set aside into " + SET_ASIDE + " (they do not compile against the library): " + setAside.size());
                 setAside.forEach((f, why) -> r.add("  " + why));
@@ -283,9 +289,12 @@ public final class Migration {
                     + build.junit() + ", Java release " + build.release() + ", every test class runs whatever its name)");
             if (layout.iml() != null)
                 r.add(d.relativize(layout.iml()) + ": the library jar added (from " + tools.mavenRepository() + ")");
-            if (!Files.isRegularFile(tools.installedJar()))
-                r.add("The library is not installed in " + tools.mavenRepository() + " yet: run mvn -q install -DskipTests"
-                        + " in its clone first (and again after pulling a newer version)");
+            if (!Files.isRegularFile(tools.installedJar())) {
+                // Without it, mvn test ends in Maven's "Could not find artifact": the step comes first.
+                r.add("The library is not installed in " + tools.mavenRepository() + " yet (mvn test would say \"Could not find"
+                        + " artifact " + tools.coordinates() + "\"); install it first, and again after pulling a newer version:");
+                r.add("  cd " + tools.libraryClone().map(Path::toString).orElse("<the raytracer clone>") + " && mvn -q install -DskipTests");
+            }
             r.add("Next: cd " + d + " && mvn test   (IntelliJ: Build > Rebuild Project, then run your tests)");
             r.add("Undo: raytracer migrate --undo " + d + (Files.isDirectory(d.resolve(".git"))
                     ? "   (or with git: git status lists every change)" : ""));

@@ -65,6 +65,21 @@ record Toolchain(Path library, List<Path> junit, Path mavenRepository, String co
     }
 
     /**
+     * JUnit 5's API jars a course test compiles against, fetched into the repository first when
+     * some are missing: the library's first build ({@code mvn package -DskipTests}) resolves
+     * JUnit's API but not its parameterized tests, which most course projects use.
+     *
+     * @return the jars found, all of them unless there was no Maven to ask or it could not fetch
+     *         them (offline): the caller says what is missing
+     */
+    List<Path> junitFetchedIfMissing() {
+        if (junit.size() == JUNIT_ARTIFACTS.size()) return junit;
+        // the parameterized-tests artifact brings the API, platform commons, opentest4j and apiguardian with it
+        if (fetch("org.junit.jupiter:junit-jupiter-params:" + junitVersion, true).isEmpty()) return junit;
+        return junitJars(mavenRepository, junitVersion);
+    }
+
+    /**
      * Fetches {@code group:artifact:version} into the repository with Maven, which a migrated
      * project needs anyway for {@code mvn test} (and which would fetch it then).
      *
@@ -72,10 +87,15 @@ record Toolchain(Path library, List<Path> junit, Path mavenRepository, String co
      *         no such artifact): the caller names the library as missing
      */
     Optional<Path> fetch(String coordinates) {
+        return fetch(coordinates, false);
+    }
+
+    /** {@link #fetch(String)}, with the artifact's own dependencies when {@code transitive}. */
+    private Optional<Path> fetch(String coordinates, boolean transitive) {
         Path jar = jarOf(coordinates);
         if (maven == null) return Optional.empty();
         try {
-            Process p = new ProcessBuilder(maven, "-q", "-B", "dependency:get", "-Dartifact=" + coordinates, "-Dtransitive=false",
+            Process p = new ProcessBuilder(maven, "-q", "-B", "dependency:get", "-Dartifact=" + coordinates, "-Dtransitive=" + transitive,
                     "-Dmaven.repo.local=" + mavenRepository).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD)
                     .start();
             p.getOutputStream().close();
@@ -100,6 +120,17 @@ record Toolchain(Path library, List<Path> junit, Path mavenRepository, String co
     /** Where Maven keeps {@code group:artifact:version}'s jar in a local repository. */
     static Path repositoryJar(Path repository, String group, String artifact, String version) {
         return repository.resolve(group.replace('.', '/')).resolve(artifact).resolve(version).resolve(artifact + "-" + version + ".jar");
+    }
+
+    /**
+     * The library's clone, when this process runs from one (its {@code target/classes} or
+     * {@code target/raytracer.jar}, beside its pom): where {@code mvn install} puts it into the
+     * local repository.
+     */
+    Optional<Path> libraryClone() {
+        Path target = library.toAbsolutePath().getParent();
+        if (target == null || !target.getFileName().toString().equals("target")) return Optional.empty();
+        return Optional.ofNullable(target.getParent()).filter(c -> Files.isRegularFile(c.resolve("pom.xml")));
     }
 
     /** Where the library's jar lies in the local repository (it may not be installed yet). */

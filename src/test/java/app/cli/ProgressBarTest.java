@@ -35,9 +35,9 @@ class ProgressBarTest {
     @DisplayName("another line ends the bar's line first and passes unchanged")
     void otherLines() {
         camera.println("render x:  10.0%  10/100 px  elapsed 0.1 s  ETA 0.9 s");
-        camera.println("render x 10x10 [NONE]: 0.100 s");
+        camera.println("render x: 0.100 s, 10x10 [NONE] of scene 's', 100 px");
         camera.println("more");
-        assertThat(shown()).endsWith("ETA 0.9 s\nrender x 10x10 [NONE]: 0.100 s\nmore\n");
+        assertThat(shown()).endsWith("ETA 0.9 s\nrender x: 0.100 s, 10x10 [NONE] of scene 's', 100 px\nmore\n");
     }
 
     @Test

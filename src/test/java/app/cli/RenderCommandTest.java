@@ -234,7 +234,7 @@ class RenderCommandTest {
             Path png = dir.resolve("out.png");
             Run r = run(small().toString(), "-o", png.toString());
             assertThat(r.exitCode()).isZero();
-            assertThat(r.out()).contains("render small 40x20 [NONE, bvh on, beam 3, shadow samples 3, seed 0]")
+            assertThat(r.out()).contains(" s, 40x20 [NONE, bvh on, beam 3, shadow samples 3, seed 0]")
                     .contains("1 thread,").contains("wrote " + png + " (40x20)");
             assertThat(image(png).getWidth()).isEqualTo(40);
             assertThat(image(png).getHeight()).isEqualTo(20);
@@ -275,7 +275,7 @@ class RenderCommandTest {
                             + "<anti-aliasing mode=\"corners\" grid=\"2 3\"/></render>"));
             Run r = run(file.toString(), "-o", dir.resolve("out.png").toString(), "--aa", "random", "--width", "8");
             assertThat(r.exitCode()).isZero();
-            assertThat(r.out()).contains("render small 8x4 [RANDOM 2x3, bvh on, beam 3, shadow samples 3, seed 4]");
+            assertThat(r.out()).contains(" s, 8x4 [RANDOM 2x3, bvh on, beam 3, shadow samples 3, seed 4]");
         }
 
         @Test
@@ -321,7 +321,7 @@ class RenderCommandTest {
         Path png = dir.resolve("showcase.png");
         Run r = run("-o", png.toString(), "--width", "16", "--height", "16", "--aa", "none");
         assertThat(r.exitCode()).isZero();
-        assertThat(r.out()).contains("render showcase 16x16 [NONE,");
+        assertThat(r.out()).contains(" s, 16x16 [NONE,").contains("render showcase: ");
 
         ImageWriter expected = new ImageWriter("showcase", 16, 16);
         Camera.getBuilder().setLocation(Showcase.CAMERA_LOCATION).setDirection(Showcase.CAMERA_TARGET, Vector.AXIS_Y)
@@ -351,7 +351,7 @@ class RenderCommandTest {
             }
             assertThat(percents).hasSizeGreaterThanOrEqualTo(2).isSorted().last().isEqualTo(100.0);
             assertThat(r.out()).doesNotContain("\r");
-            assertThat(lines.get(lines.size() - 2)).startsWith("render small 40x20 [");
+            assertThat(lines.get(lines.size() - 2)).startsWith("render small: ").contains(" s, 40x20 [");
             assertThat(lines.get(lines.size() - 1)).startsWith("wrote ");
         }
 
@@ -365,7 +365,7 @@ class RenderCommandTest {
             List<String> lines = List.of(r.out().split("\n")); // not lines(): it would split at '\r'
             assertThat(lines).hasSize(3);
             assertThat(lines.get(0)).startsWith("\rrender small [");
-            assertThat(lines.get(1)).startsWith("render small 40x20 [");
+            assertThat(lines.get(1)).startsWith("render small: ").contains(" s, 40x20 [");
             assertThat(lines.get(2)).startsWith("wrote ");
         }
 

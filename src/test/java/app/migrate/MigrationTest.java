@@ -87,6 +87,15 @@ class MigrationTest {
         }
 
         @Test
+        @DisplayName("says, before the next step, how to install the library when the Maven repository lacks it")
+        void installStep() {
+            Path clone = app.Project.file("pom.xml").toAbsolutePath().getParent();
+            assertThat(printed()).contains("yet (mvn test would say \"Could not find artifact io.github.raytracer:raytracer:",
+                    "install it first, and again after pulling a newer version:\n  cd " + clone + " && mvn -q install -DskipTests\n"
+                            + "Next: cd ");
+        }
+
+        @Test
         @DisplayName("keeps the left-out test out of IntelliJ's compile too")
         void excludesInIdea() throws IOException {
             assertThat(read(".idea/compiler.xml")).contains("<excludeFromCompile>",

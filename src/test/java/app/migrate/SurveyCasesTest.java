@@ -112,6 +112,11 @@ class SurveyCasesTest {
             assertThat(dir.resolve("course-backup/src/geometries/api/Intersectable.java")).exists();
             assertThat(read("src/geometries/Cube.java")).contains("package geometries;");
             assertThat(printed()).contains("Tests kept: 1 files").doesNotContain("left out of the build");
+            // RadialGeometry (2023–25) the library has no class for: kept, and called the course's
+            assertThat(printed()).contains("Kept (course classes the library has no class for; they compile against it): 1\n"
+                    + "  src/geometries/RadialGeometry.java\n"
+                    + "Kept (your own classes; they compile against the library): 1\n"
+                    + "  src/geometries/Cube.java\n");
         }
     }
 
