@@ -3,9 +3,12 @@ package app.migrate;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.nio.file.StandardCopyOption;
+import java.nio.file.attribute.PosixFileAttributeView;
+import java.nio.file.attribute.PosixFilePermissions;
 import java.security.MessageDigest;
 import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
@@ -38,6 +41,17 @@ final class Manifest {
             String[] f = line.split("\t", -1);
             if (f.length != 5 || !List.of(MOVE, REPLACE, CREATE).contains(f[0]))
                 throw new MigrationException(FILE + " is damaged (a line reads \"" + line + "\"): undo by hand or with git");
+            // Every path a line names is one --undo may move, write or delete: a plain path inside
+            // the project, whoever wrote the file (nothing is changed when one is not).
+            for (int i = 1; i <= 3; i++) {
+                boolean required = i == 1 || (i == 2 && !f[0].equals(CREATE)) || (i == 3 && f[0].equals(REPLACE));
+                if (!required && f[i].isEmpty()) continue;
+                String problem = Inside.formProblem(f[i]);
+                if (problem != null)
+                    throw new MigrationException(FILE + " names " + (f[i].isEmpty() ? "no path" : f[i]) + ", " + problem
+                            + ": --undo changes files inside the project only, and this manifest is not one raytracer migrate wrote"
+                            + " (nothing was changed; undo by hand or with git)");
+            }
             return new Entry(f[0], f[1], f[2], f[3], f[4]);
         }
     }
@@ -55,9 +69,9 @@ final class Manifest {
 
     /** Moves a file, making the folders it needs. */
     void move(String from, String to) throws IOException {
-        Path target = dir.resolve(to);
+        Path target = Inside.resolve(dir, to);
         Files.createDirectories(target.getParent());
-        Files.move(dir.resolve(from), target);
+        Files.move(Inside.resolve(dir, from), target);
         entries.add(new Entry(Entry.MOVE, from, to, "", sha(target)));
     }
 
@@ -72,18 +86,19 @@ final class Manifest {
 
     /** As {@link #replace(String, String, String, String)}, with the new content as bytes (a source in its own encoding). */
     void replace(String path, String to, String backup, byte[] content) throws IOException {
-        Path original = dir.resolve(path), target = dir.resolve(to), kept = dir.resolve(backup);
+        Path original = Inside.resolve(dir, path), target = Inside.resolve(dir, to), kept = Inside.resolve(dir, backup);
         Files.createDirectories(kept.getParent());
-        Files.copy(original, kept, StandardCopyOption.REPLACE_EXISTING);
-        write(target, content);
+        // the original as it is, mode and all; a link stays a link (kept as the link, not what it points to)
+        Files.copy(original, kept, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.COPY_ATTRIBUTES, LinkOption.NOFOLLOW_LINKS);
+        write(target, content, original);
         if (!target.equals(original)) Files.delete(original);
         entries.add(new Entry(Entry.REPLACE, path, to, backup, sha(target)));
     }
 
     /** Creates a file that was not there. */
     void create(String path, String content) throws IOException {
-        Path target = dir.resolve(path);
-        if (Files.exists(target)) throw new IOException(path + " exists");
+        Path target = Inside.resolve(dir, path);
+        if (Files.exists(target, LinkOption.NOFOLLOW_LINKS)) throw new IOException(path + " exists");
         write(target, content);
         entries.add(new Entry(Entry.CREATE, path, "", "", sha(target)));
     }
@@ -98,7 +113,7 @@ final class Manifest {
     void save() throws IOException {
         StringBuilder text = new StringBuilder(HEADER).append('\n');
         for (Entry e : entries) text.append(e.line()).append('\n');
-        write(dir.resolve(FILE), text.toString());
+        write(Inside.resolve(dir, FILE), text.toString());
     }
 
     /** Reads the manifest of an earlier migration of {@code dir}. */
@@ -128,7 +143,8 @@ final class Manifest {
             else if (!sha(file).equals(e.sha())) found.add(now + " changed since the migration");
             else if (!e.kind().equals(Entry.CREATE) && !e.path().equals(e.to()) && Files.exists(dir.resolve(e.path())))
                 found.add(e.path() + " is there again");
-            if (e.kind().equals(Entry.REPLACE) && !Files.isRegularFile(dir.resolve(e.backup())))
+            // the original may be a link, kept as the link (whose target, relative, need not resolve from there)
+            if (e.kind().equals(Entry.REPLACE) && !Files.exists(dir.resolve(e.backup()), LinkOption.NOFOLLOW_LINKS))
                 found.add(e.backup() + " (the original of " + e.path() + ") is gone");
         }
         return found;
@@ -142,31 +158,47 @@ final class Manifest {
     private void reverse(Entry e) throws IOException {
         switch (e.kind()) {
             case Entry.MOVE -> {
-                Path back = dir.resolve(e.path());
+                Path back = Inside.resolve(dir, e.path());
                 Files.createDirectories(back.getParent());
-                Files.move(dir.resolve(e.to()), back);
+                Files.move(Inside.resolve(dir, e.to()), back);
             }
             case Entry.REPLACE -> {
-                Path original = dir.resolve(e.path());
+                Path original = Inside.resolve(dir, e.path());
                 Files.createDirectories(original.getParent());
-                Files.copy(dir.resolve(e.backup()), original, StandardCopyOption.REPLACE_EXISTING);
-                if (!e.to().equals(e.path())) Files.deleteIfExists(dir.resolve(e.to()));
-                Files.deleteIfExists(dir.resolve(e.backup()));
+                // as it was: its mode, and a link as the link; what is in the way is replaced, not written through
+                Files.copy(Inside.resolve(dir, e.backup()), original, StandardCopyOption.REPLACE_EXISTING,
+                        StandardCopyOption.COPY_ATTRIBUTES, LinkOption.NOFOLLOW_LINKS);
+                if (!e.to().equals(e.path())) Files.deleteIfExists(Inside.resolve(dir, e.to()));
+                Files.deleteIfExists(Inside.resolve(dir, e.backup()));
             }
-            default -> Files.deleteIfExists(dir.resolve(e.path()));
+            default -> Files.deleteIfExists(Inside.resolve(dir, e.path()));
         }
     }
 
     /** Writes through a temporary file beside the target, so no half-written file is ever left. */
     static void write(Path target, String content) throws IOException {
-        write(target, content.getBytes(StandardCharsets.UTF_8));
+        write(target, content.getBytes(StandardCharsets.UTF_8), target);
     }
 
-    static void write(Path target, byte[] content) throws IOException {
+    /**
+     * Writes {@code content} into a temporary file of its own beside {@code target} (made new,
+     * with a name no one could have planted a link under), then renames it over the target: a
+     * link at the target is replaced, never written through. The file gets the mode of
+     * {@code modeOf} where that is a regular file (the original of a rewritten file), else
+     * {@code rw-r--r--}.
+     */
+    static void write(Path target, byte[] content, Path modeOf) throws IOException {
         Files.createDirectories(target.getParent());
-        Path temp = target.resolveSibling(target.getFileName() + ".migrate-tmp");
-        Files.write(temp, content);
-        Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        Path temp = Files.createTempFile(target.getParent(), "." + target.getFileName(), ".migrate-tmp");
+        try {
+            Files.write(temp, content);
+            if (Files.getFileStore(temp).supportsFileAttributeView(PosixFileAttributeView.class))
+                Files.setPosixFilePermissions(temp, Files.isRegularFile(modeOf, LinkOption.NOFOLLOW_LINKS)
+                        ? Files.getPosixFilePermissions(modeOf, LinkOption.NOFOLLOW_LINKS) : PosixFilePermissions.fromString("rw-r--r--"));
+            Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+        } finally {
+            Files.deleteIfExists(temp);
+        }
     }
 
     static String sha(Path file) throws IOException {

@@ -97,8 +97,19 @@ public final class Migration {
      * @throws MigrationException refused or taken back, with the one line to print; nothing changed
      */
     public boolean migrate(Path dir, boolean allowDirty, boolean dryRun, String encoding) throws MigrationException {
+        if (dryRun) return migrateHeld(dir, allowDirty, true, encoding);
+        Path d = dir.toAbsolutePath().normalize();
+        if (!Files.isDirectory(d)) throw new MigrationException(d + " is not a folder");
+        try (RunLock held = RunLock.take(d)) {
+            return migrateHeld(dir, allowDirty, false, encoding);
+        }
+    }
+
+    /** The migration, with the project's lock held unless it is a dry run. */
+    private boolean migrateHeld(Path dir, boolean allowDirty, boolean dryRun, String encoding) throws MigrationException {
         Layout named = Layout.read(dir, tools.mavenRepository());
         Path d = named.dir();
+        requireInside(d, named);
         List<SourceFile> files;
         List<Path> strays;
         Layout layout;
@@ -190,6 +201,12 @@ public final class Migration {
     public void undo(Path dir) throws MigrationException {
         Path d = dir.toAbsolutePath().normalize();
         if (!Files.isDirectory(d)) throw new MigrationException(d + " is not a folder");
+        try (RunLock held = RunLock.take(d)) {
+            undoHeld(d);
+        }
+    }
+
+    private void undoHeld(Path d) throws MigrationException {
         Manifest manifest = Manifest.load(d);
         try {
             List<String> conflicts = manifest.conflicts();
@@ -603,7 +620,7 @@ public final class Migration {
                 }
             }
             manifest.save();
-            Manifest.write(d.resolve(REPORT), String.join("\n", report) + "\n");
+            Manifest.write(Inside.resolve(d, REPORT), String.join("\n", report) + "\n");
         } catch (IOException | MigrationException | RuntimeException e) {
             try {
                 manifest.rollBack();
@@ -671,6 +688,26 @@ public final class Migration {
             long n = status.lines().count();
             throw new MigrationException(d + " has uncommitted changes (" + n + " in git status): commit or stash them first,"
                     + " so that git can show and take back what the migration changes, or pass --allow-dirty (nothing was changed)");
+        }
+    }
+
+    /**
+     * Refuses a project whose source folders lie outside it ({@code $MODULE_DIR$/../shared-src} in
+     * an {@code .iml}, {@code <sourceDirectory>../shared</sourceDirectory>}, or a link out): the
+     * migration moves and rewrites files in them, and it changes nothing outside the project.
+     */
+    private static void requireInside(Path d, Layout layout) throws MigrationException {
+        for (Path root : Stream.concat(layout.mainRoots().stream(), layout.testRoots().stream()).toList()) {
+            boolean inside;
+            try {
+                inside = Inside.contains(d, root);
+            } catch (IOException e) {
+                throw new MigrationException("cannot read " + root + ": " + e.getMessage(), e);
+            }
+            if (!inside)
+                throw new MigrationException("the source folder " + root + (layout.iml() != null ? " (of " + d.relativize(layout.iml()) + ")"
+                        : layout.pom() != null ? " (of pom.xml)" : "") + " lies outside " + d + ": raytracer migrate changes files inside"
+                        + " the project only; move the folder into it, or migrate the folder that holds both (nothing was changed)");
         }
     }
 
