@@ -40,12 +40,14 @@ import javax.tools.ToolProvider;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Named;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
 import org.junit.jupiter.api.TestReporter;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
 
 import app.Project;
@@ -101,6 +103,11 @@ class ReadmeExampleTest {
             docs.filter(p -> p.toString().endsWith(".md")).sorted().forEach(all::add);
             return all.stream();
         }
+    }
+
+    /** The documents as the parameterized tests' arguments, each shown by its name. */
+    static Stream<Arguments> eachDocument() throws IOException {
+        return documents().map(d -> Arguments.of(Named.of(name(d), d)));
     }
 
     /** The document's name as its tests show it: README.md, docs/student-guide.md. */
@@ -279,7 +286,7 @@ class ReadmeExampleTest {
     }
 
     @ParameterizedTest(name = "{0}")
-    @MethodSource("documents")
+    @MethodSource("eachDocument")
     @DisplayName("each Java block is a whole file: a top-level class and its imports")
     void everyJavaBlockIsAWholeFile(Path document) {
         assertThat(javaBlocks(document)).allSatisfy(block -> {
@@ -297,14 +304,14 @@ class ReadmeExampleTest {
     }
 
     @ParameterizedTest(name = "{0}")
-    @MethodSource("documents")
+    @MethodSource("eachDocument")
     @DisplayName("the Java blocks compile as printed, without a warning")
     void everyJavaBlockCompiles(Path document) throws IOException {
         assertThat(classes(document)).hasSizeLessThanOrEqualTo(javaBlocks(document).size());
     }
 
     @ParameterizedTest(name = "{0}")
-    @MethodSource("documents")
+    @MethodSource("eachDocument")
     @DisplayName("each block runs: its @Test methods pass here, or a nested test below runs it")
     void everyTestMethodPasses(Path document) throws Exception {
         for (Class<?> type : classes(document)) {
