@@ -30,7 +30,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "target" / "bench"
-# What the README suggests for a test JVM (surefire's argLine): see README, "Timing a render".
+# What the README suggests for a test JVM (surefire's argLine): see docs/student-guide.md, "Timing a render".
 TEST_JVM_OPTIONS = ["-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC"]
 
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Counts what a Spark render prints on stderr through the real spark-submit script (PyPI's pyspark),
-# on a standalone master and worker bound to 127.0.0.1 only (README, "Spark"): the command promises
+# on a standalone master and worker bound to 127.0.0.1 only (docs/spark.md): the command promises
 # its own line alone; spark-submit's JVM may add one warning of its own before the command starts
 # ("WARNING: Using incubator modules: jdk.incubator.vector").
 #
@@ -10,7 +10,7 @@
 # line per case: its exit code, stdout and stderr line counts, and stderr's lines other than that
 # warning, and for the render the executor's stderr file; exits 1 when a case prints more on stderr
 # than its own line, or that file holds more than the worker's header and the warning.
-# app.spark.SparkSubmitTest checks the same in mvn verify (RAYTRACER_SPARK_HOME; README, "Spark").
+# app.spark.SparkSubmitTest checks the same in mvn verify -Pspark (RAYTRACER_SPARK_HOME; docs/spark.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 venv=${1:-/tmp/raytracer-pyspark}

@@ -83,7 +83,7 @@ public final class CourseClassGuard {
         String names = shadowing(loader);
         return names == null ? null : "Your own course classes shadow the library's: " + names
                 + ". The library (" + location(CourseClassGuard.class) + ") cannot run with them. Move them out with raytracer"
-                + " migrate (see README 'Moving an existing course project onto the library'): it keeps your tests and your"
+                + " migrate (see docs/migrate.md): it keeps your tests and your"
                 + " own extra classes; then rebuild clean (mvn clean test, or your IDE's Rebuild Project).";
     }
 

@@ -110,8 +110,7 @@ class CourseClassGuardTest {
     /** The message, with the project's classes as the guard names them and the folders of this run. */
     private static String message(String classes, Path from) {
         return "Your own course classes shadow the library's: " + classes + " from " + from + ". The library ("
-                + LIBRARY + ") cannot run with them. Move them out with raytracer migrate (see README 'Moving an existing"
-                + " course project onto the library'): it keeps your tests and your own extra classes; then rebuild clean"
+                + LIBRARY + ") cannot run with them. Move them out with raytracer migrate (see docs/migrate.md): it keeps your tests and your own extra classes; then rebuild clean"
                 + " (mvn clean test, or your IDE's Rebuild Project).";
     }
 
@@ -151,12 +150,12 @@ class CourseClassGuardTest {
     }
 
     @Test
-    @DisplayName("the README quotes the message (folders aside) and has the section it points to")
-    void readme(@TempDir Path dir) throws Exception {
-        String readme = Files.readString(Project.file("README.md"));
-        assertThat(readme).contains("\n## Moving an existing course project onto the library\n");
-        Matcher quoted = Pattern.compile("\n(java\\.lang\\.LinkageError: Your own course classes[^\n]*)\n").matcher(readme);
-        assertThat(quoted.find()).as("the README quotes the message").isTrue();
+    @DisplayName("docs/migrate.md, the page the message points to, quotes it (folders aside)")
+    void migrateDocument(@TempDir Path dir) throws Exception {
+        String page = Files.readString(Project.file("docs", "migrate.md"));
+        assertThat(page).startsWith("# Moving an existing course project onto the library\n");
+        Matcher quoted = Pattern.compile("\n(java\\.lang\\.LinkageError: Your own course classes[^\n]*)\n").matcher(page);
+        assertThat(quoted.find()).as("docs/migrate.md quotes the message").isTrue();
         Path own = compile(dir, "primitives.Vector", "primitives.Point");
         try (URLClassLoader loader = projectLoader(own)) {
             assertThatThrownBy(() -> enter(loader, "new Scene(name)")).satisfies(e ->

@@ -140,7 +140,7 @@ public final class RenderCommand implements Callable<Integer> {
             description = { "Render on Apache Spark, byte-identical to the local render: MASTER is a Spark master URL"
                     + " (local[2], spark://HOST:7077, yarn, k8s://...) or 'submit' for the --master of spark-submit.",
                     "Needs the command line built with Spark (mvn -Pspark package) and Spark on the class path"
-                            + " (the 'spark' Maven profile or spark-submit; see README.md).",
+                            + " (the 'spark' Maven profile or spark-submit; see docs/spark.md).",
                     "A cluster master needs the runnable jar: under spark-submit, or with java -cp target/raytracer.jar"
                             + " and Spark's jars (the command ships the jar); from the Maven profile's class folders"
                             + " only local[N] runs, and a cluster master is refused at once." })

@@ -16,7 +16,7 @@ public interface SparkRunner {
      */
     String HOW_TO_RUN = "build it with 'mvn -q -Pspark package -DskipTests' and run it with"
             + " 'spark-submit --class app.cli.Main target/raytracer.jar --spark submit SCENE', or on this machine with"
-            + " 'mvn -q -Pspark compile exec:exec -Dspark.args=\"--spark local[2] SCENE\"' (see README.md, Spark)";
+            + " 'mvn -q -Pspark compile exec:exec -Dspark.args=\"--spark local[2] SCENE\"' (see docs/spark.md)";
 
     /**
      * Renders on Spark as {@code request} says.

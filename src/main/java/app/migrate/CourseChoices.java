@@ -9,7 +9,7 @@ import java.util.regex.Pattern;
 
 /**
  * Where the student's own course classes chose otherwise than the library, at the points where
- * course years disagree and the library picked one (README, "Which course year?"). Read from the
+ * course years disagree and the library picked one (docs/student-guide.md, "Which course year?"). Read from the
  * classes before they move, so the student learns which of their tests will change and why
  * before a single test runs on the library.
  */

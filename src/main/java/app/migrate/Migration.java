@@ -259,7 +259,7 @@ public final class Migration {
                         : "; not in " + tools.mavenRepository() + ", and mvn could not fetch it now (mvn test will try again)")));
             }
             if (!choices.isEmpty()) {
-                r.add("Where your code chose otherwise than the library (README, \"Which course year?\"):");
+                r.add("Where your code chose otherwise than the library (docs/student-guide.md, \"Which course year?\"):");
                 choices.forEach(c -> r.add("  " + c.line()));
             }
             List<SourceFile> courses = course.stream().filter(f -> Catalog.isCourseClass(f.className())).toList();

@@ -46,7 +46,7 @@ final class PomFile {
         if (artifact.isEmpty() || !Character.isLetterOrDigit(artifact.charAt(0))) artifact = "course-" + artifact;
         String bare = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
                 + "<!-- Written by raytracer migrate: this course project, built where it stands, on the raytracer\n"
-                + "     library (README, \"Moving an existing course project onto the library\"). mvn test runs every\n"
+                + "     library (docs/migrate.md in the library's repository). mvn test runs every\n"
                 + "     test; the tests left out (testExcludes below) are named in course-backup/migration-report.txt. -->\n"
                 + "<project xmlns=\"http://maven.apache.org/POM/4.0.0\"\n"
                 + "         xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\"\n"

@@ -41,6 +41,6 @@ public final class ShadowedLibraryListener implements LauncherSessionListener {
     static String message(String shadowing, Path project) {
         return "raytracer: these tests run on your own course classes, not the library's: " + shadowing
                 + ". Move them out with: raytracer migrate " + project
-                + " (README, 'Moving an existing course project onto the library')";
+                + " (docs/migrate.md)";
     }
 }

@@ -53,7 +53,7 @@ class SparkSubmitTest {
         Path home = SparkInstallation.find().orElse(null);
         assumeTrue(home != null, "no spark-submit: set " + SparkInstallation.HOME_VARIABLE + " to a Spark 4.0 installation,"
                 + " such as PyPI's pyspark 4.0.1 (python3 -m venv V && V/bin/pip install pyspark==4.0.1; then its package"
-                + " folder, V/lib/python3.X/site-packages/pyspark; README, \"Spark\")");
+                + " folder, V/lib/python3.X/site-packages/pyspark; docs/spark.md)");
         spark = SparkInstallation.at(home, dir);
         jar = applicationJar(dir.resolve("raytracer.jar"));
         master = spark.master("master");
