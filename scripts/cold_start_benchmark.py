@@ -3,8 +3,8 @@
 
 Part 1 times whole processes rendering one scene file at one sample per pixel on 2 threads
 (--aa NONE), in interleaved rounds: the baseline jar (--baseline-jar, an older build), this build's
-`java -jar target/raytracer.jar`, and the launcher `./raytracer` (the class-data-sharing archive
-target/raytracer.jsa, the serial collector, C1 only). Each round runs the three in a rotated order;
+`java -jar target/raytracer.jar`, and the launcher `./raytracer` (its start-up archive in
+target/startup/, made on its first run, the serial collector, C1 only). Each round runs the three in a rotated order;
 the ratios are taken round by round, so a machine whose speed drifts moves both sides of a ratio.
 
 Part 2 starts `bench.FirstRender` (the README's first scene test, rendered three times in one JVM)

@@ -353,9 +353,9 @@ class ReadmeExampleTest {
             // only the times and the machine's core count may differ.
             String readme = Files.readString(README);
             String named = "SpheresTest.twoSpheres()";
-            Matcher quoted = Pattern.compile("`(render " + Pattern.quote(named) + " [^`]*)`").matcher(readme);
+            Matcher quoted = Pattern.compile("`(render " + Pattern.quote(named) + ": [^`]*)`").matcher(readme);
             assertThat(quoted.find()).as("the README quotes the summary line").isTrue();
-            String line = printed.lines().filter(l -> l.startsWith("render " + named + " ")).findFirst()
+            String line = printed.lines().filter(l -> l.startsWith("render " + named + ": ")).findFirst()
                     .orElseThrow(() -> new AssertionError("no summary line printed:\n" + printed));
             assertThat(withoutTimes(quoted.group(1))).isEqualTo(withoutTimes(line));
 
@@ -383,7 +383,7 @@ class ReadmeExampleTest {
     @Test
     @DisplayName("the summary comparison ignores times, core count and the project's folder, nothing else")
     void summaryComparison() {
-        String a = "render x 2x2 [NONE]: 0.475 s, 4 px, rays: camera 4, shadow 2, secondary 0, 1.00 camera rays per px, "
+        String a = "render x: 0.475 s, 2x2 [NONE] of scene 's', 4 px, rays: camera 4, shadow 2, secondary 0, 1.00 camera rays per px, "
                 + "3.29 Mrays/s (all rays), 2 threads, prepared in 0.001 s";
         String b = a.replace("0.475 s", "1.5 s").replace("3.29", "12.00").replace("2 threads", "16 threads");
         assertThat(withoutTimes(a)).isEqualTo(withoutTimes(b)).isEqualTo(withoutTimes(a.replace("2 threads", "1 thread")))

@@ -5,7 +5,7 @@ import java.io.PrintStream;
 /**
  * The Spark render behind {@code --spark}, found with {@link java.util.ServiceLoader}: the
  * package {@code app.spark} provides it when the build includes Spark (the Maven profile
- * {@code spark}, on by default whenever the tests run). The command line names no Spark type,
+ * {@code spark}, asked for with {@code -Pspark}). The command line names no Spark type,
  * so a build without Spark (the README's first command) compiles, runs and downloads nothing of
  * Spark's; {@code --spark} then says in one line how to get it. Internal to the command line.
  */
