@@ -5,6 +5,7 @@ import java.io.PrintStream;
 import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.LinkOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -51,12 +52,20 @@ public final class Migration {
     private final PrintStream out;
     /** Where each step says what it is doing (the compiles take seconds to a minute on a real project). */
     private final PrintStream progress;
+    /** Where a test stops the run ({@link Faults#NONE} in a real one). */
+    private final Faults faults;
 
     Migration(Toolchain tools, ClassLoader library, PrintStream out, PrintStream progress) {
+        this(tools, library, out, progress, Faults.NONE);
+    }
+
+    /** As the other, with the run stopped where {@code faults} says (the crash tests). */
+    Migration(Toolchain tools, ClassLoader library, PrintStream out, PrintStream progress, Faults faults) {
         this.tools = tools;
         this.catalog = new Catalog(library);
         this.out = out;
         this.progress = progress;
+        this.faults = faults;
     }
 
     /**
@@ -137,8 +146,13 @@ public final class Migration {
         List<SourceFile> extras = files.stream().filter(f -> !f.test() && !course.contains(f)).toList();
 
         Path backup = d.resolve(Layout.BACKUP);
-        if (Files.exists(backup)) {
-            if (!Files.isRegularFile(d.resolve(Manifest.FILE)))
+        if (Files.exists(backup) && !isEmptyFolder(backup)) { // empty: a run stopped before it wrote anything
+            Manifest.State state = Manifest.stateOf(d);
+            if (state == Manifest.State.APPLYING || state == Manifest.State.UNDOING)
+                throw new MigrationException("a " + (state == Manifest.State.APPLYING ? "migration" : "--undo") + " of " + d
+                        + " was stopped part-way (" + Manifest.FILE + " lists what is left to take back): run raytracer migrate --undo "
+                        + d + " to put everything back, then migrate again (nothing was changed)");
+            if (state == null)
                 throw new MigrationException(backup + " is already there, and not from raytracer migrate: rename or remove it,"
                         + " then run migrate again (nothing was changed)");
             if (course.isEmpty()) {
@@ -207,24 +221,71 @@ public final class Migration {
     }
 
     private void undoHeld(Path d) throws MigrationException {
-        Manifest manifest = Manifest.load(d);
+        Path backup = d.resolve(Layout.BACKUP);
+        if (!Files.exists(d.resolve(Manifest.FILE), LinkOption.NOFOLLOW_LINKS) && Files.isDirectory(backup, LinkOption.NOFOLLOW_LINKS)
+                && isEmptyFolder(backup)) {
+            try {
+                Files.delete(backup); // a migration stopped before its manifest was written: all it made
+            } catch (IOException e) {
+                throw new MigrationException("cannot remove the empty " + backup + ": " + e.getMessage(), e);
+            }
+            out.println("raytracer migrate --undo: " + d + " is as it was before the migration (it was stopped before it"
+                    + " changed anything; its empty " + Layout.BACKUP + "/ removed)");
+            return;
+        }
+        Manifest manifest = Manifest.load(d, faults);
+        List<Manifest.Entry> taken = manifest.entries();
+        Thread stopped = whenStopped("--undo of " + d + " was stopped part-way: run raytracer migrate --undo " + d + " again to finish it");
         try {
             List<String> conflicts = manifest.conflicts();
-            if (!conflicts.isEmpty())
-                throw new MigrationException("cannot undo the migration of " + d + ": " + String.join("; ", conflicts)
+            if (!conflicts.isEmpty()) {
+                String shown = conflicts.size() <= 5 ? String.join("; ", conflicts)
+                        : String.join("; ", conflicts.subList(0, 5)) + "; and " + (conflicts.size() - 5) + " more";
+                throw new MigrationException("cannot undo the migration of " + d + ": " + shown
                         + " (nothing was changed; put them back, or undo by hand from " + Layout.BACKUP + "/)");
+            }
             manifest.undoAll();
             Files.deleteIfExists(d.resolve(Manifest.FILE));
             Files.deleteIfExists(d.resolve(REPORT));
             deleteEmptyFolders(d.resolve(Layout.BACKUP));
         } catch (IOException e) {
             throw new MigrationException("undo of " + d + " stopped part-way: " + e.getMessage()
-                    + " (what is left is listed in " + Manifest.FILE + ")", e, true);
+                    + " (" + Manifest.FILE + " lists what is left; run raytracer migrate --undo " + d + " again to finish)", e, true);
+        } finally {
+            removeHook(stopped);
         }
-        long moved = manifest.entries().stream().filter(e -> e.kind().equals(Manifest.Entry.MOVE)).count();
+        long moved = taken.stream().filter(e -> e.kind().equals(Manifest.Entry.MOVE)).count();
+        long folders = taken.stream().filter(e -> e.kind().equals(Manifest.Entry.MKDIR)).count();
         out.println("raytracer migrate --undo: " + d + " is as it was before the migration (" + moved + " files moved back, "
-                + (manifest.entries().size() - moved) + " restored or removed)");
+                + (taken.size() - moved - folders) + " restored or removed)");
     }
+
+    /**
+     * Says in one line what to run when the JVM is stopped (Ctrl-C, a kill that lets it end)
+     * while the files change; the manifest, written before each change, makes that possible.
+     */
+    private Thread whenStopped(String line) {
+        Thread hook = new Thread(() -> progress.println("raytracer migrate: " + line), "raytracer migrate: stopped");
+        Runtime.getRuntime().addShutdownHook(hook);
+        return hook;
+    }
+
+    private static void removeHook(Thread hook) {
+        try {
+            Runtime.getRuntime().removeShutdownHook(hook);
+        } catch (IllegalStateException shuttingDown) {
+            // the JVM is ending: the hook runs, and its line is what the user needs
+        }
+    }
+
+    private static boolean isEmptyFolder(Path folder) {
+        try (Stream<Path> in = Files.list(folder)) {
+            return in.findAny().isEmpty();
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
 
     // ===== the plan: everything decided in a scratch folder before the project changes =====
 
@@ -586,8 +647,11 @@ public final class Migration {
     // ===== applying the plan =====
 
     private void apply(Path d, Plan plan, List<String> report, Path imlFile) throws MigrationException {
-        Manifest manifest = new Manifest(d);
+        Manifest manifest = null;
+        Thread stopped = whenStopped("the migration of " + d + " was stopped part-way: run raytracer migrate --undo " + d
+                + " to take back what it did");
         try {
+            manifest = Manifest.begin(d, faults);
             for (SourceFile f : plan.course) manifest.move(f.relative(d), Layout.BACKUP + "/" + f.relative(d));
             for (SourceFile f : plan.setAside.keySet()) manifest.move(f.relative(d), SET_ASIDE + f.relative(d));
             for (Kept k : Stream.concat(plan.extras.stream(), plan.tests.stream()).filter(Kept::changed).toList())
@@ -619,21 +683,24 @@ public final class Migration {
                     manifest.create(".idea/compiler.xml", ImlFile.exclude(null, leftOut));
                 }
             }
-            manifest.save();
+            faults.reach("write " + REPORT);
             Manifest.write(Inside.resolve(d, REPORT), String.join("\n", report) + "\n");
+            manifest.finish();
         } catch (IOException | MigrationException | RuntimeException e) {
             try {
-                manifest.rollBack();
+                if (manifest != null) manifest.undoAll();
                 Files.deleteIfExists(d.resolve(Manifest.FILE));
                 Files.deleteIfExists(d.resolve(REPORT));
                 deleteEmptyFolders(d.resolve(Layout.BACKUP));
             } catch (IOException again) {
                 e.addSuppressed(again);
                 throw new MigrationException("the migration failed (" + e.getMessage() + ") and could not be taken back whole ("
-                        + again.getMessage() + "): what was changed is listed in the lines of " + Manifest.FILE, e, true);
+                        + again.getMessage() + "): " + Manifest.FILE + " lists what is left; run raytracer migrate --undo " + d + " to take it back", e, true);
             }
             throw new MigrationException("the migration failed and was taken back, nothing changed: "
                     + (e.getMessage() == null ? e.toString() : e.getMessage()), e, true);
+        } finally {
+            removeHook(stopped);
         }
         for (Path root : emptiedRoots(d, plan)) {
             try {

@@ -108,6 +108,11 @@ final class CourseProjects {
      * fetched into: a library a fixture needs is put there by {@link #install}.
      */
     static Migration migration(Path dir, OutputStream printed, OutputStream steps) {
+        return migration(dir, printed, steps, Faults.NONE);
+    }
+
+    /** As {@link #migration(Path, OutputStream, OutputStream)}, stopped where {@code faults} says. */
+    static Migration migration(Path dir, OutputStream printed, OutputStream steps, Faults faults) {
         Toolchain mine = Toolchain.ofThisProcess();
         List<Path> junit = Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
                 .filter(p -> p.matches(".*(junit-jupiter-api|junit-jupiter-params|junit-platform-commons|opentest4j|apiguardian).*\\.jar"))
@@ -115,7 +120,7 @@ final class CourseProjects {
         Toolchain tools = new Toolchain(Toolchain.location(Camera.class), junit, repository(dir), mine.coordinates(),
                 mine.junitVersion(), mine.jdk(), null);
         PrintStream out = new PrintStream(printed, true, StandardCharsets.UTF_8);
-        return new Migration(tools, Camera.class.getClassLoader(), out, new PrintStream(steps, true, StandardCharsets.UTF_8));
+        return new Migration(tools, Camera.class.getClassLoader(), out, new PrintStream(steps, true, StandardCharsets.UTF_8), faults);
     }
 
     /** The Maven repository of {@link #migration}'s toolchain. */
