@@ -81,9 +81,8 @@ public class Cylinder extends Tube {
         return height;
     }
 
-    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
-    public BoundingBox getBoundingBox() {
+    BoundingBox getBoundingBox() {
         double ex = radius * Math.sqrt(Math.max(0, 1 - vx * vx));
         double ey = radius * Math.sqrt(Math.max(0, 1 - vy * vy));
         double ez = radius * Math.sqrt(Math.max(0, 1 - vz * vz));

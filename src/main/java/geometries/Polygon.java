@@ -132,9 +132,8 @@ public class Polygon extends SingleHitGeometry {
         return t;
     }
 
-    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
-    public BoundingBox getBoundingBox() {
+    BoundingBox getBoundingBox() {
         double minX = vx[0], minY = vy[0], minZ = vz[0], maxX = minX, maxY = minY, maxZ = minZ;
         for (int i = 1; i < size; ++i) {
             minX = Math.min(minX, vx[i]);

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
+import primitives.Kernels;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -100,7 +101,7 @@ public class Tube extends Geometry {
     private boolean radialNormal(double x, double y, double z, double[] out) {
         double s = axial(x, y, z);
         double rx = x - (px + vx * s), ry = y - (py + vy * s), rz = z - (pz + vz * s);
-        Vector.normalize(rx, ry, rz, out);
+        Kernels.normalize(rx, ry, rz, out);
         return !(Util.isZero(rx) && Util.isZero(ry) && Util.isZero(rz));
     }
 
@@ -220,16 +221,14 @@ public class Tube extends Geometry {
         return !within(t, maxDistance) || visitor.visit(this, t);
     }
 
-    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
-    public boolean closestHit(Hit hit) {
+    boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         return intersect(hit, 0, null);
     }
 
-    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
-    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+    boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         return intersect(query, maxDistance, Objects.requireNonNull(visitor, "visitor"));
     }

@@ -105,12 +105,10 @@ public class SpotLight extends PointLight {
     }
 
     /**
-     * @return the point light's fingerprint and the narrow beam's (see {@link LightSource#settingsStamp()})
-     *
-     * @hidden internal: the renderer's checks of a light before and after a render
+     * @return the point light's fingerprint and the narrow beam's (see {@link DoublesLight#settingsStamp()})
      */
     @Override
-    public long settingsStamp() {
+    long settingsStamp() {
         return mix(super.settingsStamp(), narrowBeam);
     }
 

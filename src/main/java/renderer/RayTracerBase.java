@@ -111,7 +111,7 @@ public abstract class RayTracerBase {
      * The colour seen along the camera ray that {@code ray} holds as doubles (see {@code RayHit}):
      * how the render loop calls a tracer of another package, with no {@link Ray} object per ray. By default it builds
      * the {@link Ray} and calls {@link #traceRay(Ray)}; a tracer that queries the scene itself may
-     * override it and pass the record straight to {@code Intersectable.closestHit(Hit)}. The
+     * override it and pass the record straight to {@code LeanQueries.closestHit(Intersectable, Hit)}. The
      * record belongs to the calling worker for the duration of the call: its hit fields are free
      * to use, its ray is the camera's.
      *
