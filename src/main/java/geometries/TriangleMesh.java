@@ -71,7 +71,7 @@ public class TriangleMesh extends Geometry {
      * @throws NullPointerException     when {@code positions} or {@code indices} is null
      * @throws IllegalArgumentException for a length not a multiple of 3, no triangle, a non-finite
      *                                  coordinate, a zero or non-finite normal, an index out of
-     *                                  range, or a degenerate triangle (see {@link #isDegenerate}),
+     *                                  range, or a degenerate triangle (see {@link MeshChecks#isDegenerate}),
      *                                  naming the vertex or triangle
      */
     public TriangleMesh(double[] positions, int[] indices, double[] normals) {
@@ -142,7 +142,7 @@ public class TriangleMesh extends Geometry {
      * @return true when the triangle would be rejected
      * @throws ArrayIndexOutOfBoundsException when an index is outside {@code positions}
      */
-    public static boolean isDegenerate(double[] positions, int a, int b, int c) {
+    static boolean isDegenerate(double[] positions, int a, int b, int c) {
         return degeneracy(positions, a, b, c) != null;
     }
 

@@ -38,6 +38,7 @@ import primitives.Color;
 import primitives.Point;
 import primitives.Vector;
 import renderer.Camera;
+import renderer.CameraReports;
 import renderer.ImageWriter;
 import renderer.RayTracerBasic;
 import renderer.RenderStats;
@@ -510,7 +511,7 @@ class ImageAssertionsTest {
             assertThat(published).hasSize(2);
             assertThat(published.get(0)).containsOnlyKeys("image", "scene", "size", "mode", "threads", "time", "rays", "Mrays/s")
                     .containsEntry("image", "junit/figures").containsEntry("scene", "background").containsEntry("size", "6x4")
-                    .containsEntry("mode", camera.describe()).containsEntry("threads", "2")
+                    .containsEntry("mode", CameraReports.describe(camera)).containsEntry("threads", "2")
                     .containsEntry("rays", Long.toString(stats.totalRays()));
             assertThat(published.get(0).get("time")).matches("\\d+\\.\\d{3} s");
         }
