@@ -2,6 +2,7 @@ package bench;
 
 import geometries.Bvh;
 import geometries.Hit;
+import geometries.LeanQueries;
 import primitives.Color;
 import primitives.Ray;
 import renderer.RayTracerBase;
@@ -28,12 +29,12 @@ final class PrimaryRayTracer extends RayTracerBase {
 
     @Override
     public Color traceRay(Ray ray) {
-        return bvh.closestHit(ray, hits.get().reset(Double.POSITIVE_INFINITY)) ? WHITE : Color.BLACK;
+        return LeanQueries.closestHit(bvh, ray, hits.get().reset(Double.POSITIVE_INFINITY)) ? WHITE : Color.BLACK;
     }
 
     /** The render loop's form: the camera's record goes straight to the walk, no ray object. */
     @Override
     protected Color traceRay(Hit ray) {
-        return bvh.closestHit(ray.reset(Double.POSITIVE_INFINITY)) ? WHITE : Color.BLACK;
+        return LeanQueries.closestHit(bvh, ray.reset(Double.POSITIVE_INFINITY)) ? WHITE : Color.BLACK;
     }
 }
