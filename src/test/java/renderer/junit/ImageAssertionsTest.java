@@ -40,6 +40,7 @@ import primitives.Vector;
 import renderer.Camera;
 import renderer.CameraReports;
 import renderer.ImageWriter;
+import renderer.ImageWriters;
 import renderer.RayTracerBasic;
 import renderer.RenderStats;
 import scene.Scene;
@@ -82,7 +83,7 @@ class ImageAssertionsTest {
 
     private static Path png(Path file, int w, int h, int[] rgb) {
         ImageWriter image = new ImageWriter(w, h);
-        image.writeTile(0, 0, w, h, rgb);
+        ImageWriters.writeTile(image, 0, 0, w, h, rgb);
         image.writeToImage(file);
         return file;
     }
@@ -107,7 +108,7 @@ class ImageAssertionsTest {
     /** A camera whose image holds {@code rgb} (no render needed: the assertion reads its image writer). */
     private static Camera cameraShowing(int[] rgb) {
         ImageWriter image = new ImageWriter("junit/gradient", W, H);
-        image.writeTile(0, 0, W, H, rgb);
+        ImageWriters.writeTile(image, 0, 0, W, H, rgb);
         return view().setImageWriter(image).build();
     }
 
@@ -125,7 +126,7 @@ class ImageAssertionsTest {
 
         private ImageWriter writer(int[] rgb) {
             ImageWriter image = new ImageWriter(W, H);
-            image.writeTile(0, 0, W, H, rgb);
+            ImageWriters.writeTile(image, 0, 0, W, H, rgb);
             return image;
         }
 
@@ -294,7 +295,7 @@ class ImageAssertionsTest {
         @DisplayName("of an image named only when written (2024–25) names the test in its message")
         void unnamedImage() {
             ImageWriter image = new ImageWriter(W, H);
-            image.writeTile(0, 0, W, H, greenUp(gradient(), 3, 3, 9));
+            ImageWriters.writeTile(image, 0, 0, W, H, greenUp(gradient(), 3, 3, 9));
             Camera camera = view().setImageWriter(image).build();
             assertThatThrownBy(() -> assertions.assertMatches(camera, "gradient"))
                     .hasMessageStartingWith("the render of ImageAssertionsTest.Failure.unnamedImage() does not match reference");
