@@ -1,8 +1,8 @@
 package geometries;
 
+import primitives.Checks;
 import primitives.Point;
 import primitives.Ray;
-import primitives.Util;
 import primitives.Vector;
 
 /**
@@ -26,7 +26,7 @@ public class Cylinder extends Tube {
      */
     public Cylinder(double radius, Ray axis, double height) {
         super(radius, axis);
-        this.height = Util.requirePositive(height, "cylinder height");
+        this.height = Checks.requirePositive(height, "cylinder height");
     }
 
     /**

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
+import primitives.Checks;
 import primitives.Kernels;
 import primitives.Point;
 import primitives.Ray;
@@ -30,7 +31,7 @@ public class Sphere extends Geometry {
      */
     public Sphere(Point center, double radius) {
         this.center = Objects.requireNonNull(center, "sphere center");
-        this.radius = Util.requirePositive(radius, "sphere radius");
+        this.radius = Checks.requirePositive(radius, "sphere radius");
         this.radiusSquared = radius * radius;
     }
 

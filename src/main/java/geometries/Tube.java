@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
+import primitives.Checks;
 import primitives.Kernels;
 import primitives.Point;
 import primitives.Ray;
@@ -33,7 +34,7 @@ public class Tube extends Geometry {
      * @throws IllegalArgumentException when the radius is not a positive finite number
      */
     public Tube(double radius, Ray axis) {
-        this.radius = Util.requirePositive(radius, "tube radius");
+        this.radius = Checks.requirePositive(radius, "tube radius");
         this.axis = Objects.requireNonNull(axis, "tube axis");
         px = axis.getHead().getX();
         py = axis.getHead().getY();

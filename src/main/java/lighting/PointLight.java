@@ -2,9 +2,9 @@ package lighting;
 
 import java.util.Objects;
 
+import primitives.Checks;
 import primitives.Color;
 import primitives.Point;
-import primitives.Util;
 import primitives.Vector;
 
 /**
@@ -40,7 +40,7 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when kC is negative or not finite, naming it
      */
     public PointLight setKc(double kC) {
-        this.kC = Util.requireNonNegative(kC, "kC");
+        this.kC = Checks.requireNonNegative(kC, "kC");
         return this;
     }
 
@@ -50,7 +50,7 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when kL is negative or not finite, naming it
      */
     public PointLight setKl(double kL) {
-        this.kL = Util.requireNonNegative(kL, "kL");
+        this.kL = Checks.requireNonNegative(kL, "kL");
         return this;
     }
 
@@ -60,7 +60,7 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when kQ is negative or not finite, naming it
      */
     public PointLight setKq(double kQ) {
-        this.kQ = Util.requireNonNegative(kQ, "kQ");
+        this.kQ = Checks.requireNonNegative(kQ, "kQ");
         return this;
     }
 
@@ -134,7 +134,7 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when the radius is negative or not finite, naming it
      */
     public PointLight setRadius(double radius) {
-        this.radius = Util.requireNonNegative(radius, "light radius");
+        this.radius = Checks.requireNonNegative(radius, "light radius");
         return this;
     }
 

@@ -2,6 +2,7 @@ package lighting;
 
 import java.util.Objects;
 
+import primitives.Checks;
 import primitives.Color;
 import primitives.Point;
 import primitives.Util;
@@ -100,7 +101,7 @@ public class SpotLight extends PointLight {
      * @throws IllegalArgumentException when it is not a positive finite number, naming it
      */
     public SpotLight setNarrowBeam(double narrowBeam) {
-        this.narrowBeam = Util.requirePositive(narrowBeam, "spot light narrow beam");
+        this.narrowBeam = Checks.requirePositive(narrowBeam, "spot light narrow beam");
         return this;
     }
 
