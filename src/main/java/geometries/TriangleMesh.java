@@ -71,7 +71,8 @@ public class TriangleMesh extends Geometry {
      * @throws NullPointerException     when {@code positions} or {@code indices} is null
      * @throws IllegalArgumentException for a length not a multiple of 3, no triangle, a non-finite
      *                                  coordinate, a zero or non-finite normal, an index out of
-     *                                  range, or a degenerate triangle (see {@link MeshChecks#isDegenerate}),
+     *                                  range, or a degenerate triangle (two vertices that coincide,
+     *                                  or one too thin to have a normal, as {@link Triangle} rejects),
      *                                  naming the vertex or triangle
      */
     public TriangleMesh(double[] positions, int[] indices, double[] normals) {
