@@ -431,8 +431,9 @@ public abstract class Intersectable extends BvhLeaf {
     boolean closestHit(Hit hit) {
         Ray ray = hit.ray();
         boolean found = closestHit(ray, hit);
-        // A user's closestHit(Ray, Hit) may have asked other shapes with this record and another
-        // ray (a transformed one, say), which loads that ray into it: the caller's ray is put back.
+        // An override of closestHit(Ray, Hit) (a class of this package: one elsewhere cannot
+        // override it) may have asked other shapes with this record and another ray (a
+        // transformed one, say), which loads that ray into it: the caller's ray is put back.
         hit.setRay(ray);
         return found;
     }
