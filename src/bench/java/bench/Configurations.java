@@ -7,6 +7,7 @@ import java.util.Locale;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.PrimaryRayTracer;
 import renderer.RayTracerBasic;
 import scene.Scene;
 import scene.samples.GlossyScene;

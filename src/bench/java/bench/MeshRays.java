@@ -16,6 +16,7 @@ import java.util.concurrent.atomic.AtomicInteger;
 import geometries.Bvh;
 import geometries.Geometries;
 import geometries.Hit;
+import geometries.LeanQueries;
 import geometries.TriangleMesh;
 
 /**
@@ -132,7 +133,7 @@ public final class MeshRays {
                 for (int i = from; i < to; ++i) {
                     int r = 6 * i;
                     hit.set(rays, r);
-                    t[i] = bvh.closestHit(hit.reset(Double.POSITIVE_INFINITY)) ? hit.getT() : Double.NaN;
+                    t[i] = LeanQueries.closestHit(bvh, hit.reset(Double.POSITIVE_INFINITY)) ? hit.getT() : Double.NaN;
                 }
             }
         };

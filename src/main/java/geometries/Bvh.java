@@ -57,7 +57,7 @@ public final class Bvh extends Intersectable {
      * The tree of {@code geometries} as they are now, for a render: the tree an earlier call
      * built is reused when the geometries still hold the same leaves (the same objects, in the
      * same order, found through every nested list) and all of them are
-     * {@link Geometry#isLibraryShape() library shapes}, whose geometry cannot change; otherwise a new tree is built (as {@link #build(Geometries)}) and
+     * {@link LeanQueries#isLibraryShape library shapes}, whose geometry cannot change; otherwise a new tree is built (as {@link #build(Geometries)}) and
      * kept for the next call. So the renders of several cameras, or frames, of one scene build
      * it once, and any shape added anywhere in the scene is seen by the next render. The check
      * costs one pass over the leaves, far less than a build.
@@ -250,7 +250,7 @@ public final class Bvh extends Intersectable {
      * hit's distance are therefore still walked ({@code limit}).
      */
     @Override
-    public boolean closestHit(Hit hit) {
+    boolean closestHit(Hit hit) {
         boolean found = false;
         for (Intersectable u : unbounded) found |= u.closestHit(hit);
         hit.order = -1;
@@ -389,7 +389,7 @@ public final class Bvh extends Intersectable {
 
     /** The stackless walk: order does not matter for an any-hit query, so skip links suffice. */
     @Override
-    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+    boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         for (Intersectable u : unbounded)
             if (!u.visitHits(query, maxDistance, visitor)) return false;
         double ox = query.ox, oy = query.oy, oz = query.oz;
@@ -461,7 +461,7 @@ public final class Bvh extends Intersectable {
     }
 
     @Override
-    public BoundingBox getBoundingBox() {
+    BoundingBox getBoundingBox() {
         return unbounded.length > 0 ? null : rootBox;
     }
 }

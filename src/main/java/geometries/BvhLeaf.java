@@ -29,14 +29,21 @@ abstract class BvhLeaf {
     BvhLeaf() {
     }
 
-    /** {@link Intersectable#closestHit(Hit)}, which the defaults below ask. */
+    /** {@code Intersectable.closestHit(Hit)}, which the defaults below ask. */
     abstract boolean closestHit(Hit hit);
 
-    /** {@link Intersectable#visitHits(Hit, double, HitVisitor)}, which the defaults below ask. */
+    /** {@code Intersectable.visitHits(Hit, double, HitVisitor)}, which the defaults below ask. */
     abstract boolean visitHits(Hit query, double maxDistance, HitVisitor visitor);
 
-    /** {@link Intersectable#getBoundingBox()}, which the defaults below ask. */
-    abstract BoundingBox getBoundingBox();
+    /**
+     * The axis-aligned box enclosing this leaf, or null when it is unbounded (the default: a
+     * user's own shape is kept beside the tree). Declared here, not on {@link Intersectable}, so
+     * that a student's class of their own BVH that has a {@code getBoundingBox()} clashes with
+     * this internal class, which {@code migrate} names as the library's insides.
+     */
+    BoundingBox getBoundingBox() {
+        return null;
+    }
 
     /**
      * Adds to {@code out} the leaves an acceleration structure should index: this leaf itself by

@@ -1,8 +1,8 @@
 package geometries;
 
+import primitives.Checks;
 import primitives.Point;
 import primitives.Ray;
-import primitives.Util;
 import primitives.Vector;
 
 /**
@@ -26,7 +26,7 @@ public class Cylinder extends Tube {
      */
     public Cylinder(double radius, Ray axis, double height) {
         super(radius, axis);
-        this.height = Util.requirePositive(height, "cylinder height");
+        this.height = Checks.requirePositive(height, "cylinder height");
     }
 
     /**
@@ -81,9 +81,8 @@ public class Cylinder extends Tube {
         return height;
     }
 
-    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
-    public BoundingBox getBoundingBox() {
+    BoundingBox getBoundingBox() {
         double ex = radius * Math.sqrt(Math.max(0, 1 - vx * vx));
         double ey = radius * Math.sqrt(Math.max(0, 1 - vy * vy));
         double ez = radius * Math.sqrt(Math.max(0, 1 - vz * vz));

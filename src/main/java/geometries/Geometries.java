@@ -226,9 +226,8 @@ public class Geometries extends Intersectable {
         }
     }
 
-    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
-    public boolean closestHit(Hit hit) {
+    boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         boolean found = false;
         for (int i = 0, n = items.size(); i < n; ++i)
@@ -236,9 +235,8 @@ public class Geometries extends Intersectable {
         return found;
     }
 
-    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
-    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+    boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         for (int i = 0, n = items.size(); i < n; ++i)
             if (!items.get(i).visitHits(query, maxDistance, visitor)) return false;
@@ -247,11 +245,9 @@ public class Geometries extends Intersectable {
 
     /**
      * @return the union of the children's boxes; null when empty or when any child is unbounded
-     *
-     * @hidden internal: the bounding volume hierarchy's box
      */
     @Override
-    public BoundingBox getBoundingBox() {
+    BoundingBox getBoundingBox() {
         BoundingBox box = null;
         for (Intersectable item : items) {
             BoundingBox b = item.getBoundingBox();

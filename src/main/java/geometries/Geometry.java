@@ -36,10 +36,8 @@ public abstract class Geometry extends Intersectable {
      * class of yours may move its shape, or count its calls, so nothing is kept for it.
      *
      * @return true for an instance of exactly one of the library's shape classes
-     *
-     * @hidden internal: the rule that picks the renderer's fast path
      */
-    public final boolean isLibraryShape() {
+    final boolean isLibraryShape() {
         return libraryShape;
     }
 
@@ -51,10 +49,8 @@ public abstract class Geometry extends Intersectable {
      *
      * @return true for an instance of exactly one of the library's shape classes other than
      *         {@link TriangleMesh}
-     *
-     * @hidden internal: the rule that picks the renderer's fast path
      */
-    public final boolean isLibraryPrimitive() {
+    final boolean isLibraryPrimitive() {
         return libraryPrimitive;
     }
 

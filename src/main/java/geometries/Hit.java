@@ -1,5 +1,6 @@
 package geometries;
 
+import primitives.Kernels;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -14,8 +15,8 @@ import primitives.Vector;
  * <p>The ray is set with {@link #setRay(double, double, double, double, double, double)} or
  * {@link #setRay(double, double, double, double, double, double, double, double, double)}, the
  * doubles of {@code new Ray(head, direction)} and {@code new Ray(head, direction, normal)} (the
- * same arithmetic, so the same bits); {@link Intersectable#closestHit(Hit)} and
- * {@link Intersectable#visitHits(Hit, double, HitVisitor)} then query it without any
+ * same arithmetic, so the same bits); {@link LeanQueries#closestHit(Intersectable, Hit)} and
+ * {@link LeanQueries#visitHits(Intersectable, Hit, double, HitVisitor)} then query it without any
  * {@link Ray} object. Those two setters are protected: the renderer reaches them through its
  * own subclass ({@code renderer.RayHit}), so that code holding a {@code Hit} (a shape's query,
  * a student's code completion) reads a record and never sees how a ray is put into one. Every
@@ -84,7 +85,7 @@ public class Hit {
 
     /**
      * Sets the query ray to the one {@code new Ray(new Point(ox, oy, oz), new Vector(dx, dy, dz))}
-     * would be: the direction normalized by {@link Vector#normalize(double, double, double, double[])}.
+     * would be: the direction normalized by {@link Kernels#normalize(double, double, double, double[])}.
      *
      * @param ox the head's x coordinate
      * @param oy the head's y coordinate
@@ -95,7 +96,7 @@ public class Hit {
      * @return this record
      */
     protected final Hit setRay(double ox, double oy, double oz, double dx, double dy, double dz) {
-        Vector.normalize(dx, dy, dz, unit);
+        Kernels.normalize(dx, dy, dz, unit);
         this.ox = ox;
         this.oy = oy;
         this.oz = oz;
@@ -107,7 +108,7 @@ public class Hit {
 
     /**
      * Sets the query ray to the secondary ray {@code new Ray(p, direction, normal)} would be: the
-     * direction normalized, the head moved off the surface by {@link Ray#headOffset}.
+     * direction normalized, the head moved off the surface by {@link Kernels#headOffset}.
      *
      * @param px the surface point's x coordinate
      * @param py the surface point's y coordinate
@@ -122,9 +123,9 @@ public class Hit {
      */
     protected final Hit setRay(double px, double py, double pz, double dx, double dy, double dz, double nx,
                                double ny, double nz) {
-        Vector.normalize(dx, dy, dz, unit);
+        Kernels.normalize(dx, dy, dz, unit);
         double ux = unit[0], uy = unit[1], uz = unit[2];
-        double delta = Ray.headOffset(nx, ny, nz, ux, uy, uz);
+        double delta = Kernels.headOffset(nx, ny, nz, ux, uy, uz);
         if (delta == 0) {
             ox = px;
             oy = py;

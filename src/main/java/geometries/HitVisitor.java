@@ -1,7 +1,7 @@
 package geometries;
 
 /**
- * Receives the intersections of an any-hit walk; see {@link Intersectable#visitHits}.
+ * Receives the intersections of an any-hit walk; see {@link LeanQueries#visitHits(Intersectable, Hit, double, HitVisitor)}.
  *
  * @hidden internal: the renderer's any-hit walk, public for package renderer
  */

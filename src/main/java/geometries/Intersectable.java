@@ -30,11 +30,10 @@ import primitives.Vector;
  * <ul>
  * <li>the course's list API ({@link #findIntersections}, {@link #findGeoIntersections}) for scene
  * tests, returning {@code null} when nothing is hit;</li>
- * <li>the renderer's lean path: {@link #closestHit(Ray, Hit)} with a shrinking {@code tMax} and
- * the any-hit walk {@link #visitHits(Ray, double, HitVisitor)} for shadow rays, neither of which
- * builds a list; and the same two queries of a ray held in a {@link Hit} as doubles
- * ({@link #closestHit(Hit)}, {@link #visitHits(Hit, double, HitVisitor)}), which is how the
- * renderer calls them, without a {@link Ray} object per ray.</li>
+ * <li>the renderer's lean path: a closest-hit query with a shrinking {@code tMax} and an any-hit
+ * walk for shadow rays, neither of which builds a list, asked of a ray held as doubles (no
+ * {@link Ray} object per ray). These are package-private, out of a student's code completion;
+ * the renderer reaches them through {@link LeanQueries}.</li>
  * </ul>
  * The two forms of each lean query are joined here, once: the library's shapes implement the
  * doubles form, and their {@code Ray} form loads the ray into a record and asks it; a user's own
@@ -400,10 +399,8 @@ public abstract class Intersectable extends BvhLeaf {
      * @param ray the ray to intersect
      * @param hit the record to update; its {@code t} is the upper bound
      * @return true when {@code hit} was updated
-     *
-     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
      */
-    public boolean closestHit(Ray ray, Hit hit) {
+    boolean closestHit(Ray ray, Hit hit) {
         if (answersInDoubles) return closestHit(hit.setRay(ray));
         List<? extends GeoPoint> list = hookHits(ray, hit.t);
         if (list == null) return false;
@@ -429,15 +426,14 @@ public abstract class Intersectable extends BvhLeaf {
      *
      * @param hit the record holding the query ray; its {@code t} is the upper bound
      * @return true when {@code hit} was updated
-     *
-     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
      */
     @Override
-    public boolean closestHit(Hit hit) {
+    boolean closestHit(Hit hit) {
         Ray ray = hit.ray();
         boolean found = closestHit(ray, hit);
-        // A user's closestHit(Ray, Hit) may have asked other shapes with this record and another
-        // ray (a transformed one, say), which loads that ray into it: the caller's ray is put back.
+        // An override of closestHit(Ray, Hit) (a class of this package: one elsewhere cannot
+        // override it) may have asked other shapes with this record and another ray (a
+        // transformed one, say), which loads that ray into it: the caller's ray is put back.
         hit.setRay(ray);
         return found;
     }
@@ -452,10 +448,8 @@ public abstract class Intersectable extends BvhLeaf {
      * @param maxDistance the largest distance from the ray head that counts
      * @param visitor     called with each hit's geometry and distance
      * @return false when the visitor stopped the walk
-     *
-     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
      */
-    public boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
+    boolean visitHits(Ray ray, double maxDistance, HitVisitor visitor) {
         if (answersInDoubles) return visitHits(Hit.of(ray), maxDistance, visitor);
         List<? extends GeoPoint> list = hookHits(ray, maxDistance);
         if (list == null) return true;
@@ -475,22 +469,10 @@ public abstract class Intersectable extends BvhLeaf {
      * @param maxDistance the largest distance from the ray head that counts
      * @param visitor     called with each hit's geometry and distance
      * @return false when the visitor stopped the walk
-     *
-     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
      */
     @Override
-    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+    boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         return visitHits(query.ray(), maxDistance, visitor);
-    }
-
-    /**
-     * @return the axis-aligned box enclosing this shape, or null when it is unbounded
-     *
-     * @hidden internal: the bounding volume hierarchy's box
-     */
-    @Override
-    public BoundingBox getBoundingBox() {
-        return null;
     }
 
     /** @return true when {@code t} is a valid hit distance below the strict bound {@code tMax} */

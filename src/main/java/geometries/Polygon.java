@@ -94,7 +94,7 @@ public class Polygon extends SingleHitGeometry {
      * Rejects a polygon too small to be hit: the intersection tests (the edge test below,
      * Möller–Trumbore in {@link Triangle}) compare quantities of the order of twice the area with
      * the absolute zero tolerance, so when (v1 − v0) × (v2 − v0) is below it no ray would ever hit
-     * the shape. The same rule as {@link TriangleMesh#isDegenerate}'s "too small". (A plane through
+     * the shape. The same rule as {@link MeshChecks#isDegenerate}'s "too small". (A plane through
      * such points is fine: its test uses the unit normal.)
      */
     private static void requireHittableSize(Point p0, Point p1, Point p2) {
@@ -132,9 +132,8 @@ public class Polygon extends SingleHitGeometry {
         return t;
     }
 
-    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
-    public BoundingBox getBoundingBox() {
+    BoundingBox getBoundingBox() {
         double minX = vx[0], minY = vy[0], minZ = vz[0], maxX = minX, maxY = minY, maxZ = minZ;
         for (int i = 1; i < size; ++i) {
             minX = Math.min(minX, vx[i]);

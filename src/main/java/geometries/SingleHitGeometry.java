@@ -17,7 +17,7 @@ abstract class SingleHitGeometry extends Geometry {
     abstract double distanceTo(Hit query);
 
     @Override
-    public boolean closestHit(Hit hit) {
+    boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         double t = distanceTo(hit);
         if (!inRange(t, hit.t)) return false;
@@ -26,7 +26,7 @@ abstract class SingleHitGeometry extends Geometry {
     }
 
     @Override
-    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+    boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         double t = distanceTo(query);
         return !within(t, maxDistance) || visitor.visit(this, t);

@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
+import primitives.Checks;
+import primitives.Kernels;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -29,7 +31,7 @@ public class Sphere extends Geometry {
      */
     public Sphere(Point center, double radius) {
         this.center = Objects.requireNonNull(center, "sphere center");
-        this.radius = Util.requirePositive(radius, "sphere radius");
+        this.radius = Checks.requirePositive(radius, "sphere radius");
         this.radiusSquared = radius * radius;
     }
 
@@ -65,7 +67,7 @@ public class Sphere extends Geometry {
 
     /** The normal at (x, y, z) into {@code out[0..2]}: the one computation of both forms. */
     private void normal(double x, double y, double z, double[] out) {
-        Vector.normalize((x - center.getX()) / radius, (y - center.getY()) / radius, (z - center.getZ()) / radius, out);
+        Kernels.normalize((x - center.getX()) / radius, (y - center.getY()) / radius, (z - center.getZ()) / radius, out);
     }
 
     @Override
@@ -106,9 +108,8 @@ public class Sphere extends Geometry {
         return Util.alignZero(th2) <= 0 ? Double.NaN : Math.sqrt(th2);
     }
 
-    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
-    public boolean closestHit(Hit hit) {
+    boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         double t = distance(hit, center.getX(), center.getY(), center.getZ(), radiusSquared);
         if (!inRange(t, hit.t)) return false;
@@ -143,9 +144,8 @@ public class Sphere extends Geometry {
         out[at + 3] = radiusSquared;
     }
 
-    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
-    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+    boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         return visitHits(this, query, maxDistance, visitor, center.getX(), center.getY(), center.getZ(), radiusSquared);
     }
@@ -175,9 +175,8 @@ public class Sphere extends Geometry {
         return result.isEmpty() ? null : result;
     }
 
-    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
-    public BoundingBox getBoundingBox() {
+    BoundingBox getBoundingBox() {
         return new BoundingBox(center.getX() - radius, center.getY() - radius, center.getZ() - radius,
                 center.getX() + radius, center.getY() + radius, center.getZ() + radius);
     }

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
+import primitives.Kernels;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -70,7 +71,8 @@ public class TriangleMesh extends Geometry {
      * @throws NullPointerException     when {@code positions} or {@code indices} is null
      * @throws IllegalArgumentException for a length not a multiple of 3, no triangle, a non-finite
      *                                  coordinate, a zero or non-finite normal, an index out of
-     *                                  range, or a degenerate triangle (see {@link #isDegenerate}),
+     *                                  range, or a degenerate triangle (two vertices that coincide,
+     *                                  or one too thin to have a normal, as {@link Triangle} rejects),
      *                                  naming the vertex or triangle
      */
     public TriangleMesh(double[] positions, int[] indices, double[] normals) {
@@ -141,7 +143,7 @@ public class TriangleMesh extends Geometry {
      * @return true when the triangle would be rejected
      * @throws ArrayIndexOutOfBoundsException when an index is outside {@code positions}
      */
-    public static boolean isDegenerate(double[] positions, int a, int b, int c) {
+    static boolean isDegenerate(double[] positions, int a, int b, int c) {
         return degeneracy(positions, a, b, c) != null;
     }
 
@@ -317,11 +319,9 @@ public class TriangleMesh extends Geometry {
 
     /**
      * Tests the triangles in index order, as a list of the same {@link Triangle}s would be.
-     *
-     * @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections
      */
     @Override
-    public boolean closestHit(Hit hit) {
+    boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         if (!mayHit(hit, hit.t)) return false;
         boolean found = false;
@@ -329,9 +329,8 @@ public class TriangleMesh extends Geometry {
         return found;
     }
 
-    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
-    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+    boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         if (!mayHit(query, Double.POSITIVE_INFINITY)) return true;
         for (int k = 0, n = triangleCount(); k < n; ++k)
@@ -354,9 +353,8 @@ public class TriangleMesh extends Geometry {
         return result;
     }
 
-    /** @hidden internal: the bounding volume hierarchy's box */
     @Override
-    public BoundingBox getBoundingBox() {
+    BoundingBox getBoundingBox() {
         return bounds;
     }
 
@@ -405,7 +403,7 @@ public class TriangleMesh extends Geometry {
         int a = 3 * indices[3 * k], b = 3 * indices[3 * k + 1], c = 3 * indices[3 * k + 2];
         double v1x = p[b] - p[a], v1y = p[b + 1] - p[a + 1], v1z = p[b + 2] - p[a + 2];
         double v2x = p[c] - p[a], v2y = p[c + 1] - p[a + 1], v2z = p[c + 2] - p[a + 2];
-        Vector.normalize(v1y * v2z - v1z * v2y, v1z * v2x - v1x * v2z, v1x * v2y - v1y * v2x, out);
+        Kernels.normalize(v1y * v2z - v1z * v2y, v1z * v2x - v1x * v2z, v1x * v2y - v1y * v2x, out);
     }
 
     /**
@@ -437,7 +435,7 @@ public class TriangleMesh extends Geometry {
         double ny = w * n[a + 1] + u * n[b + 1] + v * n[c + 1];
         double nz = w * n[a + 2] + u * n[b + 2] + v * n[c + 2];
         if (Util.isZero(nx) && Util.isZero(ny) && Util.isZero(nz)) faceNormal(k, out);
-        else Vector.normalize(nx, ny, nz, out);
+        else Kernels.normalize(nx, ny, nz, out);
     }
 
     /** The squared distance from (px, py, pz) to triangle k (Ericson, Real-Time Collision Detection, 5.1.5). */

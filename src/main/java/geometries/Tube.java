@@ -4,6 +4,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
+import primitives.Checks;
+import primitives.Kernels;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -32,7 +34,7 @@ public class Tube extends Geometry {
      * @throws IllegalArgumentException when the radius is not a positive finite number
      */
     public Tube(double radius, Ray axis) {
-        this.radius = Util.requirePositive(radius, "tube radius");
+        this.radius = Checks.requirePositive(radius, "tube radius");
         this.axis = Objects.requireNonNull(axis, "tube axis");
         px = axis.getHead().getX();
         py = axis.getHead().getY();
@@ -100,7 +102,7 @@ public class Tube extends Geometry {
     private boolean radialNormal(double x, double y, double z, double[] out) {
         double s = axial(x, y, z);
         double rx = x - (px + vx * s), ry = y - (py + vy * s), rz = z - (pz + vz * s);
-        Vector.normalize(rx, ry, rz, out);
+        Kernels.normalize(rx, ry, rz, out);
         return !(Util.isZero(rx) && Util.isZero(ry) && Util.isZero(rz));
     }
 
@@ -220,16 +222,14 @@ public class Tube extends Geometry {
         return !within(t, maxDistance) || visitor.visit(this, t);
     }
 
-    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
-    public boolean closestHit(Hit hit) {
+    boolean closestHit(Hit hit) {
         if (!answersInDoubles()) return super.closestHit(hit); // a subclass's own hook answers
         return intersect(hit, 0, null);
     }
 
-    /** @hidden internal: the renderer's allocation-free query; a scene test asks findGeoIntersections */
     @Override
-    public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
+    boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
         if (!answersInDoubles()) return super.visitHits(query, maxDistance, visitor);
         return intersect(query, maxDistance, Objects.requireNonNull(visitor, "visitor"));
     }

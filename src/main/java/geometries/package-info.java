@@ -7,7 +7,10 @@
  *
  * <p>Under them, the engine: each {@code Intersectable} also answers the renderer's lean queries
  * (a closest hit into a reused {@code Hit}, an any-hit walk for shadows), and the tracer puts
- * {@code Geometries}' bounded members into a {@code Bvh}.
+ * {@code Geometries}' bounded members into a {@code Bvh}. Those queries, a shape's box and the
+ * rule that a shape is the library's own are package-private, so that a student's code
+ * completion on a course class lists the course's methods only; the renderer reaches them through
+ * the static facades {@code LeanQueries}, {@code GeometryLists} and {@code MeshChecks}.
  *
  * <p>Roles in this package:
  * <ul>
@@ -17,7 +20,10 @@
  * {@code Tube}, {@code Cylinder}, {@code TriangleMesh}, and the list {@code Geometries}.
  * {@code Intersectable} joins the two forms of each lean query once: the library's shapes
  * implement the doubles form, a user's shape its course hook.</li>
- * <li>The renderer's side: {@code Hit}, the per-thread record a query fills without allocating;
+ * <li>The renderer's side: {@code LeanQueries} (the closest-hit query, the any-hit walk, the box
+ * and the library-shape rule of any intersectable), {@code GeometryLists} (a scene's lists'
+ * change count and nesting), {@code MeshChecks} (a mesh loader's degenerate-triangle test);
+ * {@code Hit}, the per-thread record a query fills without allocating;
  * {@code HitVisitor}, which receives an any-hit walk's hits; {@code Bvh}, which the tracer asks
  * for ({@code Bvh.of(scene.geometries)}) and then queries like any intersectable; and
  * {@code BoundingBox}, whose slab test ({@code entry}, one call per box) the tree's node test shares.</li>
@@ -34,7 +40,7 @@
  * </ul>
  * Whether an object is exactly one of the library's shapes, which the library then trusts with
  * arithmetic of its own, is decided by one rule, {@code primitives.LibraryClasses}, through
- * {@code Geometry.isLibraryShape()}.
+ * {@code LeanQueries.isLibraryShape(Geometry)}.
  *
  * <p>Invariants the tests hold: the two faces of every shape agree, the same distances bit for bit
  * ({@code HitTest}, {@code RayFormTest}, the contract tests); a tree and the flat list give the same

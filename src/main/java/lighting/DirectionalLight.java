@@ -7,7 +7,7 @@ import primitives.Point;
 import primitives.Vector;
 
 /** A light at infinity: the same intensity and direction everywhere, no attenuation. */
-public class DirectionalLight extends Light implements LightSource {
+public class DirectionalLight extends DoublesLight {
     private final Vector direction;
 
     /**
@@ -38,9 +38,9 @@ public class DirectionalLight extends Light implements LightSource {
     }
 
     @Override
-    public void getIntensity(double x, double y, double z, double[] out) {
+    void getIntensity(double x, double y, double z, double[] out) {
         if (!isLibraryLight()) {
-            LightSource.super.getIntensity(x, y, z, out);
+            intensityOf(this, x, y, z, out);
             return;
         }
         out[0] = intensity.getR();
@@ -49,9 +49,9 @@ public class DirectionalLight extends Light implements LightSource {
     }
 
     @Override
-    public void getL(double x, double y, double z, double[] out) {
+    void getL(double x, double y, double z, double[] out) {
         if (!isLibraryLight()) {
-            LightSource.super.getL(x, y, z, out);
+            directionOf(this, x, y, z, out);
             return;
         }
         out[0] = direction.getX();
@@ -60,7 +60,7 @@ public class DirectionalLight extends Light implements LightSource {
     }
 
     @Override
-    public double getDistance(double x, double y, double z) {
-        return isLibraryLight() ? Double.POSITIVE_INFINITY : LightSource.super.getDistance(x, y, z);
+    double getDistance(double x, double y, double z) {
+        return isLibraryLight() ? Double.POSITIVE_INFINITY : distanceOf(this, x, y, z);
     }
 }

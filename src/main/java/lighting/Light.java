@@ -33,10 +33,8 @@ abstract class Light {
      * ask the object forms.
      *
      * @return true for an instance of exactly one of the library's light classes
-     *
-     * @hidden internal: the rule that picks the renderer's fast path
      */
-    public final boolean isLibraryLight() {
+    final boolean isLibraryLight() {
         return library;
     }
 

@@ -2,19 +2,19 @@ package lighting;
 
 import java.util.Objects;
 
+import primitives.Checks;
 import primitives.Color;
 import primitives.Point;
-import primitives.Util;
 import primitives.Vector;
 
 /**
  * A light at a position, attenuated with distance d by 1 / (kC + kL·d + kQ·d²). Each coefficient
  * is non-negative and they must not all be zero (the intensity would be infinite): that is checked
- * by {@link #validate()} before rendering, not by the setters, so that {@code setKc(0).setKl(x)}
+ * before rendering (the renderer checks its lights while preparing), not by the setters, so that {@code setKc(0).setKl(x)}
  * works in either order. Given a radius the light becomes a disk facing the shaded point, for
  * soft shadows.
  */
-public class PointLight extends Light implements LightSource {
+public class PointLight extends DoublesLight {
     /** Where the light is, in scene coordinates; the centre of its disk when it has a radius. */
     protected final Point position;
     private double kC = 1;
@@ -40,7 +40,7 @@ public class PointLight extends Light implements LightSource {
      * @throws IllegalArgumentException when kC is negative or not finite, naming it
      */
     public PointLight setKc(double kC) {
-        this.kC = Util.requireNonNegative(kC, "kC");
+        this.kC = Checks.requireNonNegative(kC, "kC");
         return this;
     }
 
@@ -50,7 +50,7 @@ public class PointLight extends Light implements LightSource {
      * @throws IllegalArgumentException when kL is negative or not finite, naming it
      */
     public PointLight setKl(double kL) {
-        this.kL = Util.requireNonNegative(kL, "kL");
+        this.kL = Checks.requireNonNegative(kL, "kL");
         return this;
     }
 
@@ -60,7 +60,7 @@ public class PointLight extends Light implements LightSource {
      * @throws IllegalArgumentException when kQ is negative or not finite, naming it
      */
     public PointLight setKq(double kQ) {
-        this.kQ = Util.requireNonNegative(kQ, "kQ");
+        this.kQ = Checks.requireNonNegative(kQ, "kQ");
         return this;
     }
 
@@ -134,7 +134,7 @@ public class PointLight extends Light implements LightSource {
      * @throws IllegalArgumentException when the radius is negative or not finite, naming it
      */
     public PointLight setRadius(double radius) {
-        this.radius = Util.requireNonNegative(radius, "light radius");
+        this.radius = Checks.requireNonNegative(radius, "light radius");
         return this;
     }
 
@@ -149,12 +149,10 @@ public class PointLight extends Light implements LightSource {
     }
 
     /**
-     * @return a fingerprint of kC, kL, kQ and the radius, the settings that may change (see {@link LightSource#settingsStamp()})
-     *
-     * @hidden internal: the renderer's checks of a light before and after a render
+     * @return a fingerprint of kC, kL, kQ and the radius, the settings that may change (see {@link DoublesLight#settingsStamp()})
      */
     @Override
-    public long settingsStamp() {
+    long settingsStamp() {
         return mix(mix(mix(mix(0, kC), kL), kQ), radius);
     }
 
@@ -165,11 +163,9 @@ public class PointLight extends Light implements LightSource {
 
     /**
      * @throws IllegalArgumentException when kC, kL and kQ are all zero, naming the three
-     *
-     * @hidden internal: the renderer's checks of a light before and after a render
      */
     @Override
-    public void validate() {
+    void validate() {
         if (kC == 0 && kL == 0 && kQ == 0)
             throw new IllegalArgumentException("point light attenuation coefficients must not all be zero"
                     + " (the intensity would be infinite), got kC=" + kC + ", kL=" + kL + ", kQ=" + kQ);
@@ -180,7 +176,7 @@ public class PointLight extends Light implements LightSource {
      *
      * @param p the shaded point; d is its distance from {@link #position}
      * @return the factor the intensity is multiplied by, &gt; 0 (+∞ when all coefficients are 0,
-     *         which {@link #validate()} rejects before a render)
+     *         which a render rejects before it starts)
      */
     protected double attenuation(Point p) {
         return attenuationHere(p.getX(), p.getY(), p.getZ());
@@ -223,9 +219,9 @@ public class PointLight extends Light implements LightSource {
     }
 
     @Override
-    public void getIntensity(double x, double y, double z, double[] out) {
+    void getIntensity(double x, double y, double z, double[] out) {
         if (!isLibraryLight()) {
-            LightSource.super.getIntensity(x, y, z, out);
+            intensityOf(this, x, y, z, out);
             return;
         }
         double f = intensityFactor(x, y, z);
@@ -242,9 +238,9 @@ public class PointLight extends Light implements LightSource {
     }
 
     @Override
-    public void getL(double x, double y, double z, double[] out) {
+    void getL(double x, double y, double z, double[] out) {
         if (!isLibraryLight()) {
-            LightSource.super.getL(x, y, z, out);
+            directionOf(this, x, y, z, out);
             return;
         }
         lHere(x, y, z, out);
@@ -274,8 +270,8 @@ public class PointLight extends Light implements LightSource {
     }
 
     @Override
-    public double getDistance(double x, double y, double z) {
-        if (!isLibraryLight()) return LightSource.super.getDistance(x, y, z);
+    double getDistance(double x, double y, double z) {
+        if (!isLibraryLight()) return distanceOf(this, x, y, z);
         return Math.sqrt(distanceSquared(x, y, z));
     }
 }

@@ -2,6 +2,7 @@ package lighting;
 
 import java.util.Objects;
 
+import primitives.Checks;
 import primitives.Color;
 import primitives.Point;
 import primitives.Util;
@@ -100,17 +101,15 @@ public class SpotLight extends PointLight {
      * @throws IllegalArgumentException when it is not a positive finite number, naming it
      */
     public SpotLight setNarrowBeam(double narrowBeam) {
-        this.narrowBeam = Util.requirePositive(narrowBeam, "spot light narrow beam");
+        this.narrowBeam = Checks.requirePositive(narrowBeam, "spot light narrow beam");
         return this;
     }
 
     /**
-     * @return the point light's fingerprint and the narrow beam's (see {@link LightSource#settingsStamp()})
-     *
-     * @hidden internal: the renderer's checks of a light before and after a render
+     * @return the point light's fingerprint and the narrow beam's (see {@link DoublesLight#settingsStamp()})
      */
     @Override
-    public long settingsStamp() {
+    long settingsStamp() {
         return mix(super.settingsStamp(), narrowBeam);
     }
 

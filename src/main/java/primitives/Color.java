@@ -81,7 +81,7 @@ public final class Color implements java.io.Serializable {
      * @param b the blue component
      * @return the colour packed as 0xRRGGBB, each channel clamped to 0..255
      */
-    public static int toRgb(double r, double g, double b) {
+    static int toRgb(double r, double g, double b) {
         return (clamp(r) << 16) | (clamp(g) << 8) | clamp(b);
     }
 

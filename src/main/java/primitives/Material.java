@@ -388,7 +388,7 @@ public class Material {
      * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
      */
     public Material setReflectionSpread(double spread) {
-        this.reflectionSpread = Util.requireNonNegative(spread, "reflection spread");
+        this.reflectionSpread = Checks.requireNonNegative(spread, "reflection spread");
         return this;
     }
 
@@ -398,7 +398,7 @@ public class Material {
      * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
      */
     public Material setTransmissionSpread(double spread) {
-        this.transmissionSpread = Util.requireNonNegative(spread, "transmission spread");
+        this.transmissionSpread = Checks.requireNonNegative(spread, "transmission spread");
         return this;
     }
 

@@ -62,10 +62,8 @@ public final class Ray {
      * @param dz its z component
      * @return {@link #DELTA} when the direction leaves on the normal's side, −{@code DELTA} when it
      *         enters the surface, 0 when it is tangent (within the zero tolerance)
-     *
-     * @hidden internal: the renderer's doubles form of the Ray(head, direction, normal) offset
      */
-    public static double headOffset(double nx, double ny, double nz, double dx, double dy, double dz) {
+    static double headOffset(double nx, double ny, double nz, double dx, double dy, double dz) {
         double nd = Util.alignZero(nx * dx + ny * dy + nz * dz);
         return nd == 0 ? 0 : nd > 0 ? DELTA : -DELTA;
     }

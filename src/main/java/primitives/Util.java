@@ -41,8 +41,8 @@ public final class Util {
      * @throws IllegalArgumentException when a bound is NaN or infinite, or {@code max < min}
      */
     public static double random(double min, double max) {
-        requireFinite(min, "random minimum");
-        requireFinite(max, "random maximum");
+        Checks.requireFinite(min, "random minimum");
+        Checks.requireFinite(max, "random maximum");
         if (max < min) throw new IllegalArgumentException("random maximum " + max + " is below the minimum " + min);
         double u;
         synchronized (SCENE_RANDOM) {
@@ -75,47 +75,5 @@ public final class Util {
      */
     public static boolean compareSign(double n1, double n2) {
         return (n1 < 0 && n2 < 0) || (n1 > 0 && n2 > 0);
-    }
-
-    /**
-     * Rejects NaN and infinities with a message naming the value.
-     *
-     * @param value the value to check
-     * @param name what the value is, for the message (e.g. "sphere radius")
-     * @return {@code value}
-     * @throws IllegalArgumentException when {@code value} is NaN or infinite
-     */
-    public static double requireFinite(double value, String name) {
-        if (!Double.isFinite(value))
-            throw new IllegalArgumentException(name + " must be a finite number, got " + value);
-        return value;
-    }
-
-    /**
-     * Rejects values that are not finite and strictly positive (sizes, distances, radii).
-     *
-     * @param value the value to check
-     * @param name what the value is, for the message (e.g. "view-plane width")
-     * @return {@code value}
-     * @throws IllegalArgumentException when {@code value} is ≤ 0, NaN or infinite
-     */
-    public static double requirePositive(double value, String name) {
-        if (!(value > 0) || Double.isInfinite(value))
-            throw new IllegalArgumentException(name + " must be a positive finite number, got " + value);
-        return value;
-    }
-
-    /**
-     * Rejects values that are not finite and non-negative (spreads, radii where 0 means "off").
-     *
-     * @param value the value to check
-     * @param name what the value is, for the message (e.g. "reflection spread")
-     * @return {@code value}
-     * @throws IllegalArgumentException when {@code value} is negative, NaN or infinite
-     */
-    public static double requireNonNegative(double value, String name) {
-        if (!(value >= 0) || Double.isInfinite(value))
-            throw new IllegalArgumentException(name + " must be a non-negative finite number, got " + value);
-        return value;
     }
 }

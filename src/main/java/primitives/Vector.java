@@ -107,7 +107,7 @@ public class Vector extends Point {
 
     /**
      * The arithmetic of {@link #crossProduct(Vector)} on raw components (same checks, same bits),
-     * for a tracer that keeps its vectors in doubles.
+     * for a tracer that keeps its vectors in doubles ({@link Kernels#crossProduct}).
      *
      * @param ax  the left operand's x component (a non-zero, finite vector; not checked)
      * @param ay  the left operand's y component
@@ -119,7 +119,7 @@ public class Vector extends Point {
      * @throws IllegalArgumentException when the vectors are parallel, or the product is beyond the
      *                                  range of a double
      */
-    public static void crossProduct(double ax, double ay, double az, double bx, double by, double bz, double[] out) {
+    static void crossProduct(double ax, double ay, double az, double bx, double by, double bz, double[] out) {
         double cx = ay * bz - az * by;
         double cy = az * bx - ax * bz;
         double cz = ax * by - ay * bx;
@@ -183,7 +183,7 @@ public class Vector extends Point {
 
     /**
      * The arithmetic of {@link #normalize()} on raw components, for a tracer that keeps its
-     * vectors in doubles: the one implementation of normalization, so both forms give the same
+     * vectors in doubles ({@link Kernels#normalize}): the one implementation of normalization, so both forms give the same
      * bits.
      *
      * @param x   the x component of a non-zero, finite vector (not checked)
@@ -193,7 +193,7 @@ public class Vector extends Point {
      * @return false when (x, y, z) already has unit length within the zero tolerance: {@code out}
      *         then holds it unchanged
      */
-    public static boolean normalize(double x, double y, double z, double[] out) {
+    static boolean normalize(double x, double y, double z, double[] out) {
         double len2 = x * x + y * y + z * z;
         if (Util.isZero(len2 - 1)) {
             out[0] = x;

@@ -208,20 +208,16 @@ public final class Camera {
      * outside a test.
      *
      * @return the image's name as this camera's reports show it
-     *
-     * @hidden internal: public only for renderer.junit's reports
      */
-    public String getImageLabel() {
+    String getImageLabel() {
         return imageWriter.hasName() ? imageWriter.getImageName()
                 : CallingTest.find().orElse(imageWriter.getImageName());
     }
 
     /**
      * @return the name of the scene this camera's tracer traces ({@link Scene#name}), as reports show it
-     *
-     * @hidden internal: public only for renderer.junit's reports
      */
-    public String getSceneName() {
+    String getSceneName() {
         return rayTracer.scene.name;
     }
 
@@ -239,7 +235,7 @@ public final class Camera {
     }
 
     /** @return the sampling settings in words, for summaries and benchmark tables */
-    public String describe() {
+    String describe() {
         return sampling.describe(view.lens()) + ", " + rayTracer.describe() + ", seed " + sampling.seed();
     }
 

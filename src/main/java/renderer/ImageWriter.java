@@ -37,10 +37,8 @@ public class ImageWriter {
     /**
      * The longest image name {@link #requireFileName} allows, in characters (file names have at
      * most 255 bytes).
-     *
-     * @hidden internal: public for the scene reader and the command line
      */
-    public static final int MAX_FILE_NAME_LENGTH = 200;
+    static final int MAX_FILE_NAME_LENGTH = 200;
 
     private final String imageName;
     private final int nX;
@@ -119,10 +117,8 @@ public class ImageWriter {
      * @param nX the number of columns
      * @param nY the number of rows
      * @return the sentence, without advice (the caller knows how its user makes an image smaller)
-     *
-     * @hidden internal: public only for the command line's memory check
      */
-    public static String memoryNeeded(int nX, int nY) {
+    static String memoryNeeded(int nX, int nY) {
         long mb = 1 << 20;
         Runtime runtime = Runtime.getRuntime();
         long max = runtime.maxMemory();
@@ -141,10 +137,8 @@ public class ImageWriter {
      * @param nX the number of columns
      * @param nY the number of rows
      * @return the bytes of the pixels of an nX × nY image: 4 a pixel
-     *
-     * @hidden internal: public only for the command line's memory check
      */
-    public static long bytesNeeded(int nX, int nY) {
+    static long bytesNeeded(int nX, int nY) {
         return (long) nX * nY * Integer.BYTES;
     }
 
@@ -168,9 +162,8 @@ public class ImageWriter {
      *                                  naming it; for one with a character that would not show
      *                                  as what it is ({@link #hiddenCharacter}), naming its code
      *                                  point and its kind
-     * @hidden internal: public for the scene reader and the command line
      */
-    public static String requireFileName(String name) {
+    static String requireFileName(String name) {
         Objects.requireNonNull(name, "image name");
         if (name.isBlank()) throw new IllegalArgumentException("the image name is blank");
         if (name.length() > MAX_FILE_NAME_LENGTH)
@@ -203,9 +196,8 @@ public class ImageWriter {
      *
      * @param cp a Unicode code point
      * @return the kind of character, for a message ("a control character", …), or null
-     * @hidden internal: public for the scene reader's messages, which escape these characters
      */
-    public static String hiddenCharacter(int cp) {
+    static String hiddenCharacter(int cp) {
         return switch (Character.getType(cp)) {
             case Character.CONTROL -> "a control character";
             case Character.FORMAT -> "an invisible or direction-changing character";
@@ -290,10 +282,8 @@ public class ImageWriter {
      * @param rgb    its pixels, row after row, {@code width} to a row; may be longer
      * @throws IndexOutOfBoundsException naming the rectangle when it does not lie in the image or
      *                                   {@code rgb} is too short for it; nothing is written then
-     *
-     * @hidden internal: public only for app.spark's assembly of tiles
      */
-    public void writeTile(int x, int y, int width, int height, int[] rgb) {
+    void writeTile(int x, int y, int width, int height, int[] rgb) {
         if (x < 0 || y < 0 || width <= 0 || height <= 0 || x > nX - width || y > nY - height
                 || rgb.length < (long) width * height)
             throw new IndexOutOfBoundsException("tile of " + width + "x" + height + " pixels at (" + x + "," + y

@@ -109,18 +109,18 @@ public abstract class RayTracerBase {
 
     /**
      * The colour seen along the camera ray that {@code ray} holds as doubles (see {@code RayHit}):
-     * how the render loop calls a tracer of another package, with no {@link Ray} object per ray. By default it builds
-     * the {@link Ray} and calls {@link #traceRay(Ray)}; a tracer that queries the scene itself may
-     * override it and pass the record straight to {@code Intersectable.closestHit(Hit)}. The
-     * record belongs to the calling worker for the duration of the call: its hit fields are free
-     * to use, its ray is the camera's.
+     * how the render loop calls a tracer other than the library's own, with no {@link Ray} object
+     * per ray. By default it builds the {@link Ray} and calls {@link #traceRay(Ray)}, which is
+     * what a student's tracer overrides; a tracer of package {@code renderer} that queries the
+     * scene itself may override this one and pass the record straight to
+     * {@code LeanQueries.closestHit(Intersectable, Hit)}. Package-private, so that it stays out of
+     * the code completion of a student's subclass. The record belongs to the calling worker for
+     * the duration of the call: its hit fields are free to use, its ray is the camera's.
      *
      * @param ray the record holding the camera ray
      * @return the colour seen along the ray, on the 0..255 scale, unclamped
-     * @hidden internal: the render loop's doubles entry, for a tracer outside package renderer
-     *         that queries the scene itself; a student's tracer overrides traceRay(Ray)
      */
-    protected Color traceRay(Hit ray) {
+    Color traceRay(Hit ray) {
         return traceRay(new Ray(new Point(ray.headX(), ray.headY(), ray.headZ()),
                 new Vector(ray.directionX(), ray.directionY(), ray.directionZ())));
     }

@@ -3,6 +3,7 @@ package renderer;
 import geometries.Bvh;
 import geometries.GeometryLists;
 import geometries.Intersectable;
+import lighting.LightQueries;
 import lighting.LightSource;
 import primitives.Color;
 import primitives.Material;
@@ -138,7 +139,7 @@ public class RayTracerBasic extends RayTracerBase {
     @Override
     synchronized PreparedTracer prepare() {
         GeometryLists.requireNestingWithinLimit(scene.geometries); // the flat walk recurses once per level
-        for (LightSource light : scene.lights) light.validate();
+        for (LightSource light : scene.lights) LightQueries.validate(light);
         Intersectable world = useBvh ? Bvh.of(scene.geometries) : scene.geometries;
         WhittedShader prepared = new WhittedShader(scene.background, scene.ambientLight.getIntensity(), world, scene.lights.toArray(new LightSource[0]), beamSize, shadowSamples);
         shader = prepared;

@@ -2,7 +2,7 @@ package renderer;
 
 import java.util.Objects;
 
-import primitives.Util;
+import primitives.Checks;
 
 /**
  * Internal: how a render samples its pixels. Public only so that the scene reader and the
@@ -150,7 +150,7 @@ public record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, 
          */
         public Adaptive {
             requireDepth(depth);
-            Util.requireNonNegative(threshold, "adaptive threshold");
+            Checks.requireNonNegative(threshold, "adaptive threshold");
         }
 
         /**

@@ -14,6 +14,7 @@ import geometries.Geometry;
 import geometries.GeometryLists;
 import geometries.Intersectable;
 import lighting.AmbientLight;
+import lighting.LightQueries;
 import lighting.LightSource;
 import primitives.Color;
 import primitives.Double3;
@@ -37,7 +38,7 @@ import primitives.Material;
  * @param changes     {@link GeometryLists#changeCount} at the start
  * @param lights      the lights in its light list at the start
  * @param surfaces    the fingerprint of every geometry's material and emission at the start ({@link #surfaces})
- * @param lightStamps each light's {@link LightSource#settingsStamp()} at the start, in the order of {@code lights}
+ * @param lightStamps each light's {@link LightQueries#settingsStamp} at the start, in the order of {@code lights}
  */
 record SceneStamp(RayTracerBase tracer, Parts start, long changes, LightSource[] lights, Surfaces surfaces,
                   long[] lightStamps) {
@@ -128,14 +129,14 @@ record SceneStamp(RayTracerBase tracer, Parts start, long changes, LightSource[]
             return "a material of its geometries changed (a Material setter such as setKd, a field, or setMaterial)";
         if (surfacesNow.emissions != surfaces.emissions) return "the emission of one of its geometries changed (setEmission)";
         for (int i = 0; i < lights.length; ++i)
-            if (lights[i].settingsStamp() != lightStamps[i])
+            if (LightQueries.settingsStamp(lights[i]) != lightStamps[i])
                 return "the settings of its light #" + i + " changed (" + lights[i].getClass().getSimpleName() + ")";
         return null;
     }
 
     private static long[] settingsStamps(LightSource[] lights) {
         long[] stamps = new long[lights.length];
-        for (int i = 0; i < lights.length; ++i) stamps[i] = lights[i].settingsStamp();
+        for (int i = 0; i < lights.length; ++i) stamps[i] = LightQueries.settingsStamp(lights[i]);
         return stamps;
     }
 

@@ -6,6 +6,7 @@ import geometries.Geometry;
 import geometries.Hit;
 import geometries.HitVisitor;
 import geometries.Intersectable;
+import geometries.LeanQueries;
 import primitives.Double3;
 
 /**
@@ -16,7 +17,7 @@ import primitives.Double3;
  * <p>Exact: when a shape whose kT is zero in every channel crosses the shadow ray within its
  * distance, the product of kT along that ray is 0 whatever else is on it, which is what the walk
  * would return; when it does not cross it, the walk runs as before. Only
- * {@link Geometry#isLibraryShape() library shapes} of one primitive are kept: asking them is one
+ * {@link LeanQueries#isLibraryShape library shapes} of one primitive are kept: asking them is one
  * intersection test, and they have no side effects (a mesh would be a walk of its own; a user's
  * class may do anything).
  */
@@ -28,7 +29,7 @@ final class ShadowCache implements HitVisitor {
 
     /**
      * The product of kT along {@code shadow} up to {@code distance} toward light {@code light}, into
-     * {@code tr} (as {@code world.visitHits(shadow, distance, tr.reset())} would leave it): 0 at once
+     * {@code tr} (as {@code LeanQueries.visitHits(world, shadow, distance, tr.reset())} would leave it): 0 at once
      * when the light's last opaque occluder crosses the ray, else the walk, whose opaque occluder,
      * if it found one, is kept for the next ray.
      */
@@ -38,10 +39,10 @@ final class ShadowCache implements HitVisitor {
             tr.product.setZero();
             return;
         }
-        world.visitHits(shadow, distance, tr);
+        LeanQueries.visitHits(world, shadow, distance, tr);
         Geometry occluder = tr.opaque;
         // A mesh is kept out: asking it again would be a walk of its own over its triangles.
-        if (occluder == null || !occluder.isLibraryPrimitive()) return;
+        if (occluder == null || !LeanQueries.isLibraryPrimitive(occluder)) return;
         if (light >= last.length) last = Arrays.copyOf(last, light + 1);
         last[light] = occluder;
     }
@@ -52,7 +53,7 @@ final class ShadowCache implements HitVisitor {
         Geometry g = last[light];
         if (g == null || !opaque(g)) return false;
         crossed = false;
-        g.visitHits(shadow, distance, this); // the walk's acceptance rule, the walk's arithmetic
+        LeanQueries.visitHits(g, shadow, distance, this); // the walk's acceptance rule, the walk's arithmetic
         return crossed;
     }
 

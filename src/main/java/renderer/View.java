@@ -2,6 +2,7 @@ package renderer;
 
 import java.util.Objects;
 
+import primitives.Checks;
 import primitives.Point;
 import primitives.Ray;
 import primitives.Util;
@@ -167,14 +168,14 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
          */
         public ViewPlane {
             requireSize(width, height);
-            Util.requirePositive(distance, "view plane distance");
+            Checks.requirePositive(distance, "view plane distance");
             requireResolution(nX, nY);
         }
 
         /** The size check on its own, for a builder that reports a missing distance after it. */
         static void requireSize(double width, double height) {
-            Util.requirePositive(width, "view plane width");
-            Util.requirePositive(height, "view plane height");
+            Checks.requirePositive(width, "view plane width");
+            Checks.requirePositive(height, "view plane height");
         }
 
         static void requireResolution(int nX, int nY) {
@@ -203,9 +204,9 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
          *                                  without a positive focal distance, naming it
          */
         public Lens {
-            Util.requireNonNegative(aperture, "aperture radius");
-            if (aperture > 0) Util.requirePositive(focalDistance, "focal distance");
-            else Util.requireNonNegative(focalDistance, "focal distance");
+            Checks.requireNonNegative(aperture, "aperture radius");
+            if (aperture > 0) Checks.requirePositive(focalDistance, "focal distance");
+            else Checks.requireNonNegative(focalDistance, "focal distance");
         }
 
         /**
@@ -218,8 +219,8 @@ public record View(Point location, Frame frame, ViewPlane plane, Lens lens) {
          * @throws IllegalArgumentException when either is out of range, naming it
          */
         public static Lens thin(double focalDistance, double apertureRadius) {
-            Util.requirePositive(focalDistance, "focal distance");
-            Util.requireNonNegative(apertureRadius, "aperture radius");
+            Checks.requirePositive(focalDistance, "focal distance");
+            Checks.requireNonNegative(apertureRadius, "aperture radius");
             return new Lens(apertureRadius, focalDistance);
         }
 

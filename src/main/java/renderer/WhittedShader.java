@@ -3,9 +3,12 @@ package renderer;
 import geometries.Geometry;
 import geometries.Hit;
 import geometries.Intersectable;
+import geometries.LeanQueries;
+import lighting.LightQueries;
 import lighting.LightSource;
 import primitives.Color;
 import primitives.Double3;
+import primitives.Kernels;
 import primitives.Material;
 import primitives.Point;
 import primitives.Rgb;
@@ -93,7 +96,7 @@ final class WhittedShader {
         ctx.requireWithinBudget(0); // the camera ray is counted already
         Level top = ctx.top();
         Hit hit = top.hit.reset(Double.POSITIVE_INFINITY);
-        if (!world.closestHit(hit)) return top.colour.set(background);
+        if (!LeanQueries.closestHit(world, hit)) return top.colour.set(background);
         Double3 kA = hit.getGeometry().getMaterial().kA; // ambient = I_A·kA(light)·kA(material)
         top.weight.set(1, 1, 1);
         calcColor(top, beamSize, ctx);
@@ -137,7 +140,7 @@ final class WhittedShader {
         LightSource[] lights = this.lights;
         for (int li = 0; li < lights.length; ++li) {
             LightSource light = lights[li];
-            light.getL(px, py, pz, l);
+            LightQueries.getL(light, px, py, pz, l);
             double lx = l[0], ly = l[1], lz = l[2];
             double nl = Util.alignZero(nx * lx + ny * ly + nz * lz);
             if (nl * nv <= 0) continue; // the light is on the other side of the surface from the viewer
@@ -146,7 +149,7 @@ final class WhittedShader {
             double minusVR = -Util.alignZero(rx * vx + ry * vy + rz * vz);
             double spec = minusVR <= 0 ? 0 : Math.pow(minusVR, material.nShininess);
             double absNl = Math.abs(nl);
-            light.getIntensity(px, py, pz, out);
+            LightQueries.getIntensity(light, px, py, pz, out);
             intensity.set(out[0], out[1], out[2]);
             phong.setScaled(kD, absNl).addScaled(kS, spec);
             // Nothing to shadow (a spot light turned away, a material with kD = kS = 0): the term
@@ -179,7 +182,7 @@ final class WhittedShader {
         if (radius == 0) {
             ctx.requireWithinBudget(1); // thousands of lights at each of a thousand shaded points
             ctx.shadowRays++;
-            cache.trace(w, ctx.shadow.secondary(px, py, pz, -lx, -ly, -lz, nx, ny, nz), light.getDistance(px, py, pz), li, walk);
+            cache.trace(w, ctx.shadow.secondary(px, py, pz, -lx, -ly, -lz, nx, ny, nz), LightQueries.getDistance(light, px, py, pz), li, walk);
             return walk.product;
         }
         // Soft shadow: stratified points on the disk of the light facing p.
@@ -188,7 +191,7 @@ final class WhittedShader {
         double[] basis = ctx.vector;
         perpendicular(tx, ty, tz, basis);
         double ax = basis[0], ay = basis[1], az = basis[2];
-        Vector.crossProduct(tx, ty, tz, ax, ay, az, basis);
+        Kernels.crossProduct(tx, ty, tz, ax, ay, az, basis);
         double bx = basis[0], by = basis[1], bz = basis[2];
         double side = nx * tx + ny * ty + nz * tz;
         Rgb sum = ctx.transparency.setZero();
@@ -310,7 +313,7 @@ final class WhittedShader {
         double[] basis = ctx.vector;
         perpendicular(dirX, dirY, dirZ, basis);
         double ax = basis[0], ay = basis[1], az = basis[2];
-        Vector.crossProduct(dirX, dirY, dirZ, ax, ay, az, basis);
+        Kernels.crossProduct(dirX, dirY, dirZ, ax, ay, az, basis);
         double bx = basis[0], by = basis[1], bz = basis[2];
         double nx = hit.normalX(), ny = hit.normalY(), nz = hit.normalZ();
         double side = nx * dirX + ny * dirY + nz * dirZ;
@@ -343,7 +346,7 @@ final class WhittedShader {
     private Rgb shadeSecondaryRay(Level at, int budget, TraceContext ctx) {
         ctx.requireWithinBudget(1); // a path that reflects and transmits at every level doubles at each
         ctx.secondaryRays++;
-        if (world.closestHit(at.hit)) return calcColor(at, budget, ctx);
+        if (LeanQueries.closestHit(world, at.hit)) return calcColor(at, budget, ctx);
         return at.colour.set(background);
     }
 
@@ -367,8 +370,8 @@ final class WhittedShader {
      */
     private static void perpendicular(double x, double y, double z, double[] out) {
         Vector axis = Math.abs(x) < 0.9 ? Vector.AXIS_X : Vector.AXIS_Y;
-        Vector.crossProduct(x, y, z, axis.getX(), axis.getY(), axis.getZ(), out);
-        Vector.normalize(out[0], out[1], out[2], out);
+        Kernels.crossProduct(x, y, z, axis.getX(), axis.getY(), axis.getZ(), out);
+        Kernels.normalize(out[0], out[1], out[2], out);
     }
 
     private static double frac(double x) {

@@ -21,7 +21,9 @@
  * <ul>
  * <li>The course's face, which scene tests call: {@code Camera} and its {@code Builder},
  * {@code ImageWriter}, {@code RayTracerBase} with {@code RayTracerBasic} (the Whitted tracer) and
- * {@code SimpleRayTracer}, {@code AntiAliasing}, {@code RayTracerType}, and what a render reports,
+ * {@code SimpleRayTracer}, {@code AntiAliasing}, {@code RayTracerType} (their engine members
+ * package-private, reached from other packages through {@code CameraReports} and
+ * {@code ImageWriters}), and what a render reports,
  * {@code RenderStats} (with the JDK Flight Recorder events {@code RenderEvent} and, for each PNG
  * written, {@code ImageWriteEvent}), and {@code WriteListener}, which a render listener implements
  * to hear of the camera's writes too.</li>

@@ -105,13 +105,13 @@ class RawLightTest {
         double[] l = new double[3], c = new double[3];
         for (int i = 0; i < 1000; ++i) {
             Point p = new Point(100 * rnd.nextGaussian(), 100 * rnd.nextGaussian(), 100 * rnd.nextGaussian());
-            light.getL(p.getX(), p.getY(), p.getZ(), l);
+            LightQueries.getL(light, p.getX(), p.getY(), p.getZ(), l);
             Vector lo = light.getL(p);
             assertThat(l).as("getL at %s", p).containsExactly(lo.getX(), lo.getY(), lo.getZ());
-            light.getIntensity(p.getX(), p.getY(), p.getZ(), c);
+            LightQueries.getIntensity(light, p.getX(), p.getY(), p.getZ(), c);
             Color co = light.getIntensity(p);
             assertThat(c).as("getIntensity at %s", p).containsExactly(co.getR(), co.getG(), co.getB());
-            assertThat(light.getDistance(p.getX(), p.getY(), p.getZ())).as("getDistance at %s", p)
+            assertThat(LightQueries.getDistance(light, p.getX(), p.getY(), p.getZ())).as("getDistance at %s", p)
                     .isEqualTo(light.getDistance(p));
         }
     }

@@ -15,6 +15,7 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 import geometries.Cylinder;
 import geometries.Geometry;
+import geometries.LeanQueries;
 import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
@@ -23,6 +24,7 @@ import geometries.TriangleMesh;
 import geometries.Tube;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
+import lighting.LightQueries;
 import lighting.PointLight;
 import lighting.SpotLight;
 
@@ -150,10 +152,9 @@ class LibraryClassesTest {
 
     /** The library's answer for {@code object}, through the predicate its package uses. */
     private static boolean library(Object object) {
-        if (object instanceof Geometry g) return g.isLibraryShape();
-        if (object instanceof PointLight l) return l.isLibraryLight(); // a spot light too
-        if (object instanceof DirectionalLight l) return l.isLibraryLight();
-        if (object instanceof AmbientLight l) return l.isLibraryLight();
+        if (object instanceof Geometry g) return LeanQueries.isLibraryShape(g);
+        if (object instanceof PointLight || object instanceof DirectionalLight || object instanceof AmbientLight)
+            return LightQueries.isLibraryLight(object); // a spot light is a point light
         throw new AssertionError("no predicate for " + object.getClass());
     }
 
@@ -163,7 +164,7 @@ class LibraryClassesTest {
     void theOneRule(String name, Object object, boolean expected) {
         assertThat(library(object)).as(name).isEqualTo(expected);
         if (object instanceof Geometry g)
-            assertThat(g.isLibraryPrimitive()).as("%s: a library shape of one intersection test", name)
+            assertThat(LeanQueries.isLibraryPrimitive(g)).as("%s: a library shape of one intersection test", name)
                     .isEqualTo(expected && !(g instanceof TriangleMesh));
     }
 

@@ -85,28 +85,28 @@ class UtilTest {
     class Requirements {
         @Test
         void requirePositive() {
-            assertThat(Util.requirePositive(2.5, "radius")).isEqualTo(2.5);
-            assertThatIllegalArgumentException().isThrownBy(() -> Util.requirePositive(0, "radius"))
+            assertThat(Checks.requirePositive(2.5, "radius")).isEqualTo(2.5);
+            assertThatIllegalArgumentException().isThrownBy(() -> Checks.requirePositive(0, "radius"))
                     .withMessageContaining("radius").withMessageContaining("0.0");
-            assertThatIllegalArgumentException().isThrownBy(() -> Util.requirePositive(Double.NaN, "radius"))
+            assertThatIllegalArgumentException().isThrownBy(() -> Checks.requirePositive(Double.NaN, "radius"))
                     .withMessageContaining("NaN");
-            assertThatIllegalArgumentException().isThrownBy(() -> Util.requirePositive(Double.POSITIVE_INFINITY, "radius"))
+            assertThatIllegalArgumentException().isThrownBy(() -> Checks.requirePositive(Double.POSITIVE_INFINITY, "radius"))
                     .withMessageContaining("Infinity");
         }
 
         @Test
         void requireNonNegative() {
-            assertThat(Util.requireNonNegative(0, "spread")).isZero();
-            assertThatIllegalArgumentException().isThrownBy(() -> Util.requireNonNegative(-0.5, "spread"))
+            assertThat(Checks.requireNonNegative(0, "spread")).isZero();
+            assertThatIllegalArgumentException().isThrownBy(() -> Checks.requireNonNegative(-0.5, "spread"))
                     .withMessageContaining("spread").withMessageContaining("-0.5");
-            assertThatIllegalArgumentException().isThrownBy(() -> Util.requireNonNegative(Double.NaN, "spread"))
+            assertThatIllegalArgumentException().isThrownBy(() -> Checks.requireNonNegative(Double.NaN, "spread"))
                     .withMessageContaining("NaN");
         }
 
         @Test
         void requireFinite() {
-            assertThat(Util.requireFinite(-7, "x")).isEqualTo(-7);
-            assertThatIllegalArgumentException().isThrownBy(() -> Util.requireFinite(Double.NEGATIVE_INFINITY, "x"))
+            assertThat(Checks.requireFinite(-7, "x")).isEqualTo(-7);
+            assertThatIllegalArgumentException().isThrownBy(() -> Checks.requireFinite(Double.NEGATIVE_INFINITY, "x"))
                     .withMessageContaining("-Infinity");
         }
     }

@@ -10,10 +10,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-import geometries.Geometries;
+import geometries.CountingGeometries;
 import geometries.Geometry;
 import geometries.Hit;
-import geometries.HitVisitor;
+import geometries.LeanQueries;
 import geometries.Sphere;
 import geometries.Triangle;
 import geometries.TriangleMesh;
@@ -26,17 +26,6 @@ class ShadowCacheTest {
     /** @return the walk's product of kT, channel by channel */
     private static double[] channels(Transmittance t) {
         return new double[] { t.product.r(), t.product.g(), t.product.b() };
-    }
-
-    /** Geometries that count their walks: a walk not taken is a shadow ray the cache answered. */
-    private static final class Counted extends Geometries {
-        int walks;
-
-        @Override
-        public boolean visitHits(Hit query, double maxDistance, HitVisitor visitor) {
-            ++walks;
-            return super.visitHits(query, maxDistance, visitor);
-        }
     }
 
     /** A user's sphere: never kept, as its class may answer differently from one call to the next. */
@@ -52,9 +41,9 @@ class ShadowCacheTest {
      * A cloud of shapes, opaque and partly transparent, library and user shapes and a mesh (both
      * never kept), in a cube of side 20 around the origin.
      */
-    private static Counted cloud(long seed) {
+    private static CountingGeometries cloud(long seed) {
         Random rnd = new Random(seed);
-        Counted g = new Counted();
+        CountingGeometries g = new CountingGeometries();
         for (int i = 0; i < 300; ++i) {
             Point c = new Point(rnd.nextDouble(-10, 10), rnd.nextDouble(-10, 10), rnd.nextDouble(-10, 10));
             int kind = rnd.nextInt(4);
@@ -81,7 +70,7 @@ class ShadowCacheTest {
     @ValueSource(longs = { 1, 2, 3 })
     @DisplayName("coherent shadow rays toward two lights: the same product of kT as the walk alone, bit for bit, and some answered without it")
     void sameAsTheWalk(long seed) {
-        Counted world = cloud(seed);
+        CountingGeometries world = cloud(seed);
         ShadowCache cache = new ShadowCache();
         Transmittance cached = new Transmittance(THRESHOLD), walked = new Transmittance(THRESHOLD);
         RayHit a = new RayHit(), b = new RayHit();
@@ -99,10 +88,10 @@ class ShadowCacheTest {
             double distance = i % 3 == 0 ? Double.POSITIVE_INFINITY : Math.sqrt(dx * dx + dy * dy + dz * dz);
             a.ray(px, py, pz, dx, dy, dz);
             b.ray(px, py, pz, dx, dy, dz);
-            int walks = world.walks;
+            int walks = world.walks();
             cache.trace(world, a, distance, light, cached);
-            if (world.walks == walks) ++blocked;
-            world.visitHits(b, distance, walked.reset());
+            if (world.walks() == walks) ++blocked;
+            LeanQueries.visitHits(world, b, distance, walked.reset());
             assertThat(channels(cached)).as("ray %d", i)
                     .containsExactly(channels(walked));
         }
@@ -112,7 +101,7 @@ class ShadowCacheTest {
     @Nested
     @DisplayName("what is kept")
     class Kept {
-        private final Counted world = new Counted();
+        private final CountingGeometries world = new CountingGeometries();
         private final Hit ray = new RayHit().ray(0, 0, -10, 0, 0, 1);
         private final Transmittance tr = new Transmittance(THRESHOLD);
         private final ShadowCache cache = new ShadowCache();
@@ -120,10 +109,10 @@ class ShadowCacheTest {
         /** Traces the ray twice toward light 0: @return whether the second time was answered without a walk */
         private boolean secondAnswered() {
             cache.trace(world, ray, 100, 0, tr);
-            int walks = world.walks;
+            int walks = world.walks();
             cache.trace(world, ray, 100, 0, tr);
             assertThat(channels(tr)).containsExactly(0, 0, 0);
-            return world.walks == walks;
+            return world.walks() == walks;
         }
 
         @Test
@@ -138,12 +127,12 @@ class ShadowCacheTest {
         void notKept() {
             world.add(new UserSphere(Point.ZERO, 1));
             assertThat(secondAnswered()).isFalse();
-            Counted meshWorld = new Counted();
+            CountingGeometries meshWorld = new CountingGeometries();
             meshWorld.add(new TriangleMesh(new double[] { -1, -1, 0, 2, -1, 0, -1, 2, 0 }, new int[] { 0, 1, 2 }));
             cache.trace(meshWorld, ray, 100, 0, tr);
-            int walks = meshWorld.walks;
+            int walks = meshWorld.walks();
             cache.trace(meshWorld, ray, 100, 0, tr);
-            assertThat(meshWorld.walks).isEqualTo(walks + 1);
+            assertThat(meshWorld.walks()).isEqualTo(walks + 1);
         }
 
         @Test
@@ -162,12 +151,12 @@ class ShadowCacheTest {
         void perLight() {
             world.add(new Sphere(Point.ZERO, 1));
             cache.trace(world, ray, 100, 0, tr);
-            int walks = world.walks;
+            int walks = world.walks();
             cache.trace(world, ray, 100, 1, tr); // another light: nothing kept for it yet
-            assertThat(world.walks).isEqualTo(walks + 1);
+            assertThat(world.walks()).isEqualTo(walks + 1);
             Hit past = new RayHit().ray(5, 0, -10, 0, 0, 1); // misses the sphere
             cache.trace(world, past, 100, 0, tr);
-            assertThat(world.walks).isEqualTo(walks + 2);
+            assertThat(world.walks()).isEqualTo(walks + 2);
             assertThat(tr.product.r()).isEqualTo(1);
         }
 

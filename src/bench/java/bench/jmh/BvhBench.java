@@ -21,6 +21,7 @@ import org.openjdk.jmh.annotations.Warmup;
 import geometries.Bvh;
 import geometries.Hit;
 import geometries.HitVisitor;
+import geometries.LeanQueries;
 import lighting.LightSource;
 import primitives.Point;
 import primitives.Ray;
@@ -92,7 +93,7 @@ public class BvhBench {
             for (int j = 0; j < SIDE; ++j) {
                 Ray ray = camera.constructRay(SIDE, SIDE, j, i);
                 cameraRays[i * SIDE + j] = ray;
-                if (bvh.closestHit(ray, hit.reset(Double.POSITIVE_INFINITY))) {
+                if (LeanQueries.closestHit(bvh, ray, hit.reset(Double.POSITIVE_INFINITY))) {
                     Point p = hit.point(ray);
                     shadows.add(new Ray(p, light.getL(p).scale(-1), hit.normal(p)));
                     distances.add(light.getDistance(p));
@@ -114,7 +115,7 @@ public class BvhBench {
     public int closestHit() {
         int hits = 0;
         for (Ray r : cameraRays)
-            if (bvh.closestHit(r, hit.reset(Double.POSITIVE_INFINITY))) ++hits;
+            if (LeanQueries.closestHit(bvh, r, hit.reset(Double.POSITIVE_INFINITY))) ++hits;
         return hits;
     }
 
@@ -123,7 +124,7 @@ public class BvhBench {
     public int anyHitFirst() {
         int occluded = 0;
         for (int i = 0; i < RAYS; ++i)
-            if (!bvh.visitHits(shadowRays[i], shadowDistances[i], STOP_AT_FIRST)) ++occluded;
+            if (!LeanQueries.visitHits(bvh, shadowRays[i], shadowDistances[i], STOP_AT_FIRST)) ++occluded;
         return occluded;
     }
 
@@ -131,7 +132,7 @@ public class BvhBench {
     @OperationsPerInvocation(RAYS)
     public int anyHitAll() {
         visited = 0;
-        for (int i = 0; i < RAYS; ++i) bvh.visitHits(shadowRays[i], shadowDistances[i], countAll);
+        for (int i = 0; i < RAYS; ++i) LeanQueries.visitHits(bvh, shadowRays[i], shadowDistances[i], countAll);
         return visited;
     }
 }

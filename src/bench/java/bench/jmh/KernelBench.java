@@ -17,6 +17,7 @@ import org.openjdk.jmh.annotations.Warmup;
 
 import geometries.BoundingBox;
 import geometries.Hit;
+import geometries.LeanQueries;
 import geometries.Sphere;
 import geometries.Triangle;
 import primitives.Point;
@@ -85,7 +86,7 @@ public class KernelBench {
         int hits = 0;
         for (Ray r : rays) {
             hit.reset(Double.POSITIVE_INFINITY);
-            if (sphere.closestHit(r, hit)) ++hits;
+            if (LeanQueries.closestHit(sphere, r, hit)) ++hits;
         }
         return hits;
     }
@@ -96,7 +97,7 @@ public class KernelBench {
         int hits = 0;
         for (Ray r : rays) {
             hit.reset(Double.POSITIVE_INFINITY);
-            if (triangle.closestHit(r, hit)) ++hits;
+            if (LeanQueries.closestHit(triangle, r, hit)) ++hits;
         }
         return hits;
     }

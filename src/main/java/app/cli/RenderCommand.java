@@ -26,6 +26,7 @@ import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.Execution;
 import renderer.ImageWriter;
+import renderer.ImageWriters;
 import scene.Scene;
 import scene.io.FileSource;
 import scene.io.Limits;
@@ -412,7 +413,7 @@ public final class RenderCommand implements Callable<Integer> {
      * one allocation that grows with the image) against the most memory this JVM may use.
      */
     private static String notEnoughMemory(RenderSettings s) {
-        return NAME + ": " + ImageWriter.memoryNeeded(s.width(), s.height())
+        return NAME + ": " + ImageWriters.memoryNeeded(s.width(), s.height())
                 + " (render it smaller with --width or --height, or give Java more memory with -Xmx)";
     }
 

@@ -3,6 +3,7 @@ package renderer.junit;
 import java.nio.file.Path;
 
 import renderer.ImageWriter;
+import renderer.ImageWriters;
 
 /**
  * The two pictures of a failed comparison, drawn as {@code scripts/verify_images.py} draws them:
@@ -54,7 +55,7 @@ final class DiffImages {
 
     private static void writePng(int w, int h, int[] rgb, Path file) {
         ImageWriter image = new ImageWriter(w, h);
-        image.writeTile(0, 0, w, h, rgb);
+        ImageWriters.writeTile(image, 0, 0, w, h, rgb);
         image.writeToImage(file);
     }
 

@@ -19,6 +19,7 @@ import org.opentest4j.AssertionFailedError;
 
 import renderer.CallingTest;
 import renderer.Camera;
+import renderer.CameraReports;
 import renderer.ImageWriter;
 import renderer.junit.Comparison.Metrics;
 import renderer.junit.Comparison.Status;
@@ -187,7 +188,7 @@ public final class ImageAssertions {
         Path reference = reference(referenceName);
         ImageWriter image = camera.getImageWriter();
         Path stem = outputFolder.resolve(testFolder()).resolve(stem(referenceFolder.relativize(reference)));
-        check(new Render("the render of " + camera.getImageLabel(), Picture.of(image), sibling(stem, ".png"), stem, true,
+        check(new Render("the render of " + CameraReports.imageLabel(camera), Picture.of(image), sibling(stem, ".png"), stem, true,
                 image::writeToImage), reference);
     }
 

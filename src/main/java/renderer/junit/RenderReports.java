@@ -10,6 +10,7 @@ import java.util.function.BiConsumer;
 import org.junit.jupiter.api.TestReporter;
 
 import renderer.Camera;
+import renderer.CameraReports;
 import renderer.ImageWriter;
 import renderer.RenderStats;
 import renderer.WriteListener;
@@ -65,10 +66,10 @@ public final class RenderReports {
     static Map<String, String> figures(Camera camera, RenderStats stats) {
         ImageWriter image = camera.getImageWriter();
         Map<String, String> entry = new LinkedHashMap<>();
-        entry.put("image", camera.getImageLabel());
-        entry.put("scene", camera.getSceneName());
+        entry.put("image", CameraReports.imageLabel(camera));
+        entry.put("scene", CameraReports.sceneName(camera));
         entry.put("size", image.getNx() + "x" + image.getNy());
-        entry.put("mode", camera.describe());
+        entry.put("mode", CameraReports.describe(camera));
         entry.put("threads", Integer.toString(stats.threads()));
         entry.put("time", seconds(stats.seconds()));
         entry.put("rays", Long.toString(stats.totalRays()));
@@ -79,7 +80,7 @@ public final class RenderReports {
     /** The entry {@link #to} publishes for one write. */
     static Map<String, String> write(Camera camera, Path file, double seconds) {
         Map<String, String> entry = new LinkedHashMap<>();
-        entry.put("image", camera.getImageLabel());
+        entry.put("image", CameraReports.imageLabel(camera));
         entry.put("file", file.toString());
         entry.put("write time", seconds(seconds));
         return entry;

@@ -7,7 +7,7 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.Locale;
 
-import renderer.ImageWriter;
+import renderer.ImageWriters;
 
 /**
  * Wording shared by the scene-file reader and the {@code render} command, so that a file that
@@ -49,14 +49,14 @@ public final class Messages {
 
     /**
      * Why code point {@code cp} may not stand in a name, or null when it may: the rule of image
-     * names ({@code ImageWriter.requireFileName}), kept in the renderer's image writer, which
+     * names ({@code ImageWriters.requireFileName}), kept in the renderer's image writer, which
      * names the files.
      *
      * @param cp a Unicode code point
      * @return the kind of character, for a message ("a control character", …), or null
      */
     public static String hidden(int cp) {
-        return ImageWriter.hiddenCharacter(cp);
+        return ImageWriters.hiddenCharacter(cp);
     }
 
     /**

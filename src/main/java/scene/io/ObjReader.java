@@ -15,6 +15,7 @@ import java.util.Locale;
 import java.util.Map;
 import java.util.Objects;
 
+import geometries.MeshChecks;
 import geometries.TriangleMesh;
 import primitives.Util;
 
@@ -335,7 +336,7 @@ public final class ObjReader {
         if (n < 3) throw error("a face needs at least 3 vertices, got " + n);
         for (int j = 1; j + 1 < n; ++j) {
             int a = faceVertex[0], b = faceVertex[j], c = faceVertex[j + 1];
-            if (TriangleMesh.isDegenerate(positions, a, b, c))
+            if (MeshChecks.isDegenerate(positions, a, b, c))
                 throw error((n == 3 ? "degenerate face" : "degenerate triangle (corners 1, " + (j + 1) + ", " + (j + 2)
                         + ") of a " + n + "-vertex face") + ": vertices " + vertex(a) + ", " + vertex(b) + ", "
                         + vertex(c) + " coincide or are collinear (or enclose an area below the zero tolerance)");

@@ -10,6 +10,7 @@ import primitives.Color;
 import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
+import renderer.ImageWriters;
 import renderer.RayBudget;
 import renderer.RayTracerBasic;
 import renderer.Sampling;
@@ -57,7 +58,7 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public static final long MAX_RAYS_PER_PIXEL = RayBudget.MAX_RAYS_PER_PIXEL;
     /** The longest image name, in characters (file names have at most 255 bytes): {@code ImageWriter}'s rule. */
-    public static final int MAX_IMAGE_NAME_LENGTH = ImageWriter.MAX_FILE_NAME_LENGTH;
+    public static final int MAX_IMAGE_NAME_LENGTH = ImageWriters.MAX_FILE_NAME_LENGTH;
     /** The thread count when none is stated: all cores ({@link Camera.Builder#setMultithreading}'s -2). */
     private static final int ALL_CORES = -2;
 
@@ -427,7 +428,7 @@ public final class RenderSettings implements java.io.Serializable {
      *                                  blank braille pattern), naming its code point and its kind
      */
     public static String requireImageName(String name) {
-        return ImageWriter.requireFileName(name);
+        return ImageWriters.requireFileName(name);
     }
 
     /** Each side at least 1 and at most {@link #MAX_PIXELS} pixels in all, naming the size. */

@@ -36,6 +36,7 @@ import java.util.function.BiFunction;
 import geometries.BoundingBox;
 import geometries.Cylinder;
 import geometries.Geometry;
+import geometries.LeanQueries;
 import geometries.Plane;
 import geometries.Polygon;
 import geometries.Sphere;
@@ -44,6 +45,7 @@ import geometries.TriangleMesh;
 import geometries.Tube;
 import lighting.AmbientLight;
 import lighting.DirectionalLight;
+import lighting.LightQueries;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
@@ -327,7 +329,7 @@ public final class XmlSceneReader {
         e.ifPresent("kq", NON_NEGATIVE, light::setKq);
         e.ifPresent("radius", NON_NEGATIVE, light::setRadius);
         try {
-            light.validate(); // checked here, not when rendering, to report it at its place
+            LightQueries.validate(light); // checked here, not when rendering, to report it at its place
         } catch (IllegalArgumentException ex) {
             String at = e.has("kc") ? "kc" : e.has("kl") ? "kl" : "kq";
             String reason = "invalid <" + e.name() + ">: " + ex.getMessage() + " (expected kc, kl and kq ≥ 0, not all 0)";
@@ -436,7 +438,7 @@ public final class XmlSceneReader {
             }
             TriangleMesh mesh = ObjReader.read(new InputStreamReader(new ByteArrayInputStream(bytes), StandardCharsets.UTF_8),
                     obj.toString(), bytes.length);
-            requireWithinRange(mesh.getBoundingBox(), obj);
+            requireWithinRange(LeanQueries.boundingBox(mesh), obj);
             return mesh;
         } catch (ObjFormatException ex) {
             throw e.errorAt("file", e.quote("file") + ": " + ex.getMessage() + " (expected " + expected + ")", ex);

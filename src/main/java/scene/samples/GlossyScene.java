@@ -6,10 +6,10 @@ import lighting.AmbientLight;
 import lighting.DirectionalLight;
 import lighting.PointLight;
 import lighting.SpotLight;
+import primitives.Checks;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point;
-import primitives.Util;
 import primitives.Vector;
 import renderer.Camera;
 import scene.Scene;
@@ -59,7 +59,7 @@ public final class GlossyScene {
      * @throws IllegalArgumentException when the spread is negative or not finite
      */
     public static Scene create(double wallSpread) {
-        Util.requireNonNegative(wallSpread, "wall reflection spread");
+        Checks.requireNonNegative(wallSpread, "wall reflection spread");
         Scene scene = new Scene("glossy")
                 .setBackground(Color.BLACK)
                 .setAmbientLight(new AmbientLight(new Color(255, 255, 255), 0.15));

@@ -33,6 +33,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import app.Project;
 import renderer.AntiAliasing;
 import renderer.ImageWriter;
+import renderer.ImageWriters;
 import scene.io.LoadedScene;
 import scene.io.RenderSettings;
 import scene.io.SceneFormatException;
@@ -245,7 +246,7 @@ class SparkRendererTest {
         @Test
         @DisplayName("an image larger than the driver's heap: refused, naming the MB and --driver-memory")
         void imageTooLarge() throws Exception {
-            assumeTrue(ImageWriter.bytesNeeded(40_000, 40_000) > Runtime.getRuntime().maxMemory(), "the heap is above 6.4 GB");
+            assumeTrue(ImageWriters.bytesNeeded(40_000, 40_000) > Runtime.getRuntime().maxMemory(), "the heap is above 6.4 GB");
             SparkFrame frame = SparkFrame.read(GLOSSY);
             frame = frame.withSettings(frame.settings().withImage("huge", 40_000, 40_000)).withOutput(dir.resolve("huge.png"));
             List<SparkFrame> frames = List.of(frame);

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.Objects;
 
 import renderer.Camera;
+import renderer.CameraReports;
 import renderer.ImageWriter;
 import scene.Scene;
 import scene.io.LoadedScene;
@@ -30,7 +31,7 @@ public final class SparkFrame {
         // The settings replayed onto a camera are checked by it as a local render's are (the ray
         // budget of the command line's changes, say). Those checks do not depend on the image
         // size, so a 1×1 image stands in for the real one, allocated only to assemble the tiles.
-        this.description = camera(settings.withImage(settings.imageName(), 1, 1).newImageWriter()).describe();
+        this.description = CameraReports.describe(camera(settings.withImage(settings.imageName(), 1, 1).newImageWriter()));
     }
 
     /**

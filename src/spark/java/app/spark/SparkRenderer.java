@@ -18,6 +18,7 @@ import org.apache.spark.api.java.JavaSparkContext;
 import org.apache.spark.broadcast.Broadcast;
 
 import renderer.ImageWriter;
+import renderer.ImageWriters;
 import renderer.Progress;
 import scene.io.RenderSettings;
 import scene.io.SceneFormatException;
@@ -273,7 +274,7 @@ public final class SparkRenderer {
      */
     static void requireResultSize(String label, List<SparkFrame> frames, long limit) {
         long bytes = 0;
-        for (SparkFrame f : frames) bytes += ImageWriter.bytesNeeded(f.settings().width(), f.settings().height());
+        for (SparkFrame f : frames) bytes += ImageWriters.bytesNeeded(f.settings().width(), f.settings().height());
         if (limit <= 0 || bytes <= limit) return;
         long mb = 1 << 20, gb = 1 << 30;
         throw new SparkRenderException(label + ": the job's results are " + (bytes + mb - 1) / mb + " MB of pixels, more than "
@@ -299,7 +300,7 @@ public final class SparkRenderer {
     /** @return the bytes a job of {@code frames} in {@code tasks} tasks needs on the driver: its images, its tasks and the headroom */
     static long driverBytesNeeded(List<SparkFrame> frames, int tasks) {
         long bytes = HEADROOM_BYTES + tasks * BYTES_PER_TASK;
-        for (SparkFrame f : frames) bytes += ImageWriter.bytesNeeded(f.settings().width(), f.settings().height());
+        for (SparkFrame f : frames) bytes += ImageWriters.bytesNeeded(f.settings().width(), f.settings().height());
         return bytes;
     }
 
@@ -353,7 +354,7 @@ public final class SparkRenderer {
                 images.clear(); // the memory of the frames before goes back
                 RenderSettings s = f.settings();
                 throw new SparkRenderException(label + ": the driver cannot hold the image: "
-                        + ImageWriter.memoryNeeded(s.width(), s.height()) + (frames.size() > 1 ? " for this frame alone"
+                        + ImageWriters.memoryNeeded(s.width(), s.height()) + (frames.size() > 1 ? " for this frame alone"
                         : "") + " (give the driver more memory with spark-submit --driver-memory, or -Xmx for a local"
                         + " master; or render it smaller)", e);
             }
@@ -380,7 +381,7 @@ public final class SparkRenderer {
         synchronized void add(List<TilePixels> results) {
             for (TilePixels r : results) {
                 Tile t = r.tile();
-                images.get(t.frame()).writeTile(t.x0(), t.y0(), t.x1() - t.x0(), t.y1() - t.y0(), r.rgb());
+                ImageWriters.writeTile(images.get(t.frame()), t.x0(), t.y0(), t.x1() - t.x0(), t.y1() - t.y0(), r.rgb());
                 seconds[tiles++] = r.seconds();
                 rays += r.rays();
             }
@@ -512,7 +513,7 @@ public final class SparkRenderer {
         StringBuilder sizes = new StringBuilder();
         for (SparkFrame f : frames) {
             RenderSettings s = f.settings();
-            bytes += ImageWriter.bytesNeeded(s.width(), s.height());
+            bytes += ImageWriters.bytesNeeded(s.width(), s.height());
             if (sizes.length() > 0) sizes.append(" + ");
             sizes.append(s.width()).append('x').append(s.height());
         }

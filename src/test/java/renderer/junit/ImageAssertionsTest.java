@@ -38,7 +38,9 @@ import primitives.Color;
 import primitives.Point;
 import primitives.Vector;
 import renderer.Camera;
+import renderer.CameraReports;
 import renderer.ImageWriter;
+import renderer.ImageWriters;
 import renderer.RayTracerBasic;
 import renderer.RenderStats;
 import scene.Scene;
@@ -81,7 +83,7 @@ class ImageAssertionsTest {
 
     private static Path png(Path file, int w, int h, int[] rgb) {
         ImageWriter image = new ImageWriter(w, h);
-        image.writeTile(0, 0, w, h, rgb);
+        ImageWriters.writeTile(image, 0, 0, w, h, rgb);
         image.writeToImage(file);
         return file;
     }
@@ -106,7 +108,7 @@ class ImageAssertionsTest {
     /** A camera whose image holds {@code rgb} (no render needed: the assertion reads its image writer). */
     private static Camera cameraShowing(int[] rgb) {
         ImageWriter image = new ImageWriter("junit/gradient", W, H);
-        image.writeTile(0, 0, W, H, rgb);
+        ImageWriters.writeTile(image, 0, 0, W, H, rgb);
         return view().setImageWriter(image).build();
     }
 
@@ -124,7 +126,7 @@ class ImageAssertionsTest {
 
         private ImageWriter writer(int[] rgb) {
             ImageWriter image = new ImageWriter(W, H);
-            image.writeTile(0, 0, W, H, rgb);
+            ImageWriters.writeTile(image, 0, 0, W, H, rgb);
             return image;
         }
 
@@ -293,7 +295,7 @@ class ImageAssertionsTest {
         @DisplayName("of an image named only when written (2024–25) names the test in its message")
         void unnamedImage() {
             ImageWriter image = new ImageWriter(W, H);
-            image.writeTile(0, 0, W, H, greenUp(gradient(), 3, 3, 9));
+            ImageWriters.writeTile(image, 0, 0, W, H, greenUp(gradient(), 3, 3, 9));
             Camera camera = view().setImageWriter(image).build();
             assertThatThrownBy(() -> assertions.assertMatches(camera, "gradient"))
                     .hasMessageStartingWith("the render of ImageAssertionsTest.Failure.unnamedImage() does not match reference");
@@ -510,7 +512,7 @@ class ImageAssertionsTest {
             assertThat(published).hasSize(2);
             assertThat(published.get(0)).containsOnlyKeys("image", "scene", "size", "mode", "threads", "time", "rays", "Mrays/s")
                     .containsEntry("image", "junit/figures").containsEntry("scene", "background").containsEntry("size", "6x4")
-                    .containsEntry("mode", camera.describe()).containsEntry("threads", "2")
+                    .containsEntry("mode", CameraReports.describe(camera)).containsEntry("threads", "2")
                     .containsEntry("rays", Long.toString(stats.totalRays()));
             assertThat(published.get(0).get("time")).matches("\\d+\\.\\d{3} s");
         }

@@ -16,6 +16,7 @@ import org.junit.jupiter.params.provider.ValueSource;
 import geometries.BoundingBox;
 import geometries.Intersectable;
 import geometries.Intersectable.GeoPoint;
+import geometries.LeanQueries;
 import geometries.Polygon;
 import geometries.Sphere;
 import lighting.DirectionalLight;
@@ -82,7 +83,7 @@ class GlossySceneTest {
             double area = 0;
             BoundingBox all = null;
             for (Polygon p : wall()) {
-                BoundingBox b = p.getBoundingBox();
+                BoundingBox b = LeanQueries.boundingBox(p);
                 assertThat(b.getMaxX() - b.getMinX()).isCloseTo(62.5, within(1e-9));
                 assertThat(b.getMaxY() - b.getMinY()).isCloseTo(62.5, within(1e-9));
                 assertThat(b.getMinZ()).isEqualTo(-250);

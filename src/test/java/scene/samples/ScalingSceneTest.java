@@ -15,6 +15,7 @@ import geometries.BoundingBox;
 import geometries.Bvh;
 import geometries.Hit;
 import geometries.Intersectable;
+import geometries.LeanQueries;
 import geometries.Sphere;
 import geometries.Triangle;
 import lighting.DirectionalLight;
@@ -68,7 +69,7 @@ class ScalingSceneTest {
         void trianglesNearTheCube(int n) {
             double reach = ScalingScene.SIDE / 2 + 0.4 * ScalingScene.SIDE / Math.cbrt(n);
             assertThat(triangles(ScalingScene.create(n))).allSatisfy(t -> {
-                BoundingBox b = t.getBoundingBox();
+                BoundingBox b = LeanQueries.boundingBox(t);
                 assertThat(List.of(b.getMinX(), b.getMinY(), b.getMinZ(), b.getMaxX(), b.getMaxY(), b.getMaxZ()))
                         .allSatisfy(v -> assertThat(v).isBetween(-reach, reach));
             });
@@ -104,7 +105,7 @@ class ScalingSceneTest {
             }
             List<Triangle> ta = triangles(a), tb = triangles(b);
             for (int i = 0; i < ta.size(); ++i) {
-                BoundingBox ba = ta.get(i).getBoundingBox(), bb = tb.get(i).getBoundingBox();
+                BoundingBox ba = LeanQueries.boundingBox(ta.get(i)), bb = LeanQueries.boundingBox(tb.get(i));
                 assertThat(new double[] { ba.getMinX(), ba.getMinY(), ba.getMinZ(), ba.getMaxX(), ba.getMaxY(), ba.getMaxZ() })
                         .containsExactly(bb.getMinX(), bb.getMinY(), bb.getMinZ(), bb.getMaxX(), bb.getMaxY(), bb.getMaxZ());
             }
@@ -148,7 +149,7 @@ class ScalingSceneTest {
                 int hits = 0;
                 for (int i = 0; i < 20; ++i)
                     for (int j = 0; j < 20; ++j)
-                        if (world.closestHit(c.constructRay(20, 20, j, i), hit.reset(Double.POSITIVE_INFINITY))) ++hits;
+                        if (LeanQueries.closestHit(world, c.constructRay(20, 20, j, i), hit.reset(Double.POSITIVE_INFINITY))) ++hits;
                 assertThat(hits).as("camera rays hitting the scene of n = %d, out of 400", n).isGreaterThan(200);
             }
         }

@@ -1,0 +1,107 @@
+package geometries;
+
+import primitives.Ray;
+
+/**
+ * The renderer's way into a shape beside the course's list queries: the closest-hit query and the
+ * any-hit walk, which build no list, the bounding box, and whether a shape is one of the library's
+ * own. Static, and apart from {@link Intersectable}, so that a student completing
+ * {@code sphere.} sees the course's methods only; the members these call are package-private, so
+ * the library's shapes override them and a user's own shape inherits the defaults, which answer
+ * through its course hook. Each method is one call, which the JIT inlines: the renderer's inner
+ * loop pays nothing for the indirection.
+ *
+ * @hidden internal: the renderer's queries of a shape; a scene test asks findIntersections or findGeoIntersections
+ */
+public final class LeanQueries {
+    private LeanQueries() {
+    }
+
+    /**
+     * The closest hit of the ray {@code hit} carries (see {@link Hit#reset(double)} for its bound):
+     * a hit at distance {@code t} with {@code alignZero(t) > 0} and {@code t} below {@code hit}'s
+     * current distance replaces the record. No object is made for a library shape.
+     *
+     * @param shape the shape, list or tree asked
+     * @param hit   the record holding the query ray; its {@code t} is the strict upper bound
+     * @return true when {@code hit} was updated
+     */
+    public static boolean closestHit(Intersectable shape, Hit hit) {
+        return shape.closestHit(hit);
+    }
+
+    /**
+     * {@link #closestHit(Intersectable, Hit)} of {@code ray}, which is loaded into {@code hit}.
+     *
+     * @param shape the shape, list or tree asked
+     * @param ray   the ray to intersect
+     * @param hit   the record to update; its {@code t} is the strict upper bound
+     * @return true when {@code hit} was updated
+     */
+    public static boolean closestHit(Intersectable shape, Ray ray, Hit hit) {
+        return shape.closestHit(ray, hit);
+    }
+
+    /**
+     * The any-hit walk of the ray {@code query} carries: calls {@code visitor} for every hit at
+     * distance {@code t} with {@code alignZero(t) > 0} and {@code alignZero(t - maxDistance) <= 0}
+     * (the course's inclusive bound), in no particular order, until it returns false. Only the ray
+     * of {@code query} is read.
+     *
+     * @param shape       the shape, list or tree asked
+     * @param query       the record holding the query ray
+     * @param maxDistance the largest distance from the ray head that counts, in scene units
+     * @param visitor     called with each hit's geometry and distance
+     * @return false when the visitor stopped the walk
+     */
+    public static boolean visitHits(Intersectable shape, Hit query, double maxDistance, HitVisitor visitor) {
+        return shape.visitHits(query, maxDistance, visitor);
+    }
+
+    /**
+     * {@link #visitHits(Intersectable, Hit, double, HitVisitor)} of {@code ray}.
+     *
+     * @param shape       the shape, list or tree asked
+     * @param ray         the ray to intersect
+     * @param maxDistance the largest distance from the ray head that counts, in scene units
+     * @param visitor     called with each hit's geometry and distance
+     * @return false when the visitor stopped the walk
+     */
+    public static boolean visitHits(Intersectable shape, Ray ray, double maxDistance, HitVisitor visitor) {
+        return shape.visitHits(ray, maxDistance, visitor);
+    }
+
+    /**
+     * @param shape a shape, list or tree
+     * @return the axis-aligned box enclosing it, or null when it is unbounded (a plane, an
+     *         infinite tube, a user's own shape)
+     */
+    public static BoundingBox boundingBox(Intersectable shape) {
+        return shape.getBoundingBox();
+    }
+
+    /**
+     * Whether {@code g} is one of the library's own shapes, not a subclass of one: its geometry is
+     * fixed when it is made and its queries have no side effects, so what a renderer learnt of it
+     * holds from one ray or render to the next. A user's class may move its shape or count its
+     * calls, so nothing is kept for it.
+     *
+     * @param g a geometry
+     * @return true for an instance of exactly one of the library's shape classes
+     */
+    public static boolean isLibraryShape(Geometry g) {
+        return g.isLibraryShape();
+    }
+
+    /**
+     * Whether {@code g} is a {@link #isLibraryShape library shape} whose queries are one
+     * intersection test (all but a mesh, which loops over its triangles), so that asking it again
+     * costs no more than a tree's test of one primitive: the renderer's shadow cache keeps only these.
+     *
+     * @param g a geometry
+     * @return true for an instance of exactly one of the library's shape classes other than {@link TriangleMesh}
+     */
+    public static boolean isLibraryPrimitive(Geometry g) {
+        return g.isLibraryPrimitive();
+    }
+}

@@ -1,0 +1,43 @@
+package renderer;
+
+/**
+ * What reports say of a camera: its image's name, its scene's name and its sampling settings in
+ * words. Static, and apart from {@link Camera}, so that a student completing {@code camera.} sees
+ * the course's methods only; the JUnit reports ({@code renderer.junit}) and the Spark entry, in
+ * other packages, call these.
+ *
+ * @hidden internal: the camera's words for reports; a scene test renders and writes the image
+ */
+public final class CameraReports {
+    private CameraReports() {
+    }
+
+    /**
+     * The name the summary and write lines, progress lines, test reports and JFR events give the
+     * image: its writer's name, or for an unnamed writer (named only when written, the 2024–25
+     * flow) the calling test method ({@code SpheresTest.twoSpheres()}), or {@code (unnamed)}
+     * outside a test.
+     *
+     * @param camera a built camera
+     * @return the image's name as the camera's reports show it
+     */
+    public static String imageLabel(Camera camera) {
+        return camera.getImageLabel();
+    }
+
+    /**
+     * @param camera a built camera
+     * @return the name of the scene the camera's tracer traces ({@code Scene.name})
+     */
+    public static String sceneName(Camera camera) {
+        return camera.getSceneName();
+    }
+
+    /**
+     * @param camera a built camera
+     * @return its sampling settings, tracer and seed in words, for summaries and benchmark tables
+     */
+    public static String describe(Camera camera) {
+        return camera.describe();
+    }
+}
