@@ -161,9 +161,9 @@ final class Manifest {
         makeFolders(target.getParent());
         journal(new Entry(Entry.REPLACE, path, to, backup, sha(content)));
         faults.reach("keep " + path);
-        copy(original, kept);
+        copy(original, kept, faults);
         faults.reach("write " + to);
-        write(target, content, original);
+        write(target, content, original, faults);
         if (!target.equals(original)) {
             faults.reach("delete " + path);
             Files.delete(original);
@@ -178,7 +178,7 @@ final class Manifest {
         makeFolders(target.getParent());
         journal(new Entry(Entry.CREATE, path, "", "", sha(bytes)));
         faults.reach("write " + path);
-        write(target, bytes, target);
+        write(target, bytes, target, faults);
     }
 
     /** Marks the migration ended: from now on every change it lists must be as it left it. */
@@ -323,7 +323,7 @@ final class Manifest {
                 if (status == Status.DONE) {
                     Files.createDirectories(original.getParent());
                     faults.reach("restore " + e.path());
-                    copy(kept, original); // as it was: its mode, and a link as the link
+                    copy(kept, original, faults); // as it was: its mode, and a link as the link
                     if (!e.to().equals(e.path())) {
                         faults.reach("delete " + e.to());
                         Files.deleteIfExists(Inside.resolve(dir, e.to()));
@@ -369,7 +369,7 @@ final class Manifest {
         faults.reach("manifest " + state.name().toLowerCase(java.util.Locale.ROOT));
         StringBuilder text = new StringBuilder(HEADER).append('\n').append(state.line).append('\n');
         for (Entry e : entries) text.append(e.line()).append('\n');
-        write(Inside.resolve(dir, FILE), text.toString());
+        write(Inside.resolve(dir, FILE), text.toString().getBytes(StandardCharsets.UTF_8), Inside.resolve(dir, FILE), faults);
     }
 
     private String relative(Path p) {
@@ -380,10 +380,11 @@ final class Manifest {
      * Copies {@code from} to {@code to} as it is (mode, and a link as the link) through a new
      * temporary file renamed into place: {@code to} is the old file or the whole copy, never half.
      */
-    private static void copy(Path from, Path to) throws IOException {
+    private static void copy(Path from, Path to, Faults faults) throws IOException {
         Path temp = Files.createTempFile(to.getParent(), "." + to.getFileName(), TEMPORARY);
         try {
             Files.copy(from, temp, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.COPY_ATTRIBUTES, LinkOption.NOFOLLOW_LINKS);
+            faults.reach("rename into " + to.getFileName());
             Files.move(temp, to, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
         } finally {
             Files.deleteIfExists(temp);
@@ -392,7 +393,7 @@ final class Manifest {
 
     /** Writes through a temporary file beside the target, so no half-written file is ever left. */
     static void write(Path target, String content) throws IOException {
-        write(target, content.getBytes(StandardCharsets.UTF_8), target);
+        write(target, content.getBytes(StandardCharsets.UTF_8), target, Faults.NONE);
     }
 
     /**
@@ -402,7 +403,7 @@ final class Manifest {
      * {@code modeOf} where that is a regular file (the original of a rewritten file), else
      * {@code rw-r--r--}.
      */
-    static void write(Path target, byte[] content, Path modeOf) throws IOException {
+    static void write(Path target, byte[] content, Path modeOf, Faults faults) throws IOException {
         Files.createDirectories(target.getParent());
         Path temp = Files.createTempFile(target.getParent(), "." + target.getFileName(), TEMPORARY);
         try {
@@ -413,9 +414,25 @@ final class Manifest {
             try (FileChannel c = FileChannel.open(temp, StandardOpenOption.WRITE)) {
                 c.force(true); // on disk before the rename makes it the file
             }
+            faults.reach("rename into " + target.getFileName());
             Files.move(temp, target, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
         } finally {
             Files.deleteIfExists(temp);
+        }
+    }
+
+    /**
+     * Deletes the temporary files a run stopped part-way left in {@code course-backup/} (of the
+     * manifest itself, the report, a kept original), so that the folder empties when the undo
+     * has taken everything back. The migration's own folder: nothing else in it is touched.
+     */
+    static void deleteTemporariesInBackup(Path dir) throws IOException {
+        Path backup = Inside.resolve(dir, FILE).getParent();
+        if (!Files.isDirectory(backup, LinkOption.NOFOLLOW_LINKS)) return;
+        try (Stream<Path> walk = Files.walk(backup)) {
+            for (Path t : walk.filter(t -> t.getFileName().toString().startsWith(".") && t.getFileName().toString().endsWith(TEMPORARY)
+                    && Files.isRegularFile(t, LinkOption.NOFOLLOW_LINKS)).toList())
+                Files.deleteIfExists(t);
         }
     }
 

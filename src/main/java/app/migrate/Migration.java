@@ -146,6 +146,7 @@ public final class Migration {
         List<SourceFile> extras = files.stream().filter(f -> !f.test() && !course.contains(f)).toList();
 
         Path backup = d.resolve(Layout.BACKUP);
+        if (Files.isDirectory(backup) && !Files.exists(d.resolve(Manifest.FILE))) deleteTemporaries(d);
         if (Files.exists(backup) && !isEmptyFolder(backup)) { // empty: a run stopped before it wrote anything
             Manifest.State state = Manifest.stateOf(d);
             if (state == Manifest.State.APPLYING || state == Manifest.State.UNDOING)
@@ -222,8 +223,9 @@ public final class Migration {
 
     private void undoHeld(Path d) throws MigrationException {
         Path backup = d.resolve(Layout.BACKUP);
-        if (!Files.exists(d.resolve(Manifest.FILE), LinkOption.NOFOLLOW_LINKS) && Files.isDirectory(backup, LinkOption.NOFOLLOW_LINKS)
-                && isEmptyFolder(backup)) {
+        boolean noManifest = !Files.exists(d.resolve(Manifest.FILE), LinkOption.NOFOLLOW_LINKS);
+        if (noManifest && Files.isDirectory(backup, LinkOption.NOFOLLOW_LINKS)) deleteTemporaries(d);
+        if (noManifest && Files.isDirectory(backup, LinkOption.NOFOLLOW_LINKS) && isEmptyFolder(backup)) {
             try {
                 Files.delete(backup); // a migration stopped before its manifest was written: all it made
             } catch (IOException e) {
@@ -247,6 +249,7 @@ public final class Migration {
             manifest.undoAll();
             Files.deleteIfExists(d.resolve(Manifest.FILE));
             Files.deleteIfExists(d.resolve(REPORT));
+            Manifest.deleteTemporariesInBackup(d);
             deleteEmptyFolders(d.resolve(Layout.BACKUP));
         } catch (IOException e) {
             throw new MigrationException("undo of " + d + " stopped part-way: " + e.getMessage()
@@ -275,6 +278,15 @@ public final class Migration {
             Runtime.getRuntime().removeShutdownHook(hook);
         } catch (IllegalStateException shuttingDown) {
             // the JVM is ending: the hook runs, and its line is what the user needs
+        }
+    }
+
+    /** A run stopped while it wrote its first manifest left only its temporary file in course-backup/. */
+    private static void deleteTemporaries(Path d) throws MigrationException {
+        try {
+            Manifest.deleteTemporariesInBackup(d);
+        } catch (IOException e) {
+            throw new MigrationException("cannot read " + d.resolve(Layout.BACKUP) + ": " + e.getMessage(), e);
         }
     }
 
@@ -684,13 +696,15 @@ public final class Migration {
                 }
             }
             faults.reach("write " + REPORT);
-            Manifest.write(Inside.resolve(d, REPORT), String.join("\n", report) + "\n");
+            Path reportFile = Inside.resolve(d, REPORT);
+            Manifest.write(reportFile, (String.join("\n", report) + "\n").getBytes(StandardCharsets.UTF_8), reportFile, faults);
             manifest.finish();
         } catch (IOException | MigrationException | RuntimeException e) {
             try {
                 if (manifest != null) manifest.undoAll();
                 Files.deleteIfExists(d.resolve(Manifest.FILE));
                 Files.deleteIfExists(d.resolve(REPORT));
+                Manifest.deleteTemporariesInBackup(d);
                 deleteEmptyFolders(d.resolve(Layout.BACKUP));
             } catch (IOException again) {
                 e.addSuppressed(again);
