@@ -42,6 +42,11 @@ class PublishedPomTest {
         return found;
     }
 
+    /** The dependencies of a pom's project or profile element. */
+    private static List<Element> dependencies(Element owner) {
+        return children(children(owner, "dependencies").get(0), "dependency");
+    }
+
     private static String text(Element parent, String name) {
         List<Element> found = children(parent, name);
         return found.isEmpty() ? "" : found.get(0).getTextContent().trim();
@@ -50,7 +55,7 @@ class PublishedPomTest {
     @Test
     @DisplayName("every main dependency is test-scoped, provided or optional: a user inherits none")
     void noTransitiveDependencies() {
-        List<Element> dependencies = children(children(project, "dependencies").get(0), "dependency");
+        List<Element> dependencies = dependencies(project);
         assertThat(dependencies).isNotEmpty();
         assertThat(dependencies).allSatisfy(d -> assertThat(
                 List.of("test", "provided").contains(text(d, "scope")) || "true".equals(text(d, "optional")))
@@ -61,7 +66,7 @@ class PublishedPomTest {
     @Test
     @DisplayName("picocli is among the dependencies, as an optional one (the runnable jar shades it in)")
     void picocliIsOptional() {
-        List<Element> dependencies = children(children(project, "dependencies").get(0), "dependency");
+        List<Element> dependencies = dependencies(project);
         assertThat(dependencies).filteredOn(d -> text(d, "artifactId").equals("picocli"))
                 .singleElement().satisfies(d -> assertThat(text(d, "optional")).isEqualTo("true"));
     }
@@ -74,11 +79,11 @@ class PublishedPomTest {
     @Test
     @DisplayName("Spark is a dependency of the profile spark only, which nothing but -Pspark activates")
     void sparkOnlyInItsProfile() {
-        List<Element> dependencies = children(children(project, "dependencies").get(0), "dependency");
+        List<Element> dependencies = dependencies(project);
         assertThat(dependencies).noneSatisfy(d -> assertThat(text(d, "groupId")).isEqualTo("org.apache.spark"));
         Element spark = profile("spark");
         assertThat(children(spark, "activation")).as("no activation: -DskipTests, -Dmaven.test.skip=true and -o never download Spark").isEmpty();
-        assertThat(children(children(spark, "dependencies").get(0), "dependency"))
+        assertThat(dependencies(spark))
                 .singleElement().satisfies(d -> {
                     assertThat(text(d, "artifactId")).startsWith("spark-core_");
                     assertThat(text(d, "scope")).isEqualTo("provided");
@@ -88,12 +93,12 @@ class PublishedPomTest {
     @Test
     @DisplayName("the test libraries are in the profile tests, which -DskipTests turns off: the first command resolves none")
     void testLibrariesOnlyWhereTestsRun() {
-        List<Element> dependencies = children(children(project, "dependencies").get(0), "dependency");
+        List<Element> dependencies = dependencies(project);
         assertThat(dependencies).noneSatisfy(d -> assertThat(text(d, "scope")).isEqualTo("test"));
         Element tests = profile("tests");
         Element activation = children(children(tests, "activation").get(0), "property").get(0);
         assertThat(text(activation, "name")).isEqualTo("!skipTests");
-        assertThat(children(children(tests, "dependencies").get(0), "dependency"))
+        assertThat(dependencies(tests))
                 .extracting(d -> text(d, "artifactId")).contains("junit-jupiter", "assertj-core", "jazzer-junit");
         assertThat(text(children(project, "properties").get(0), "maven.test.skip"))
                 .as("no test compiled when the tests are skipped").isEqualTo("${skipTests}");
