@@ -1,6 +1,7 @@
 package app.cli;
 
 import java.io.PrintStream;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 
@@ -28,7 +29,7 @@ import picocli.CommandLine.Parameters;
                 "1:failed part-way and taken back (nothing changed)" })
 final class MigrateCommand implements Callable<Integer> {
     @Parameters(paramLabel = "DIR", description = "The course project's folder (the one with src/ or pom.xml).")
-    private Path dir;
+    private String dir; // turned into a Path here, where a name this locale cannot hold is said in the command's words
 
     @Option(names = "--undo", description = "Take back the migration of DIR, as course-backup/migrate-manifest.tsv records it"
             + " (refused when a file changed since).")
@@ -57,12 +58,20 @@ final class MigrateCommand implements Callable<Integer> {
     public Integer call() {
         Migration migration = Migration.ofThisProcess(out, err);
         try {
-            if (undo) migration.undo(dir);
-            else migration.migrate(dir, allowDirty, dryRun, encoding);
+            Path folder = Path.of(dir);
+            if (undo) migration.undo(folder);
+            else migration.migrate(folder, allowDirty, dryRun, encoding);
             return 0;
         } catch (MigrationException e) {
             err.println(RenderCommand.NAME + " migrate: " + e.getMessage());
             return e.partWay() ? RenderCommand.FAILURE : RenderCommand.BAD_INPUT;
+        } catch (InvalidPathException e) {
+            // A name (the folder's, or a file's in it) that the locale's file-name encoding cannot
+            // hold: LANG=C and a Hebrew folder name. Nothing was changed: names are read first.
+            err.println(RenderCommand.NAME + " migrate: cannot name " + e.getInput() + " in this locale's file-name encoding ("
+                    + System.getProperty("sun.jnu.encoding", "unknown") + "): run it with a UTF-8 locale, such as"
+                    + " LANG=C.UTF-8 (nothing was changed)");
+            return RenderCommand.BAD_INPUT;
         }
     }
 }

@@ -25,6 +25,9 @@ final class Inside {
         if (relative.isEmpty()) return "an empty path";
         if (relative.startsWith("/") || relative.indexOf('\\') >= 0 || relative.indexOf(':') >= 0 || relative.indexOf('\0') >= 0)
             return "not a relative path with /";
+        // the manifest is one change a line, its fields between tabs
+        if (relative.indexOf('\t') >= 0 || relative.indexOf('\n') >= 0 || relative.indexOf('\r') >= 0)
+            return "a path with a tab or a line break in a name";
         for (String part : relative.split("/", -1))
             if (part.isEmpty() || part.equals(".") || part.equals("..")) return "a path with an empty, . or .. part";
         return null;

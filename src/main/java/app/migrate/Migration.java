@@ -131,6 +131,8 @@ public final class Migration {
         } catch (IOException e) {
             throw new MigrationException("cannot read " + d + ": " + e.getMessage(), e);
         }
+        requireNames(d, files);
+        requireReadablePom(layout);
         List<SourceFile> tests = files.stream().filter(SourceFile::test).toList();
         // A course class kept in another course package (lighting.Material) goes as the library's
         // (primitives.Material); what stays is pointed at the library's.
@@ -760,7 +762,13 @@ public final class Migration {
             git.getErrorStream().readAllBytes();
             if (!git.waitFor(30, TimeUnit.SECONDS) || git.exitValue() != 0) return; // not a git folder
         } catch (IOException e) {
-            return; // no git on this machine: nothing to compare with
+            // No git on the PATH: where the project is in a git folder, its state cannot be
+            // checked, which is said rather than skipped; elsewhere there is nothing to compare with.
+            for (Path p = d; p != null; p = p.getParent())
+                if (Files.exists(p.resolve(".git")))
+                    throw new MigrationException(d + " is in a git folder (" + p.resolve(".git") + "), but git is not on the PATH to"
+                            + " check it has no uncommitted changes: install git, or run with --allow-dirty (nothing was changed)");
+            return;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new MigrationException("interrupted while asking git for the folder's state (nothing was changed)", e);
@@ -769,6 +777,29 @@ public final class Migration {
             long n = status.lines().count();
             throw new MigrationException(d + " has uncommitted changes (" + n + " in git status): commit or stash them first,"
                     + " so that git can show and take back what the migration changes, or pass --allow-dirty (nothing was changed)");
+        }
+    }
+
+    /**
+     * Refuses a project with a source whose path the manifest cannot hold (a tab or a line break
+     * in a folder's name), before anything changes.
+     */
+    private static void requireNames(Path d, List<SourceFile> files) throws MigrationException {
+        for (SourceFile f : files) {
+            String problem = Inside.formProblem(f.relative(d));
+            if (problem != null)
+                throw new MigrationException(f.relative(d).replace("\t", "\\t").replace("\n", "\\n").replace("\r", "\\r")
+                        + " is " + problem + ": rename it, then migrate (nothing was changed)");
+        }
+    }
+
+    /** A pom of the student's that cannot be updated is said before the compile, not after it. */
+    private static void requireReadablePom(Layout layout) throws MigrationException {
+        if (layout.pom() == null) return;
+        try {
+            PomFile.check(Files.readString(layout.pom(), StandardCharsets.UTF_8));
+        } catch (IOException e) {
+            throw new MigrationException("cannot read " + layout.pom() + ": " + e.getMessage(), e);
         }
     }
 
@@ -825,11 +856,29 @@ public final class Migration {
 
     /** A scratch folder for the compile checks, deleted afterwards. */
     private static final class Scratch implements AutoCloseable {
+        /** Its name's start, then the process's id: a folder of a process that is gone (killed) is stale. */
+        private static final String SCRATCH = "raytracer-migrate-";
+        private static final Pattern STALE = Pattern.compile(Pattern.quote(SCRATCH) + "(\\d+)-.*");
         final Path dir;
+
+        /** The scratch folders of earlier runs that were killed (their process is gone): removed. */
+        private static void deleteStaleScratch() {
+            try (Stream<Path> in = Files.list(Path.of(System.getProperty("java.io.tmpdir")))) {
+                for (Path p : in.toList()) {
+                    Matcher m = STALE.matcher(p.getFileName().toString());
+                    if (m.matches() && Files.isDirectory(p, LinkOption.NOFOLLOW_LINKS)
+                            && ProcessHandle.of(Long.parseLong(m.group(1))).isEmpty())
+                        Javac.deleteTree(p);
+                }
+            } catch (IOException | NumberFormatException e) {
+                // another user's folder, or a name too long for a process id: left to the system
+            }
+        }
 
         Scratch() throws MigrationException {
             try {
-                dir = Files.createTempDirectory("raytracer-migrate");
+                deleteStaleScratch();
+                dir = Files.createTempDirectory(SCRATCH + ProcessHandle.current().pid() + "-");
             } catch (IOException e) {
                 throw new MigrationException("cannot make a scratch folder: " + e.getMessage(), e);
             }

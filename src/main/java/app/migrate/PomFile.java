@@ -20,6 +20,7 @@ import org.w3c.dom.Element;
 import org.w3c.dom.Node;
 import org.xml.sax.InputSource;
 import org.xml.sax.SAXException;
+import org.xml.sax.SAXParseException;
 
 /**
  * The project's {@code pom.xml}, written for a folder that had none or updated where the student
@@ -265,6 +266,15 @@ final class PomFile {
         return e;
     }
 
+    /**
+     * Checks that a pom can be read and updated, before the migration compiles anything.
+     *
+     * @throws MigrationException naming the line and column of what is not well-formed, or the root that is not {@code <project>}
+     */
+    static void check(String pom) throws MigrationException {
+        parse(pom);
+    }
+
     private static Document parse(String pom) throws MigrationException {
         try {
             DocumentBuilderFactory f = DocumentBuilderFactory.newInstance();
@@ -272,11 +282,22 @@ final class PomFile {
             f.setFeature("http://apache.org/xml/features/disallow-doctype-decl", true);
             f.setAttribute(XMLConstants.ACCESS_EXTERNAL_DTD, "");
             f.setAttribute(XMLConstants.ACCESS_EXTERNAL_SCHEMA, "");
-            Document d = f.newDocumentBuilder().parse(new InputSource(new StringReader(pom)));
+            var builder = f.newDocumentBuilder();
+            // the parser's default handler prints "[Fatal Error] …" itself: the refusal below says it once
+            builder.setErrorHandler(new org.xml.sax.helpers.DefaultHandler() {
+                @Override
+                public void fatalError(SAXParseException e) throws SAXException {
+                    throw e;
+                }
+            });
+            Document d = builder.parse(new InputSource(new StringReader(pom)));
             if (!"project".equals(d.getDocumentElement().getLocalName()))
                 throw new MigrationException("pom.xml is not a Maven pom (its root element is <"
                         + d.getDocumentElement().getTagName() + ">)");
             return d;
+        } catch (SAXParseException e) {
+            throw new MigrationException("pom.xml is not well-formed XML (line " + e.getLineNumber() + ", column " + e.getColumnNumber()
+                    + ": " + e.getMessage() + "): fix it first (nothing was changed)");
         } catch (SAXException e) {
             throw new MigrationException("pom.xml is not well-formed XML: " + e.getMessage() + "; fix it first (nothing was changed)");
         } catch (ParserConfigurationException | IOException e) {

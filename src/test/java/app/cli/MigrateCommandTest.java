@@ -3,6 +3,7 @@ package app.cli;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
@@ -31,6 +32,32 @@ class MigrateCommandTest {
         Cli.Run run = Cli.run("migrate", "--undo", dir.toString());
         assertThat(run.exitCode()).isEqualTo(RenderCommand.BAD_INPUT);
         assertThat(run.errLines()).singleElement().asString().contains("nothing of raytracer migrate to undo");
+    }
+
+    @Test
+    @DisplayName("under LANG=C, a project in a folder named in Hebrew: exit 2, one line with the command's prefix saying to use a UTF-8 locale")
+    void asciiLocale() throws Exception {
+        // the course project of the migration's integration test, in a folder named in Hebrew
+        Path project = Files.createDirectories(dir.resolve("\u05E4\u05E8\u05D5\u05D9\u05E7\u05D8"));
+        Path course = app.Project.file("src/it/migrate/course");
+        try (var files = Files.walk(course)) {
+            for (Path f : files.filter(Files::isRegularFile).toList()) {
+                Path to = project.resolve(course.relativize(f).toString());
+                Files.createDirectories(to.getParent());
+                Files.copy(f, to);
+            }
+        }
+        ProcessBuilder child = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+                System.getProperty("java.class.path"), Main.class.getName(), "migrate", "--allow-dirty", project.toString());
+        child.environment().put("LANG", "C");
+        child.environment().put("LC_ALL", "C");
+        child.redirectOutput(ProcessBuilder.Redirect.DISCARD);
+        Process java = child.start();
+        String err = new String(java.getErrorStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertThat(java.waitFor()).as(err).isEqualTo(RenderCommand.BAD_INPUT);
+        assertThat(project.resolve("course-backup")).doesNotExist();
+        assertThat(err.lines().toList()).singleElement().asString()
+                .startsWith("raytracer migrate: cannot name ").endsWith("run it with a UTF-8 locale, such as LANG=C.UTF-8 (nothing was changed)");
     }
 
     @Test

@@ -139,6 +139,24 @@ class ConfinementTest {
     }
 
     @Test
+    @DisplayName("the scratch folder of a killed run (its process gone) is removed by the next run; a live one's is not")
+    void staleScratch() throws Exception {
+        Process gone = new ProcessBuilder("true").start();
+        gone.waitFor();
+        Path tmp = Path.of(System.getProperty("java.io.tmpdir"));
+        Path stale = Files.createDirectories(tmp.resolve("raytracer-migrate-" + gone.pid() + "-killed"));
+        write(stale, "classes/Point.class", "x");
+        Path live = Files.createDirectories(tmp.resolve("raytracer-migrate-" + ProcessHandle.current().pid() + "-running"));
+        try {
+            assertThat(migration().migrate(dir, true, true)).isFalse(); // a dry run compiles in a scratch folder too
+            assertThat(stale).doesNotExist();
+            assertThat(live).exists();
+        } finally {
+            Files.deleteIfExists(live);
+        }
+    }
+
+    @Test
     @DisplayName("one run at a time: a second migrate or --undo of the project while one runs is refused, and changes nothing")
     void oneAtATime() throws Exception {
         Map<String, String> before = snapshot(dir);

@@ -429,6 +429,42 @@ class MigrationTest {
         }
 
         @Test
+        @DisplayName("a pom that is not well-formed: said with its line and column before anything compiles")
+        void badPom() throws IOException {
+            CourseProjects.intellij(dir);
+            write(dir, "pom.xml", "<project>\n  <build><sourceDirectory>src</sourceDirectory><testSourceDirectory>unittests"
+                    + "</testSourceDirectory></build>\n  <dependencies>\n</project>\n");
+            refused("pom.xml is not well-formed XML (line 4, column 3: ");
+            assertThat(steps.toString(StandardCharsets.UTF_8)).as("no compile before the refusal").doesNotContain("compiling");
+        }
+
+        @ParameterizedTest(name = "a folder named \"{0}\"")
+        @ValueSource(strings = {"a\tb", "a\nb"})
+        @DisplayName("a source in a folder whose name has a tab or a line break, which the manifest cannot hold")
+        void tabInName(String folder) throws IOException {
+            CourseProjects.intellij(dir);
+            write(dir, "src/" + folder + "/Extra.java", "class Extra {\n}\n");
+            refused("is a path with a tab or a line break in a name: rename it, then migrate (nothing was changed)");
+        }
+
+        @Test
+        @DisplayName("a git folder, but no git on the PATH: said, not skipped (unless allowed)")
+        void noGit(@TempDir Path emptyPath) throws Exception {
+            CourseProjects.intellij(dir);
+            Files.createDirectories(dir.resolve(".git"));
+            // a child JVM whose PATH holds no git (the migration asks the PATH it runs with)
+            ProcessBuilder child = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+                    System.getProperty("java.class.path"), MigrateWithoutGit.class.getName(), dir.toString()).redirectErrorStream(true);
+            child.environment().put("PATH", emptyPath.toString());
+            Process java = child.start();
+            String said = new String(java.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            assertThat(java.waitFor()).as(said).isZero();
+            assertThat(said).contains("is in a git folder (" + dir.resolve(".git") + "), but git is not on the PATH")
+                    .contains("run with --allow-dirty (nothing was changed)");
+            assertThat(dir.resolve("course-backup")).doesNotExist();
+        }
+
+        @Test
         @DisplayName("--undo where nothing was migrated")
         void undoWithoutMigration() throws IOException {
             CourseProjects.intellij(dir);
