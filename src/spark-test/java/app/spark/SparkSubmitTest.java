@@ -4,17 +4,10 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
-import java.io.InputStream;
-import java.io.OutputStream;
-import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.Collections;
 import java.util.List;
-import java.util.jar.JarEntry;
-import java.util.jar.JarFile;
-import java.util.jar.JarOutputStream;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.AfterAll;
@@ -55,7 +48,7 @@ class SparkSubmitTest {
                 + " such as PyPI's pyspark 4.0.1 (python3 -m venv V && V/bin/pip install pyspark==4.0.1; then its package"
                 + " folder, V/lib/python3.X/site-packages/pyspark; docs/spark.md)");
         spark = SparkInstallation.at(home, dir);
-        jar = applicationJar(dir.resolve("raytracer.jar"));
+        jar = SparkInstallation.applicationJar(dir.resolve("raytracer.jar"));
         master = spark.master("master");
         worker = spark.worker("worker", master);
     }
@@ -181,41 +174,5 @@ class SparkSubmitTest {
                 assertThat(png).doesNotExist();
             }
         }
-    }
-
-    /**
-     * The program's jar as {@code mvn -Pspark package} makes it, the classes this build compiled
-     * and picocli's (the runnable jar does not exist yet when the tests run, or is the last
-     * package's). Not picocli's jar beside it with {@code --jars}: spark-submit then reads that
-     * jar through Hadoop before the command starts, and Hadoop's warning about its native library
-     * comes out on stderr in Spark's default log, out of the command's reach.
-     */
-    private static Path applicationJar(Path target) throws IOException, URISyntaxException {
-        Path classes = codeSource(SparkEntry.class);
-        if (Files.isRegularFile(classes)) return classes;
-        try (OutputStream file = Files.newOutputStream(target); JarOutputStream out = new JarOutputStream(file)) {
-            try (Stream<Path> all = Files.walk(classes)) {
-                for (Path f : all.filter(Files::isRegularFile).sorted().toList()) {
-                    out.putNextEntry(new JarEntry(classes.relativize(f).toString().replace('\\', '/')));
-                    Files.copy(f, out);
-                    out.closeEntry();
-                }
-            }
-            try (JarFile cli = new JarFile(codeSource(picocli.CommandLine.class).toFile())) {
-                for (JarEntry e : Collections.list(cli.entries())) {
-                    if (e.isDirectory() || e.getName().startsWith("META-INF/")) continue;
-                    out.putNextEntry(new JarEntry(e.getName()));
-                    try (InputStream in = cli.getInputStream(e)) {
-                        in.transferTo(out);
-                    }
-                    out.closeEntry();
-                }
-            }
-        }
-        return target;
-    }
-
-    private static Path codeSource(Class<?> c) throws URISyntaxException {
-        return Path.of(c.getProtectionDomain().getCodeSource().getLocation().toURI());
     }
 }
