@@ -192,7 +192,7 @@ public class ImageWriter {
      * character); private-use, unassigned and surrogate code points (Co, Cn, Cs: no agreed glyph);
      * the rest of Unicode's Default_Ignorable_Code_Point (U+034F, the Hangul fillers U+115F,
      * U+1160, U+3164 and U+FFA0, the variation selectors U+FE00–U+FE0F, …: drawn as nothing);
-     * and the blank braille pattern U+2800, a letter-like character drawn as a space.
+     * and the blank-looking symbols ({@link #blankLooking}: U+2800, U+1D159, U+16FE4), drawn as a space.
      *
      * @param cp a Unicode code point
      * @return the kind of character, for a message ("a control character", …), or null
@@ -204,8 +204,25 @@ public class ImageWriter {
             case Character.LINE_SEPARATOR, Character.PARAGRAPH_SEPARATOR -> "a line or paragraph separator";
             case Character.SPACE_SEPARATOR -> cp == ' ' ? null : "a space other than U+0020 (it looks like one and is another character)";
             case Character.PRIVATE_USE, Character.UNASSIGNED, Character.SURROGATE -> "a private-use, unassigned or surrogate code point";
-            default -> defaultIgnorable(cp) ? "an invisible character (Unicode's Default_Ignorable_Code_Point)"
-                    : cp == 0x2800 ? "a blank-looking character (the empty braille pattern)" : null;
+            default -> defaultIgnorable(cp) ? "an invisible character (Unicode's Default_Ignorable_Code_Point)" : blankLooking(cp);
+        };
+    }
+
+    /**
+     * The blank-looking rule: characters of a visible category (a symbol, a letter) that fonts draw
+     * as an empty box-less space, so that a name holding one looks like another name: the empty
+     * braille pattern U+2800 (So), the musical symbol null notehead U+1D159 (So) and the Khitan
+     * small script filler U+16FE4 (a mark that stands alone). Unicode names them nowhere as a class;
+     * they are the ones lists of "invisible characters" give that no category above catches.
+     *
+     * @return the character's description for the message, or null for any other
+     */
+    private static String blankLooking(int cp) {
+        return switch (cp) {
+            case 0x2800 -> "a blank-looking character (the empty braille pattern)";
+            case 0x1D159 -> "a blank-looking character (the musical null notehead)";
+            case 0x16FE4 -> "a blank-looking character (the Khitan small script filler)";
+            default -> null;
         };
     }
 

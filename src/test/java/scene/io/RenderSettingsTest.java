@@ -406,6 +406,8 @@ class RenderSettingsTest {
                 "034F|an invisible character (Unicode's Default_Ignorable_Code_Point)", // combining grapheme joiner
                 "FE0F|an invisible character (Unicode's Default_Ignorable_Code_Point)", // variation selector
                 "2800|a blank-looking character (the empty braille pattern)",
+                "1D159|a blank-looking character (the musical null notehead)",
+                "16FE4|a blank-looking character (the Khitan small script filler)",
                 "2028|a line or paragraph separator",
                 "00A0|a space other than U+0020 (it looks like one and is another character)",
                 "3000|a space other than U+0020 (it looks like one and is another character)",
