@@ -65,8 +65,27 @@ public abstract class Geometry extends Intersectable {
      * @throws NullPointerException when emission is null
      */
     public Geometry setEmission(Color emission) {
-        this.emission = Objects.requireNonNull(emission, "emission");
+        Objects.requireNonNull(emission, "emission");
+        if (!emission.equals(this.emission)) emissionChanges++;
+        this.emission = emission;
         return this;
+    }
+
+    /**
+     * How many times the emission, and the material, were set to another one: counted, so that a
+     * surface changed and put back during a render still shows at its end (the scene-change
+     * check). Volatile: a setter may run on another thread than the render.
+     */
+    private volatile int emissionChanges, materialChanges;
+
+    /** @return how many times the emission was set to another one */
+    int emissionChanges() {
+        return emissionChanges;
+    }
+
+    /** @return how many times the material was set to another one */
+    int materialChanges() {
+        return materialChanges;
     }
 
     /** @return the surface's coefficients (shared, see {@link #setMaterial}); all zero by default */
@@ -81,7 +100,9 @@ public abstract class Geometry extends Intersectable {
      * @throws NullPointerException when material is null
      */
     public Geometry setMaterial(Material material) {
-        this.material = Objects.requireNonNull(material, "material");
+        Objects.requireNonNull(material, "material");
+        if (material != this.material) materialChanges++;
+        this.material = material;
         return this;
     }
 

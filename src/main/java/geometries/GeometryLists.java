@@ -2,7 +2,8 @@ package geometries;
 
 /**
  * What a render asks of a scene's geometry lists before and after it renders: how often they
- * were added to, and whether they nest within the limit. Static, and apart from {@link Geometries}, so that a
+ * were added to, how often a geometry's surface was set to another, and whether they nest within
+ * the limit. Static, and apart from {@link Geometries}, so that a
  * student completing {@code scene.geometries.} sees the course's methods only; the renderer, in
  * another package, calls these.
  *
@@ -33,5 +34,26 @@ public final class GeometryLists {
      */
     public static void requireNestingWithinLimit(Geometries list) {
         list.requireNestingWithinLimit();
+    }
+
+    /**
+     * How many times a geometry's emission was set to another one, so far: a render notes it when
+     * it starts and compares it when it ends, so that a change put back within the render is seen too.
+     *
+     * @param geometry a geometry of a scene
+     * @return the number of such changes
+     */
+    public static int emissionChanges(Geometry geometry) {
+        return geometry.emissionChanges();
+    }
+
+    /**
+     * How many times a geometry's material was set to another one, so far (see {@link #emissionChanges}).
+     *
+     * @param geometry a geometry of a scene
+     * @return the number of such changes
+     */
+    public static int materialChanges(Geometry geometry) {
+        return geometry.materialChanges();
     }
 }

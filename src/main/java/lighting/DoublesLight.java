@@ -47,7 +47,25 @@ abstract class DoublesLight extends Light implements LightSource {
      *         chance); 0 when there is none to watch
      */
     long settingsStamp() {
-        return 0;
+        return changes;
+    }
+
+    /**
+     * How many times a setting was given a different value: counted, not only compared, so that a
+     * change made and put back during a render (kL to 0.5 and back 3 ms later) still shows at its
+     * end. A value set equal to the old one is no change. Volatile: a setter may run on another
+     * thread than the render that compares.
+     */
+    private volatile int changes;
+
+    /** Notes a setting given a different value (see {@link #changes}). */
+    final void changed() {
+        changes++;
+    }
+
+    /** @return the number of settings given a different value so far */
+    final int changes() {
+        return changes;
     }
 
     /** {@link LightSource#getIntensity(Point)} of any light, asked at (x, y, z), into {@code out[0..2]}. */

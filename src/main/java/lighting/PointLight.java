@@ -40,7 +40,9 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when kC is negative or not finite, naming it
      */
     public PointLight setKc(double kC) {
-        this.kC = Checks.requireNonNegative(kC, "kC");
+        double v = Checks.requireNonNegative(kC, "kC");
+        if (Double.compare(v, this.kC) != 0) changed();
+        this.kC = v;
         return this;
     }
 
@@ -50,7 +52,9 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when kL is negative or not finite, naming it
      */
     public PointLight setKl(double kL) {
-        this.kL = Checks.requireNonNegative(kL, "kL");
+        double v = Checks.requireNonNegative(kL, "kL");
+        if (Double.compare(v, this.kL) != 0) changed();
+        this.kL = v;
         return this;
     }
 
@@ -60,7 +64,9 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when kQ is negative or not finite, naming it
      */
     public PointLight setKq(double kQ) {
-        this.kQ = Checks.requireNonNegative(kQ, "kQ");
+        double v = Checks.requireNonNegative(kQ, "kQ");
+        if (Double.compare(v, this.kQ) != 0) changed();
+        this.kQ = v;
         return this;
     }
 
@@ -134,7 +140,9 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when the radius is negative or not finite, naming it
      */
     public PointLight setRadius(double radius) {
-        this.radius = Checks.requireNonNegative(radius, "light radius");
+        double v = Checks.requireNonNegative(radius, "light radius");
+        if (Double.compare(v, this.radius) != 0) changed();
+        this.radius = v;
         return this;
     }
 
@@ -149,11 +157,11 @@ public class PointLight extends DoublesLight {
     }
 
     /**
-     * @return a fingerprint of kC, kL, kQ and the radius, the settings that may change (see {@link DoublesLight#settingsStamp()})
+     * @return a fingerprint of kC, kL, kQ, the radius and how often they changed (see {@link DoublesLight#settingsStamp()})
      */
     @Override
     long settingsStamp() {
-        return mix(mix(mix(mix(0, kC), kL), kQ), radius);
+        return mix(mix(mix(mix(mix(0, kC), kL), kQ), radius), changes());
     }
 
     /** One step of a 64-bit multiply-and-add fingerprint over the bits of {@code value}. */

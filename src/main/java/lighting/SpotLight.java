@@ -101,7 +101,9 @@ public class SpotLight extends PointLight {
      * @throws IllegalArgumentException when it is not a positive finite number, naming it
      */
     public SpotLight setNarrowBeam(double narrowBeam) {
-        this.narrowBeam = Checks.requirePositive(narrowBeam, "spot light narrow beam");
+        double v = Checks.requirePositive(narrowBeam, "spot light narrow beam");
+        if (Double.compare(v, this.narrowBeam) != 0) changed();
+        this.narrowBeam = v;
         return this;
     }
 

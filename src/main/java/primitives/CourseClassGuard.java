@@ -32,7 +32,7 @@ public final class CourseClassGuard {
      */
     static final List<String> LIBRARY_CLASSES = List.of(
             "primitives.Checks", "primitives.Color", "primitives.Double3", "primitives.Material", "primitives.Point", "primitives.Ray",
-            "primitives.Kernels", "primitives.LibraryClasses", "primitives.Rgb", "primitives.Util", "primitives.Vector",
+            "primitives.Kernels", "primitives.LibraryClasses", "primitives.Materials", "primitives.Rgb", "primitives.Util", "primitives.Vector",
             "geometries.BoundingBox", "geometries.BuildBoxes", "geometries.Bvh", "geometries.BvhBinner", "geometries.BvhBuilder",
             "geometries.BvhLeaf", "geometries.BvhNodes", "geometries.Cylinder", "geometries.Geometries",
             "geometries.Geometry", "geometries.GeometryLists", "geometries.Hit", "geometries.HitVisitor", "geometries.HookCheck",

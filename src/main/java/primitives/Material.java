@@ -40,6 +40,18 @@ public class Material {
     public double ior = 1;
 
     /**
+     * How many times a setter gave a coefficient a different value: counted, so that a change made
+     * and put back during a render still shows at its end (the scene-change check; a public field
+     * written directly is seen by the values only). Volatile: a setter may run on another thread.
+     */
+    private volatile int changes;
+
+    /** @return how many times a setter gave a coefficient a different value */
+    int changes() {
+        return changes;
+    }
+
+    /**
      * @param kd the diffuse coefficient of all three channels: finite and ≥ 0 (above 1 is allowed)
      * @return this material, for chaining
      * @throws IllegalArgumentException when kd is negative, NaN or infinite, naming it
@@ -54,7 +66,9 @@ public class Material {
      * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
      */
     public Material setKd(Double3 kd) {
-        this.kD = check(kd, "kD", false);
+        Double3 v = check(kd, "kD", false);
+        if (!v.equals(this.kD)) changes++;
+        this.kD = v;
         return this;
     }
 
@@ -73,7 +87,9 @@ public class Material {
      * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
      */
     public Material setKs(Double3 ks) {
-        this.kS = check(ks, "kS", false);
+        Double3 v = check(ks, "kS", false);
+        if (!v.equals(this.kS)) changes++;
+        this.kS = v;
         return this;
     }
 
@@ -93,7 +109,9 @@ public class Material {
      * @throws IllegalArgumentException when a component is outside [0, 1] or NaN, naming the triple
      */
     public Material setKt(Double3 kt) {
-        this.kT = check(kt, "kT", true);
+        Double3 v = check(kt, "kT", true);
+        if (!v.equals(this.kT)) changes++;
+        this.kT = v;
         return this;
     }
 
@@ -112,7 +130,9 @@ public class Material {
      * @throws IllegalArgumentException when a component is outside [0, 1] or NaN, naming the triple
      */
     public Material setKr(Double3 kr) {
-        this.kR = check(kr, "kR", true);
+        Double3 v = check(kr, "kR", true);
+        if (!v.equals(this.kR)) changes++;
+        this.kR = v;
         return this;
     }
 
@@ -131,7 +151,9 @@ public class Material {
      * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
      */
     public Material setKA(Double3 ka) {
-        this.kA = check(ka, "kA", false);
+        Double3 v = check(ka, "kA", false);
+        if (!v.equals(this.kA)) changes++;
+        this.kA = v;
         return this;
     }
 
@@ -355,6 +377,7 @@ public class Material {
     public Material setShininess(int nShininess) {
         if (nShininess < 0)
             throw new IllegalArgumentException("shininess must be non-negative, got " + nShininess);
+        if (nShininess != this.nShininess) changes++;
         this.nShininess = nShininess;
         return this;
     }
@@ -388,7 +411,9 @@ public class Material {
      * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
      */
     public Material setReflectionSpread(double spread) {
-        this.reflectionSpread = Checks.requireNonNegative(spread, "reflection spread");
+        double v = Checks.requireNonNegative(spread, "reflection spread");
+        if (Double.compare(v, this.reflectionSpread) != 0) changes++;
+        this.reflectionSpread = v;
         return this;
     }
 
@@ -398,7 +423,9 @@ public class Material {
      * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
      */
     public Material setTransmissionSpread(double spread) {
-        this.transmissionSpread = Checks.requireNonNegative(spread, "transmission spread");
+        double v = Checks.requireNonNegative(spread, "transmission spread");
+        if (Double.compare(v, this.transmissionSpread) != 0) changes++;
+        this.transmissionSpread = v;
         return this;
     }
 
@@ -411,6 +438,7 @@ public class Material {
     public Material setIor(double ior) {
         if (!(ior > 0) || Double.isInfinite(ior))
             throw new IllegalArgumentException("index of refraction must be finite and positive, got " + ior);
+        if (Double.compare(ior, this.ior) != 0) changes++;
         this.ior = ior;
         return this;
     }

@@ -19,6 +19,7 @@ import lighting.LightSource;
 import primitives.Color;
 import primitives.Double3;
 import primitives.Material;
+import primitives.Materials;
 
 /**
  * What a render saw of its scene when it started: the geometry list and how often it and the
@@ -161,9 +162,11 @@ record SceneStamp(RayTracerBase tracer, Parts start, long changes, LightSource[]
                 for (Intersectable item : list.getItems()) {
                     if (item instanceof Geometries nested) todo.push(nested);
                     else if (item instanceof Geometry g) {
-                        materials = material(materials, g.getMaterial());
+                        // the counts as well as the values: a change put back within the render still differs
+                        materials = mix(mix(material(materials, g.getMaterial()), Materials.changes(g.getMaterial())),
+                                GeometryLists.materialChanges(g));
                         Color e = g.getEmission();
-                        emissions = mix(mix(mix(emissions, e.getR()), e.getG()), e.getB());
+                        emissions = mix(mix(mix(mix(emissions, e.getR()), e.getG()), e.getB()), GeometryLists.emissionChanges(g));
                     }
                 }
             }

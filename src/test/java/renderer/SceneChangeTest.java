@@ -114,6 +114,38 @@ class SceneChangeTest {
         return message.endsWith("#0 changed") ? " (PointLight)" : " (SpotLight)";
     }
 
+    static Stream<Arguments> reverted() {
+        return Stream.of(
+                change("PointLight.setKl, then back", f -> {
+                    double kL = 0.02;
+                    f.point.setKl(0.5).setKl(kL);
+                }, "the settings of its light #0 changed"),
+                change("SpotLight.setNarrowBeam, then back", f -> f.spot.setNarrowBeam(9).setNarrowBeam(3),
+                        "the settings of its light #1 changed"),
+                change("Material.setKd, then back", f -> f.floor.getMaterial().setKd(0.9).setKd(0.5),
+                        "a material of its geometries changed"),
+                change("setMaterial, then back", f -> {
+                    Material m = f.floor.getMaterial();
+                    f.floor.setMaterial(new Material()).setMaterial(m);
+                }, "a material of its geometries changed"),
+                change("setEmission, then back", f -> {
+                    Color e = f.floor.getEmission();
+                    f.floor.setEmission(new Color(200, 0, 0)).setEmission(e);
+                }, "the emission of one of its geometries changed"));
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("reverted")
+    @DisplayName("a change put back within the render fails it too: the setters count, the values alone would not show it")
+    void changedAndPutBack(String name, Consumer<Fixture> change, String message) {
+        Fixture f = Fixture.make();
+        Camera camera = TestScenes.camera(f.scene, new ImageWriter("changed", 8, 8)).setMultithreading(2).build();
+        f.trigger.action.set(() -> change.accept(f));
+        assertThatThrownBy(camera::renderImage).isInstanceOf(ConcurrentModificationException.class)
+                .hasMessageContaining("changed during the render of changed: " + message);
+        assertThat(f.trigger.action.get()).as("the change was made").isNull();
+    }
+
     @Test
     @DisplayName("setting a value equal to the old one is no change: the render goes through")
     void sameValues() {
