@@ -53,8 +53,8 @@ class ExecutorWatchTest {
         assertThat(said).containsExactly("waiting for executors: none is available (the job ends if none comes within 30 s)");
         assertThat(at(30.9)).isFalse();
         assertThat(at(31)).isTrue();
-        assertThat(cancelled).containsExactly("no executor for 30 s: the cluster lost every worker, or has none for this"
-                + " job (the limit is spark.raytracer.executorTimeout)");
+        assertThat(cancelled).containsExactly("every executor was lost and none came back for 30 s: the cluster lost its"
+                + " workers (the limit is spark.raytracer.executorTimeout)");
         assertThat(watch.reason()).isEqualTo(cancelled.get(0));
         assertThat(at(100)).as("cancelled once").isTrue();
         assertThat(cancelled).hasSize(1);
@@ -107,7 +107,7 @@ class ExecutorWatchTest {
         assertThat(w.check()).isTrue();
         assertThat(lines).containsExactly(
                 "waiting for executors: none is available (the job ends if none comes within 0.001 s)",
-                "no executor for 0.001 s: the cluster lost every worker, or has none for this job (the limit is"
-                        + " spark.raytracer.executorTimeout)");
+                "no executor joined in the 0.001 s since the job asked for them: the cluster has no worker free for this"
+                        + " job, or its executors take longer to start (raise spark.raytracer.executorTimeout)");
     }
 }

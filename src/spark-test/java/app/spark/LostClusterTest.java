@@ -99,8 +99,8 @@ class LostClusterTest {
             killer.start();
             assertTimeoutPreemptively(Duration.ofMinutes(3), () -> assertThatThrownBy(() -> renderer.render(frames))
                     .isInstanceOf(SparkRenderException.class)
-                    .hasMessage("spark render lost: no executor for 5 s: the cluster lost every worker, or has none for"
-                            + " this job (the limit is spark.raytracer.executorTimeout)"));
+                    .hasMessage("spark render lost: every executor was lost and none came back for 5 s: the cluster lost"
+                            + " its workers (the limit is spark.raytracer.executorTimeout)"));
             assertThat(killedAtWork).as("the executor was up when the worker was stopped").isTrue();
             assertThat(progress.toString(StandardCharsets.UTF_8))
                     .contains("spark render lost: waiting for executors: none is available (the job ends if none comes within 5 s)");

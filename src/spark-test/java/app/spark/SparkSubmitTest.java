@@ -169,8 +169,9 @@ class SparkSubmitTest {
                         "--spark", "submit", "scenes/two-colors.xml", "--width", "32", "--height", "32", "-o", png.toString());
                 assertThat(r.exitCode()).as(timeout).isEqualTo(1);
                 assertThat(driverLines(r)).as(timeout).containsExactly("raytracer: failed on Spark: spark render two-colors:"
-                        + " no executor for " + (timeout.equals("5s") ? "5" : "0.001") + " s: the cluster lost every worker, or"
-                        + " has none for this job (the limit is spark.raytracer.executorTimeout)");
+                        + " no executor joined in the " + (timeout.equals("5s") ? "5" : "0.001") + " s since the job asked for"
+                        + " them: the cluster has no worker free for this job, or its executors take longer to start (raise"
+                        + " spark.raytracer.executorTimeout)");
                 assertThat(png).doesNotExist();
             }
         }

@@ -69,8 +69,12 @@ final class ExecutorWatch {
             return false;
         }
         if (now - noneSince < timeoutNanos) return false;
-        reason = "no executor for " + seconds() + ": the cluster lost every worker, or has none for this job (the limit"
-                + " is spark.raytracer.executorTimeout)";
+        // What was measured, in its own words: a cluster that had executors and lost them is not
+        // one whose first executors have not joined yet (none free, or slower to start than the limit).
+        reason = seen ? "every executor was lost and none came back for " + seconds() + ": the cluster lost its workers"
+                + " (the limit is spark.raytracer.executorTimeout)"
+                : "no executor joined in the " + seconds() + " since the job asked for them: the cluster has no worker free for"
+                        + " this job, or its executors take longer to start (raise spark.raytracer.executorTimeout)";
         cluster.cancel(reason);
         return true;
     }
