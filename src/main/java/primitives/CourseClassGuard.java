@@ -1,5 +1,6 @@
 package primitives;
 
+import java.io.IOException;
 import java.net.URISyntaxException;
 import java.net.URL;
 import java.nio.file.Path;
@@ -23,35 +24,6 @@ import java.util.TreeMap;
  * @hidden internal: the check against a student's copy of a course class, public for the other course packages
  */
 public final class CourseClassGuard {
-    /**
-     * The library's classes in the course packages, top level (nested ones come with their file);
-     * a class of the same name in a project shadows the library's. {@code CourseClassGuardTest}
-     * holds the list equal to the compiled classes. {@code renderer.RenderEvent} and
-     * {@code renderer.ImageWriteEvent} are left out:
-     * loading a JFR event class sets up JFR's machinery (see that class), and no course has one.
-     */
-    static final List<String> LIBRARY_CLASSES = List.of(
-            "primitives.Checks", "primitives.Color", "primitives.Double3", "primitives.Material", "primitives.Point", "primitives.Ray",
-            "primitives.Kernels", "primitives.LibraryClasses", "primitives.Materials", "primitives.Rgb", "primitives.Util", "primitives.Vector",
-            "geometries.BoundingBox", "geometries.BuildBoxes", "geometries.Bvh", "geometries.BvhBinner", "geometries.BvhBuilder",
-            "geometries.BvhLeaf", "geometries.BvhNodes", "geometries.Cylinder", "geometries.Geometries",
-            "geometries.Geometry", "geometries.GeometryLists", "geometries.Hit", "geometries.HitVisitor", "geometries.HookCheck",
-            "geometries.Intersectable", "geometries.LeanQueries", "geometries.MeshChecks", "geometries.Plane", "geometries.Polygon", "geometries.Ranges",
-            "geometries.SingleHitGeometry", "geometries.Sphere", "geometries.Triangle", "geometries.TriangleMesh",
-            "geometries.Tube", "geometries.VectorWalk", "geometries.Vectorization", "geometries.WideNodes",
-            "geometries.WideWalk",
-            "lighting.AmbientLight", "lighting.DirectionalLight", "lighting.DoublesLight", "lighting.Light",
-            "lighting.LightQueries", "lighting.LightSource",
-            "lighting.PointLight", "lighting.SpotLight",
-            "scene.Scene",
-            "renderer.AntiAliasing", "renderer.CallingTest", "renderer.Camera", "renderer.CameraReports", "renderer.CenterSampler",
-            "renderer.Estimator", "renderer.Execution", "renderer.GridSampler", "renderer.ImageWriter", "renderer.ImageWriters", "renderer.InFlightFile", "renderer.LatticeSampler",
-            "renderer.NoiseAdaptiveSampler", "renderer.PixelSampler", "renderer.PreparedTracer", "renderer.Progress", "renderer.RayBudget", "renderer.RayHit", "renderer.RayTracerBase", "renderer.RayTracerBasic",
-            "renderer.RayTracerType", "renderer.RegionRenderer", "renderer.RenderLoop",
-            "renderer.RenderStats", "renderer.SampleStream", "renderer.Sampling", "renderer.SceneStamp", "renderer.ShadowCache", "renderer.SimpleRayTracer",
-            "renderer.SobolPoints", "renderer.TraceContext", "renderer.Transmittance", "renderer.View", "renderer.WhittedShader",
-            "renderer.WriteListener");
-
     private CourseClassGuard() {
     }
 
@@ -99,9 +71,15 @@ public final class CourseClassGuard {
     public static String shadowing(ClassLoader loader) {
         String library = location(CourseClassGuard.class);
         if (loader == null || library == null) return null;
+        List<String> classes;
+        try {
+            classes = CourseClassIndex.of(codeSource(CourseClassGuard.class));
+        } catch (IOException | URISyntaxException | IllegalArgumentException e) {
+            return null; // the library's own jar cannot be read: nothing can be told, as without a code source
+        }
         // location → package → simple names, sorted, so that the message reads in one order
         Map<String, Map<String, List<String>>> found = new TreeMap<>();
-        for (String name : LIBRARY_CLASSES) {
+        for (String name : classes) {
             String where;
             try {
                 // Loaded, not initialised: most of them the first render loads anyway. Asking for
@@ -122,6 +100,11 @@ public final class CourseClassGuard {
         List<String> groups = new ArrayList<>();
         found.forEach((where, packages) -> groups.add(names(packages) + " from " + where));
         return String.join("; ", groups);
+    }
+
+    /** The jar or classes folder a class was loaded from. */
+    private static Path codeSource(Class<?> c) throws URISyntaxException {
+        return Path.of(c.getProtectionDomain().getCodeSource().getLocation().toURI());
     }
 
     /**

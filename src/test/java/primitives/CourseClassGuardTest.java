@@ -243,8 +243,8 @@ class CourseClassGuardTest {
     }
 
     @Test
-    @DisplayName("the guard's list is every top-level class the library compiles in the five course packages (but its JFR events)")
-    void listIsComplete() throws IOException {
+    @DisplayName("the guard's list is every top-level class the library compiles in the five course packages (but its JFR events), read from its classes folder or its jar")
+    void listIsComplete(@TempDir Path jarDir) throws IOException {
         List<String> compiled = new ArrayList<>();
         for (String pkg : List.of("primitives", "geometries", "lighting", "scene", "renderer"))
             try (Stream<Path> files = Files.list(LIBRARY.resolve(pkg))) {
@@ -254,6 +254,18 @@ class CourseClassGuardTest {
                                 && !c.equals("renderer.RenderEvent") && !c.equals("renderer.ImageWriteEvent"))
                         .forEach(compiled::add);
             }
-        assertThat(CourseClassGuard.LIBRARY_CLASSES).containsExactlyInAnyOrderElementsOf(compiled);
+        assertThat(compiled).contains("primitives.Point", "geometries.LeanQueries", "renderer.Camera", "scene.Scene")
+                .doesNotContain("renderer.RenderEvent", "primitives.CourseClassGuard");
+        assertThat(CourseClassIndex.of(LIBRARY)).containsExactlyInAnyOrderElementsOf(compiled);
+        // the same from a jar of those classes, as a project that depends on the library loads it
+        Path jar = jarDir.resolve("raytracer.jar");
+        try (var out = new java.util.jar.JarOutputStream(Files.newOutputStream(jar)); Stream<Path> all = Files.walk(LIBRARY)) {
+            for (Path f : all.filter(Files::isRegularFile).sorted().toList()) {
+                out.putNextEntry(new java.util.jar.JarEntry(LIBRARY.relativize(f).toString().replace('\\', '/')));
+                Files.copy(f, out);
+                out.closeEntry();
+            }
+        }
+        assertThat(CourseClassIndex.of(jar)).containsExactlyInAnyOrderElementsOf(compiled);
     }
 }
