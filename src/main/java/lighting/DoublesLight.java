@@ -58,9 +58,14 @@ abstract class DoublesLight extends Light implements LightSource {
      */
     private volatile int changes;
 
-    /** Notes a setting given a different value (see {@link #changes}). */
-    final void changed() {
-        changes++;
+    /**
+     * A setting's new value, counted as a change when it differs from the old (see {@link #changes}).
+     *
+     * @return {@code now}, for the setter to store
+     */
+    final double changed(double old, double now) {
+        if (Double.compare(old, now) != 0) changes++;
+        return now;
     }
 
     /** @return the number of settings given a different value so far */

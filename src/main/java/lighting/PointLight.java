@@ -40,9 +40,7 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when kC is negative or not finite, naming it
      */
     public PointLight setKc(double kC) {
-        double v = Checks.requireNonNegative(kC, "kC");
-        if (Double.compare(v, this.kC) != 0) changed();
-        this.kC = v;
+        this.kC = changed(this.kC, Checks.requireNonNegative(kC, "kC"));
         return this;
     }
 
@@ -52,9 +50,7 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when kL is negative or not finite, naming it
      */
     public PointLight setKl(double kL) {
-        double v = Checks.requireNonNegative(kL, "kL");
-        if (Double.compare(v, this.kL) != 0) changed();
-        this.kL = v;
+        this.kL = changed(this.kL, Checks.requireNonNegative(kL, "kL"));
         return this;
     }
 
@@ -64,9 +60,7 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when kQ is negative or not finite, naming it
      */
     public PointLight setKq(double kQ) {
-        double v = Checks.requireNonNegative(kQ, "kQ");
-        if (Double.compare(v, this.kQ) != 0) changed();
-        this.kQ = v;
+        this.kQ = changed(this.kQ, Checks.requireNonNegative(kQ, "kQ"));
         return this;
     }
 
@@ -140,9 +134,7 @@ public class PointLight extends DoublesLight {
      * @throws IllegalArgumentException when the radius is negative or not finite, naming it
      */
     public PointLight setRadius(double radius) {
-        double v = Checks.requireNonNegative(radius, "light radius");
-        if (Double.compare(v, this.radius) != 0) changed();
-        this.radius = v;
+        this.radius = changed(this.radius, Checks.requireNonNegative(radius, "light radius"));
         return this;
     }
 

@@ -101,9 +101,7 @@ public class SpotLight extends PointLight {
      * @throws IllegalArgumentException when it is not a positive finite number, naming it
      */
     public SpotLight setNarrowBeam(double narrowBeam) {
-        double v = Checks.requirePositive(narrowBeam, "spot light narrow beam");
-        if (Double.compare(v, this.narrowBeam) != 0) changed();
-        this.narrowBeam = v;
+        this.narrowBeam = changed(this.narrowBeam, Checks.requirePositive(narrowBeam, "spot light narrow beam"));
         return this;
     }
 

@@ -51,6 +51,18 @@ public class Material {
         return changes;
     }
 
+    /** A coefficient's new value, counted as a change when it differs from the old (see {@link #changes}). */
+    private Double3 changed(Double3 old, Double3 now) {
+        if (!now.equals(old)) changes++;
+        return now;
+    }
+
+    /** As {@link #changed(Double3, Double3)}, for a number. */
+    private double changed(double old, double now) {
+        if (Double.compare(old, now) != 0) changes++;
+        return now;
+    }
+
     /**
      * @param kd the diffuse coefficient of all three channels: finite and ≥ 0 (above 1 is allowed)
      * @return this material, for chaining
@@ -66,9 +78,7 @@ public class Material {
      * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
      */
     public Material setKd(Double3 kd) {
-        Double3 v = check(kd, "kD", false);
-        if (!v.equals(this.kD)) changes++;
-        this.kD = v;
+        this.kD = changed(this.kD, check(kd, "kD", false));
         return this;
     }
 
@@ -87,9 +97,7 @@ public class Material {
      * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
      */
     public Material setKs(Double3 ks) {
-        Double3 v = check(ks, "kS", false);
-        if (!v.equals(this.kS)) changes++;
-        this.kS = v;
+        this.kS = changed(this.kS, check(ks, "kS", false));
         return this;
     }
 
@@ -109,9 +117,7 @@ public class Material {
      * @throws IllegalArgumentException when a component is outside [0, 1] or NaN, naming the triple
      */
     public Material setKt(Double3 kt) {
-        Double3 v = check(kt, "kT", true);
-        if (!v.equals(this.kT)) changes++;
-        this.kT = v;
+        this.kT = changed(this.kT, check(kt, "kT", true));
         return this;
     }
 
@@ -130,9 +136,7 @@ public class Material {
      * @throws IllegalArgumentException when a component is outside [0, 1] or NaN, naming the triple
      */
     public Material setKr(Double3 kr) {
-        Double3 v = check(kr, "kR", true);
-        if (!v.equals(this.kR)) changes++;
-        this.kR = v;
+        this.kR = changed(this.kR, check(kr, "kR", true));
         return this;
     }
 
@@ -151,9 +155,7 @@ public class Material {
      * @throws IllegalArgumentException when a component is negative, NaN or infinite, naming the triple
      */
     public Material setKA(Double3 ka) {
-        Double3 v = check(ka, "kA", false);
-        if (!v.equals(this.kA)) changes++;
-        this.kA = v;
+        this.kA = changed(this.kA, check(ka, "kA", false));
         return this;
     }
 
@@ -377,8 +379,7 @@ public class Material {
     public Material setShininess(int nShininess) {
         if (nShininess < 0)
             throw new IllegalArgumentException("shininess must be non-negative, got " + nShininess);
-        if (nShininess != this.nShininess) changes++;
-        this.nShininess = nShininess;
+        this.nShininess = (int) changed(this.nShininess, nShininess);
         return this;
     }
 
@@ -411,9 +412,7 @@ public class Material {
      * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
      */
     public Material setReflectionSpread(double spread) {
-        double v = Checks.requireNonNegative(spread, "reflection spread");
-        if (Double.compare(v, this.reflectionSpread) != 0) changes++;
-        this.reflectionSpread = v;
+        this.reflectionSpread = changed(this.reflectionSpread, Checks.requireNonNegative(spread, "reflection spread"));
         return this;
     }
 
@@ -423,9 +422,7 @@ public class Material {
      * @throws IllegalArgumentException when it is negative, NaN or infinite, naming it
      */
     public Material setTransmissionSpread(double spread) {
-        double v = Checks.requireNonNegative(spread, "transmission spread");
-        if (Double.compare(v, this.transmissionSpread) != 0) changes++;
-        this.transmissionSpread = v;
+        this.transmissionSpread = changed(this.transmissionSpread, Checks.requireNonNegative(spread, "transmission spread"));
         return this;
     }
 
@@ -438,8 +435,7 @@ public class Material {
     public Material setIor(double ior) {
         if (!(ior > 0) || Double.isInfinite(ior))
             throw new IllegalArgumentException("index of refraction must be finite and positive, got " + ior);
-        if (Double.compare(ior, this.ior) != 0) changes++;
-        this.ior = ior;
+        this.ior = changed(this.ior, ior);
         return this;
     }
 

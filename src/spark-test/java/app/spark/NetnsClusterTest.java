@@ -148,9 +148,7 @@ class NetnsClusterTest {
     private static java.util.Map<String, String> images(Path folder) throws Exception {
         java.util.Map<String, String> all = new java.util.TreeMap<>();
         try (Stream<Path> files = Files.list(folder)) {
-            for (Path f : files.toList())
-                all.put(f.getFileName().toString(), java.util.HexFormat.of().formatHex(
-                        java.security.MessageDigest.getInstance("SHA-256").digest(Files.readAllBytes(f))));
+            for (Path f : files.toList()) all.put(f.getFileName().toString(), sha(f));
         }
         return all;
     }
