@@ -97,7 +97,8 @@ class PublishedPomTest {
         assertThat(dependencies).noneSatisfy(d -> assertThat(text(d, "scope")).isEqualTo("test"));
         Element tests = profile("tests");
         Element activation = children(children(tests, "activation").get(0), "property").get(0);
-        assertThat(text(activation, "name")).isEqualTo("!skipTests");
+        assertThat(text(activation, "name")).isEqualTo("skipTests");
+        assertThat(text(activation, "value")).as("-DskipTests=false keeps the test libraries").isEqualTo("!true");
         assertThat(dependencies(tests))
                 .extracting(d -> text(d, "artifactId")).contains("junit-jupiter", "assertj-core", "jazzer-junit");
         assertThat(text(children(project, "properties").get(0), "maven.test.skip"))

@@ -76,12 +76,15 @@ class NetnsClusterTest {
             for (Path f : files.toList()) Files.copy(f, scenes.resolve(f.getFileName()));
         }
         // The master declares a worker lost after 10 s without a heartbeat (default 60 s), so that
-        // the worker whose link comes back registers again within the test.
-        Path masterConf = Files.writeString(dir.resolve("master.conf"), "spark.worker.timeout 10\n");
+        // the worker whose link comes back registers again within the test. The workers read the
+        // same setting: a worker beats every quarter of *its* timeout, and with the default (every
+        // 15 s) a healthy worker was dropped every 10 s and its executor replaced mid-job.
+        Path conf = Files.writeString(dir.resolve("cluster.conf"), "spark.worker.timeout 10\n");
         master = spark.master("master", new SparkInstallation.Host(PREFIX + "-1", "10.231.77.1", null), "--properties-file",
-                masterConf.toString());
+                conf.toString());
         for (int n = 2; n <= 3; n++)
-            workers.add(spark.worker("worker" + n, master, new SparkInstallation.Host(PREFIX + "-" + n, "10.231.77." + n, driver), 1));
+            workers.add(spark.worker("worker" + n, master, new SparkInstallation.Host(PREFIX + "-" + n, "10.231.77." + n, driver), 1,
+                    "--properties-file", conf.toString()));
     }
 
     @AfterAll

@@ -123,12 +123,17 @@ final class SparkInstallation {
         return worker(name, master, Host.LOOPBACK, 2);
     }
 
-    /** A worker of {@code master} on {@code host}: {@code cores} cores, 1 GB for executors; their files in {@code <dir>/<name>}. */
-    Daemon worker(String name, Daemon master, Host host, int cores) throws IOException, InterruptedException {
+    /**
+     * A worker of {@code master} on {@code host}: {@code cores} cores, 1 GB for executors; their files in
+     * {@code <dir>/<name>}; {@code options} after the others.
+     */
+    Daemon worker(String name, Daemon master, Host host, int cores, String... options) throws IOException, InterruptedException {
         Path log = dir.resolve(name + ".log");
-        Process p = start(log, host, "bin/spark-class", List.of("org.apache.spark.deploy.worker.Worker", master.url, "--host",
+        List<String> args = new ArrayList<>(List.of("org.apache.spark.deploy.worker.Worker", master.url, "--host",
                 host.address(), "--port", "0", "--webui-port", "0", "--cores", String.valueOf(cores), "--memory", "1g",
                 "--work-dir", Files.createDirectories(dir.resolve(name)).toString()));
+        args.addAll(List.of(options));
+        Process p = start(log, host, "bin/spark-class", args);
         awaitLine(p, log, Pattern.compile("Successfully registered with master"));
         return new Daemon(p, master.url);
     }
