@@ -790,10 +790,11 @@ public final class Camera {
         public Camera build() {
             View view = view();
             RayTracerBase tracer = tracer();
+            SamplerPlan plan = sampling.plan(!view.lens().isPinhole());
             // Before the image is allocated: a refused budget costs no memory.
-            sampling.requireRayBudget(view.lens(), tracer);
+            tracer.requireRayBudget(plan);
             ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
-            return new Camera(view, sampling, execution(), tracer, writer, imageWriter == null, summary, renderListener);
+            return new Camera(view, sampling, execution(plan), tracer, writer, imageWriter == null, summary, renderListener);
         }
 
         /**
@@ -803,13 +804,14 @@ public final class Camera {
         RegionRenderer regionRenderer() {
             View view = view();
             RayTracerBase tracer = tracer();
-            sampling.requireRayBudget(view.lens(), tracer);
+            SamplerPlan plan = sampling.plan(!view.lens().isPinhole());
+            tracer.requireRayBudget(plan);
             String name = imageWriter != null && imageWriter.hasName() ? imageWriter.getImageName() : "region";
-            return new RegionRenderer(view, sampling, execution(), tracer, name);
+            return new RegionRenderer(view, sampling, execution(plan), tracer, name);
         }
 
-        /** The execution of a camera with this builder's sampling, whose tile size it takes. */
-        private Execution execution() {
+        /** The execution of a camera with this builder's settings, the tile size its sampler's. */
+        private Execution execution(SamplerPlan sampling) {
             return new Execution(Execution.resolveThreads(threads), sampling.tileSize(), debugPrint, output);
         }
 

@@ -14,14 +14,51 @@ final class CenterSampler extends PixelSampler {
     private final int samples;
     private final Rgb pixel = new Rgb();
 
-    CenterSampler(Sampling sampling, boolean lens, Estimator estimator) {
-        super(sampling, lens, estimator);
-        this.samples = (int) samplesPerPixel(lens, sampling.lensSamples());
+    private CenterSampler(Plan plan, Estimator estimator) {
+        super(plan.seed, plan.lens, estimator);
+        this.samples = plan.samples;
     }
 
-    /** Camera rays per pixel: the lens samples with depth of field, else 1. */
-    static long samplesPerPixel(boolean depthOfField, int lensSamples) {
-        return depthOfField ? lensSamples : 1;
+    /**
+     * @param seed    the render's seed
+     * @param lens    whether the view has a lens
+     * @param samples camera rays per pixel: the lens samples with a lens, else 1
+     */
+    record Plan(long seed, boolean lens, int samples) implements SamplerPlan {
+        /** A pinhole's one ray per pixel, or with a lens {@code lensSamples}. */
+        static Plan of(long seed, boolean lens, int lensSamples) {
+            return new Plan(seed, lens, lens ? lensSamples : 1);
+        }
+
+        @Override
+        public AntiAliasing mode() {
+            return AntiAliasing.NONE;
+        }
+
+        @Override
+        public long maxSamplesPerPixel() {
+            return samples;
+        }
+
+        @Override
+        public int tileSize() {
+            return 16;
+        }
+
+        @Override
+        public PixelSampler newSampler(Estimator estimator, int tileSize) {
+            return new CenterSampler(this, estimator);
+        }
+
+        @Override
+        public String describe() {
+            return "NONE";
+        }
+
+        @Override
+        public String lensSamples() {
+            return lens ? " x" + samples : "";
+        }
     }
 
     @Override

@@ -11,10 +11,43 @@ final class GridSampler extends PixelSampler {
     private final int rows;
     private final Rgb pixel = new Rgb();
 
-    GridSampler(Sampling sampling, boolean lens, Estimator estimator) {
-        super(sampling, lens, estimator);
-        this.columns = sampling.grid().columns();
-        this.rows = sampling.grid().rows();
+    private GridSampler(Plan plan, Estimator estimator) {
+        super(plan.seed, plan.lens, estimator);
+        this.columns = plan.columns;
+        this.rows = plan.rows;
+    }
+
+    /**
+     * @param seed    the render's seed
+     * @param lens    whether the view has a lens (each sample then takes a lens point)
+     * @param columns cells across a pixel
+     * @param rows    cells down a pixel
+     */
+    record Plan(long seed, boolean lens, int columns, int rows) implements SamplerPlan {
+        @Override
+        public AntiAliasing mode() {
+            return AntiAliasing.RANDOM;
+        }
+
+        @Override
+        public long maxSamplesPerPixel() {
+            return samplesPerPixel(columns, rows);
+        }
+
+        @Override
+        public int tileSize() {
+            return 16;
+        }
+
+        @Override
+        public PixelSampler newSampler(Estimator estimator, int tileSize) {
+            return new GridSampler(this, estimator);
+        }
+
+        @Override
+        public String describe() {
+            return "RANDOM " + columns + "x" + rows;
+        }
     }
 
     /** Camera rays per pixel: one per cell, whatever the lens. */

@@ -52,18 +52,18 @@ final class LatticeSampler extends PixelSampler {
     private final Rgb pixel = new Rgb();
 
     /**
-     * CORNERS or ADAPTIVE, as {@code sampling} says; ADAPTIVE's threshold is the spread of a
-     * pixel's corners (0..255 scale, per channel, values clamped to 255 as the image stores them)
-     * above which it is subdivided; a square of share w of the pixel splits above threshold / w.
+     * ADAPTIVE's threshold is the spread of a pixel's corners (0..255 scale, per channel, values
+     * clamped to 255 as the image stores them) above which it is subdivided; a square of share w
+     * of the pixel splits above threshold / w.
      *
      * @param tileSize the render loop's tile side in pixels: the cache covers one tile's lattice
      */
-    LatticeSampler(Sampling sampling, boolean lens, Estimator estimator, int tileSize) {
-        super(sampling, lens, estimator);
-        this.adaptive = sampling.antiAliasing() == AntiAliasing.ADAPTIVE;
-        this.maxDepth = adaptive ? sampling.adaptive().depth() : 0;
-        this.threshold = sampling.adaptive().threshold();
-        this.perPixel = pointsPerPixel(adaptive, maxDepth);
+    private LatticeSampler(Plan plan, Estimator estimator, int tileSize) {
+        super(plan.seed, plan.lens, estimator);
+        this.adaptive = plan.adaptive;
+        this.maxDepth = plan.depth;
+        this.threshold = plan.threshold;
+        this.perPixel = plan.pointsPerPixel();
         this.side = tileSize * perPixel + 1;
         cr = new double[side * side];
         cg = new double[side * side];
@@ -71,31 +71,70 @@ final class LatticeSampler extends PixelSampler {
         stamp = new int[side * side];
     }
 
-    /** R: lattice points per pixel side. */
-    private static int pointsPerPixel(boolean adaptive, int maxDepth) {
-        return adaptive ? 1 << maxDepth : 2;
-    }
-
     /**
-     * The most camera rays a pixel takes: CORNERS' five points (the centre and the corners), or
-     * ADAPTIVE's whole lattice of (R + 1)² points, every square split down to the deepest level.
-     * With a lens (CORNERS only: ADAPTIVE then samples per pixel), each point traces one ray.
+     * CORNERS ({@link #corners}) or ADAPTIVE without a lens ({@link #adaptive}).
      *
-     * @param maxDepth ADAPTIVE's depth, 0..30 (ignored for CORNERS)
+     * @param seed      the render's seed
+     * @param lens      whether the view has a lens (CORNERS only: each point takes a lens point)
+     * @param adaptive  ADAPTIVE's subdivision, or CORNERS' five fixed points
+     * @param depth     ADAPTIVE's deepest subdivision, 1..6; 0 for CORNERS
+     * @param threshold ADAPTIVE's corner spread that subdivides; unused by CORNERS
      */
-    static long maxSamplesPerPixel(boolean adaptive, int maxDepth) {
-        if (!adaptive) return 5;
-        long side = (1L << maxDepth) + 1;
-        return side * side;
-    }
+    record Plan(long seed, boolean lens, boolean adaptive, int depth, double threshold) implements SamplerPlan {
+        static Plan corners(long seed, boolean lens) {
+            return new Plan(seed, lens, false, 0, 0);
+        }
 
-    /**
-     * The tile side, in pixels: 64, fewer for lattices above 4 points per pixel side so that the
-     * per-tile cache stays at most 257² points (2.1 MB). Large tiles matter: the points on a tile's
-     * border are traced again by the neighbouring tile, about 2/side of the one-ray-per-pixel base.
-     */
-    static int tileSize(boolean adaptive, int maxDepth) {
-        return Math.max(1, Math.min(64, 256 / pointsPerPixel(adaptive, maxDepth)));
+        static Plan adaptive(long seed, int depth, double threshold) {
+            return new Plan(seed, false, true, depth, threshold);
+        }
+
+        /** ADAPTIVE's words, with or without a lens. */
+        static String adaptiveWords(int depth, double threshold) {
+            return "ADAPTIVE depth " + depth + " threshold " + threshold;
+        }
+
+        /** R: lattice points per pixel side. */
+        int pointsPerPixel() {
+            return adaptive ? 1 << depth : 2;
+        }
+
+        @Override
+        public AntiAliasing mode() {
+            return adaptive ? AntiAliasing.ADAPTIVE : AntiAliasing.CORNERS;
+        }
+
+        /**
+         * The most camera rays a pixel takes: CORNERS' five points (the centre and the corners), or
+         * ADAPTIVE's whole lattice of (R + 1)² points, every square split down to the deepest
+         * level. With a lens (CORNERS only), each point traces one ray.
+         */
+        @Override
+        public long maxSamplesPerPixel() {
+            if (!adaptive) return 5;
+            long side = (1L << depth) + 1;
+            return side * side;
+        }
+
+        /**
+         * The tile side, in pixels: 64, fewer for lattices above 4 points per pixel side so that the
+         * per-tile cache stays at most 257² points (2.1 MB). Large tiles matter: the points on a tile's
+         * border are traced again by the neighbouring tile, about 2/side of the one-ray-per-pixel base.
+         */
+        @Override
+        public int tileSize() {
+            return Math.max(1, Math.min(64, 256 / pointsPerPixel()));
+        }
+
+        @Override
+        public PixelSampler newSampler(Estimator estimator, int tileSize) {
+            return new LatticeSampler(this, estimator, tileSize);
+        }
+
+        @Override
+        public String describe() {
+            return adaptive ? adaptiveWords(depth, threshold) : "CORNERS";
+        }
     }
 
     @Override

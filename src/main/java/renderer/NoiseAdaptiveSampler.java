@@ -37,16 +37,46 @@ final class NoiseAdaptiveSampler extends PixelSampler {
     private final double tolerance2;
     private final Rgb pixel = new Rgb();
 
-    NoiseAdaptiveSampler(Sampling sampling, boolean lens, Estimator estimator) {
-        super(sampling, lens, estimator);
-        this.max = (int) maxSamplesPerPixel(sampling.adaptive().depth());
-        double tolerance = sampling.adaptive().threshold();
-        this.tolerance2 = tolerance * tolerance;
+    private NoiseAdaptiveSampler(Plan plan, Estimator estimator) {
+        super(plan.seed, true, estimator);
+        this.max = (int) plan.maxSamplesPerPixel();
+        this.tolerance2 = plan.threshold * plan.threshold;
     }
 
-    /** The most camera rays a pixel takes: 4^depth. @param depth ADAPTIVE's depth, 0..30 */
-    static long maxSamplesPerPixel(int depth) {
-        return 1L << (2 * depth);
+    /**
+     * ADAPTIVE with a lens.
+     *
+     * @param seed      the render's seed
+     * @param depth     ADAPTIVE's depth, 1..6: at most 4^depth samples a pixel
+     * @param threshold the standard error of a pixel's mean at which it stops, 0..255 scale
+     */
+    record Plan(long seed, int depth, double threshold) implements SamplerPlan {
+        @Override
+        public AntiAliasing mode() {
+            return AntiAliasing.ADAPTIVE;
+        }
+
+        /** @return 4^depth */
+        @Override
+        public long maxSamplesPerPixel() {
+            return 1L << (2 * depth);
+        }
+
+        /** @return 16, as the other samplers that sample each pixel on its own */
+        @Override
+        public int tileSize() {
+            return 16;
+        }
+
+        @Override
+        public PixelSampler newSampler(Estimator estimator, int tileSize) {
+            return new NoiseAdaptiveSampler(this, estimator);
+        }
+
+        @Override
+        public String describe() {
+            return LatticeSampler.Plan.adaptiveWords(depth, threshold);
+        }
     }
 
     @Override

@@ -23,11 +23,12 @@ abstract class PixelSampler {
     private final boolean lens;
 
     /**
+     * @param seed      the render's seed
      * @param lens      whether each camera sample draws a lens point (the view has an aperture)
      * @param estimator the colour of a camera sample
      */
-    PixelSampler(Sampling sampling, boolean lens, Estimator estimator) {
-        this.seed = sampling.seed();
+    PixelSampler(long seed, boolean lens, Estimator estimator) {
+        this.seed = seed;
         this.estimator = estimator;
         this.lens = lens;
     }

@@ -29,14 +29,14 @@ public final class RayBudget {
     }
 
     /**
-     * The budget of a render's settings, before any camera or tracer exists (a scene file's or a
-     * command line's): {@code sampling}'s camera rays per pixel ({@link Sampling#maxSamplesPerPixel})
-     * times the Whitted tracer's rays per camera ray over {@code lights}, the rule and message of
-     * {@code Camera.Builder.build()}. The beam size and shadow samples are checked first, by the
-     * tracer's own rules.
+     * The budget of a render's settings, the rule and message of {@code Camera.Builder.build()}:
+     * {@code cameraRays} per pixel times the Whitted tracer's rays per camera ray over
+     * {@code lights}, counted as soft (a radius) and other. Public for the settings of a scene
+     * file or a command line, before any camera or tracer exists; the beam size and shadow
+     * samples are checked first, by the tracer's own rules.
      *
-     * @param sampling      the camera's sampling
-     * @param depthOfField  whether the camera has a lens (aperture above 0)
+     * @param mode          the anti-aliasing mode, for the message
+     * @param cameraRays    the sampling's most camera rays per pixel ({@code Sampling.maxSamplesPerPixel})
      * @param beamSize      rays per glossy or diffuse-glass beam, ≥ 1
      * @param shadowSamples shadow rays toward a light with a radius, ≥ 1
      * @param lights        the scene's lights (read once, a copy)
@@ -44,16 +44,10 @@ public final class RayBudget {
      *                                  {@link #MAX_RAYS_PER_PIXEL} rays per pixel, naming the
      *                                  factors, the product and the limit
      */
-    public static void require(Sampling sampling, boolean depthOfField, int beamSize, int shadowSamples,
+    public static void require(AntiAliasing mode, long cameraRays, int beamSize, int shadowSamples,
                                Collection<? extends LightSource> lights) {
         WhittedShader.requireBeamSize(beamSize);
         WhittedShader.requireShadowSamples(shadowSamples);
-        require(sampling.antiAliasing(), sampling.maxSamplesPerPixel(depthOfField), beamSize, shadowSamples, lights);
-    }
-
-    /** {@link #require(AntiAliasing, long, int, int, int, int)} with the lights counted: soft (a radius) and other. */
-    static void require(AntiAliasing mode, long cameraRays, int beamSize, int shadowSamples,
-                        Collection<? extends LightSource> lights) {
         int soft = 0, other = 0;
         for (LightSource light : lights.toArray(new LightSource[0])) { // a copy: read once, whatever its kind
             if (light.getRadius() > 0) ++soft;
@@ -77,7 +71,7 @@ public final class RayBudget {
      * ({@code TraceContext.requireWithinBudget}), so no pixel ever traces more.
      *
      * @param mode          the anti-aliasing mode, for the message
-     * @param cameraRays    camera rays per pixel ({@link Sampling#maxSamplesPerPixel})
+     * @param cameraRays    camera rays per pixel ({@code Sampling.maxSamplesPerPixel})
      * @param beamSize      rays per glossy or diffuse-glass beam
      * @param shadowSamples shadow rays toward a light with a radius
      * @param softLights    lights with a radius in the scene

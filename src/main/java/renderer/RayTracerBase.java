@@ -27,14 +27,6 @@ public abstract class RayTracerBase {
      */
     public abstract Color traceRay(Ray ray);
 
-    /**
-     * The most rays a pixel of a render with this tracer may trace, counted as they are traced
-     * ({@code TraceContext.requireWithinBudget}): {@link RayBudget#MAX_RAYS_PER_PIXEL}. Package
-     * private and not final only so that a test can hold a worst-case pixel to a smaller figure
-     * than 2^24 rays, which would take seconds to trace.
-     */
-    long maxRaysPerPixel = RayBudget.MAX_RAYS_PER_PIXEL;
-
     /** The scene as this tracer was last prepared for it; null before, or after a setting that the preparation depends on changed. */
     private SceneStamp prepared;
 
@@ -96,15 +88,14 @@ public abstract class RayTracerBase {
     }
 
     /**
-     * Holds {@code cameraRays} camera rays per pixel, times the rays this tracer may trace per
+     * Holds the sampling's most camera rays per pixel, times the rays this tracer may trace per
      * camera ray, to {@link RayBudget#MAX_RAYS_PER_PIXEL}; a tracer of another kind traces one.
      *
-     * @param mode       the sampling's anti-aliasing mode, for the message
-     * @param cameraRays the sampling's most camera rays per pixel
+     * @param sampling what the render's sampling takes
      * @throws IllegalArgumentException naming the factors and their product when it is over
      */
-    void requireRayBudget(AntiAliasing mode, long cameraRays) {
-        RayBudget.requireCameraRays(mode, cameraRays);
+    void requireRayBudget(SamplerPlan sampling) {
+        RayBudget.requireCameraRays(sampling.mode(), sampling.maxSamplesPerPixel());
     }
 
     /**

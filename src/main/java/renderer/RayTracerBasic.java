@@ -152,8 +152,9 @@ public class RayTracerBasic extends RayTracerBase {
     }
 
     @Override
-    void requireRayBudget(AntiAliasing mode, long cameraRays) {
-        RayBudget.require(mode, cameraRays, beamSize, shadowSamples, SceneStamp.lightsForBudget(sceneParts()));
+    void requireRayBudget(SamplerPlan sampling) {
+        RayBudget.require(sampling.mode(), sampling.maxSamplesPerPixel(), beamSize, shadowSamples,
+                SceneStamp.lightsForBudget(sceneParts()));
     }
 
     /** @return which walk the BVH takes on this JVM (vector or scalar, {@link Bvh#walkDescription()}), after a comma; "" without the BVH */
@@ -176,7 +177,6 @@ public class RayTracerBasic extends RayTracerBase {
     public Color traceRay(Ray ray) {
         prepareIfChanged();
         TraceContext ctx = directContexts.get();
-        ctx.rayLimit = maxRaysPerPixel;
         ctx.beginPixel(-1, -1);
         Point h = ray.getHead();
         Vector d = ray.getDirection();

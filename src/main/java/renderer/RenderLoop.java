@@ -15,34 +15,30 @@ import java.util.concurrent.atomic.AtomicReference;
 /**
  * The one render loop. The image is cut into square tiles; workers claim tiles from an atomic
  * counter (no lock per pixel) and sample every pixel of a tile with their own
- * {@link PixelSampler} (from the {@link Sampling}) and {@link TraceContext} (from the tracer).
+ * {@link PixelSampler} (from the sampling's {@link SamplerPlan}) and {@link TraceContext} (from the tracer).
  * Which worker renders a tile does not change its pixels: every random number comes from streams
  * keyed by the pixel, so images are identical for any thread count. It reads its settings from
  * the values it is given, never from a camera; one loop serves any number of passes, and passes
  * may run at once (each has its own counters).
  */
 final class RenderLoop {
-    private final Sampling sampling;
+    private final SamplerPlan sampling;
     private final Execution execution;
     private final RayTracerBase tracer;
     /** Where whole-image passes write; null for a loop that renders regions only. */
     private final ImageWriter image;
-    private final View.Lens lens;
     private final View.CameraRays rays;
-    private final boolean hasLens;
 
     /**
      * @param image the image a whole-image pass writes, of the view's resolution; null when only
      *              regions are rendered
      */
     RenderLoop(View view, Sampling sampling, Execution execution, RayTracerBase tracer, ImageWriter image) {
-        this.sampling = sampling;
         this.execution = execution;
         this.tracer = tracer;
         this.image = image;
-        this.lens = view.lens();
         this.rays = view.cameraRays();
-        this.hasLens = rays.hasLens();
+        this.sampling = sampling.plan(rays.hasLens());
     }
 
     /**
@@ -63,7 +59,7 @@ final class RenderLoop {
         SceneStamp before = SceneStamp.of(tracer, image.getImageName());
         RenderStats stats;
         try {
-            sampling.requireRayBudget(lens, tracer); // the tracer's settings may have grown since the camera was built
+            tracer.requireRayBudget(sampling); // the tracer's settings may have grown since the camera was built
             long t0 = System.nanoTime();
             PreparedTracer prepared = tracer.prepareFor(before);
             double prepareSeconds = (System.nanoTime() - t0) / 1e9;
@@ -88,7 +84,7 @@ final class RenderLoop {
      * @return the rectangle's pixels, packed 0xRRGGBB row by row, and what the render did
      */
     RegionRenderer.Pixels region(String name, PreparedTracer prepared, int x0, int y0, int x1, int y1) {
-        sampling.requireRayBudget(lens, tracer);
+        tracer.requireRayBudget(sampling);
         int[] rgb = new int[(x1 - x0) * (y1 - y0)];
         RenderStats stats = new Pass(name, prepared, new Rect(x0, y0, x1, y1), rgb).run(0);
         return new RegionRenderer.Pixels(rgb, stats);
@@ -205,12 +201,11 @@ final class RenderLoop {
 
         private Runnable worker(Progress progress) {
             return () -> {
-                PixelSampler sampler = sampling.newSampler(hasLens, estimator, tile);
+                PixelSampler sampler = sampling.newSampler(estimator, tile);
                 // One tile's pixels, written out when the tile is done.
                 int[] tilePixels = new int[tile * tile];
                 TraceContext ctx = tracer.newContext();
                 ctx.interruptible = true;
-                ctx.rayLimit = tracer.maxRaysPerPixel;
                 try {
                     for (int t = nextTile.getAndIncrement(); t < tileCount; t = nextTile.getAndIncrement()) {
                         if (cancelled.get() || Thread.currentThread().isInterrupted()) throw interrupted();

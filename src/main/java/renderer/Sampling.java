@@ -11,8 +11,9 @@ import primitives.Checks;
  *
  * <p>The anti-aliasing mode with the parameters of each mode (a builder keeps all of them, so that
  * switching modes keeps what was set), the lens samples of depth of field without anti-aliasing,
- * and the seed every random number derives from. A value, checked when it is made; it makes each
- * worker's {@link PixelSampler} and knows how many camera rays a pixel may take. The limits and
+ * and the seed every random number derives from. A value, checked when it is made; its
+ * {@link #plan(boolean)} is what its mode needs for a render (the samplers, the camera rays a
+ * pixel may take, the tile size). The limits and
  * defaults of sampling are defined here; {@link Camera} names them for the course.
  *
  * @param antiAliasing the mode
@@ -177,58 +178,32 @@ public record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, 
     }
 
     /**
+     * What this sampling's mode needs for a render, decided here and nowhere else: each mode's
+     * sampler with only the values it reads. ADAPTIVE samples each pixel on its own under a lens
+     * ({@link NoiseAdaptiveSampler}): the lattice's shared corners are each one random lens point.
+     *
+     * @param lens whether the view has a lens (an aperture above 0)
+     * @return the plan of the mode
+     */
+    SamplerPlan plan(boolean lens) {
+        return switch (antiAliasing) {
+            case NONE -> CenterSampler.Plan.of(seed, lens, lensSamples);
+            case RANDOM -> new GridSampler.Plan(seed, lens, grid.columns, grid.rows);
+            case CORNERS -> LatticeSampler.Plan.corners(seed, lens);
+            case ADAPTIVE -> lens ? new NoiseAdaptiveSampler.Plan(seed, adaptive.depth, adaptive.threshold)
+                    : LatticeSampler.Plan.adaptive(seed, adaptive.depth, adaptive.threshold);
+        };
+    }
+
+    /**
      * The most camera rays one pixel may take, by the rule of the sampler that spends them: the
      * worst case, which a test holds equal to the rays a worst-case pixel traces.
      *
-     * @param depthOfField whether the view has a lens (NONE then takes the lens samples, and
-     *                     ADAPTIVE samples each pixel on its own, {@link NoiseAdaptiveSampler})
+     * @param depthOfField whether the view has a lens
      * @return camera rays per pixel, as a long (a grid of two ints may overflow an int)
      */
     public long maxSamplesPerPixel(boolean depthOfField) {
-        return switch (antiAliasing) {
-            case NONE -> CenterSampler.samplesPerPixel(depthOfField, lensSamples);
-            case RANDOM -> GridSampler.samplesPerPixel(grid.columns, grid.rows);
-            case CORNERS -> LatticeSampler.maxSamplesPerPixel(false, 0);
-            case ADAPTIVE -> depthOfField ? NoiseAdaptiveSampler.maxSamplesPerPixel(adaptive.depth)
-                    : LatticeSampler.maxSamplesPerPixel(true, adaptive.depth);
-        };
-    }
-
-    /**
-     * Holds these settings with the view's lens and the tracer's rays per camera ray to
-     * {@link RayBudget#MAX_RAYS_PER_PIXEL}.
-     *
-     * @throws IllegalArgumentException naming the factors and their product when it is over
-     */
-    void requireRayBudget(View.Lens lens, RayTracerBase tracer) {
-        tracer.requireRayBudget(antiAliasing, maxSamplesPerPixel(!lens.isPinhole()));
-    }
-
-    /** @return the side, in pixels, of the render loop's square tiles that suits this sampling */
-    int tileSize() {
-        return switch (antiAliasing) {
-            case NONE, RANDOM -> 16;
-            case CORNERS -> LatticeSampler.tileSize(false, 0);
-            case ADAPTIVE -> LatticeSampler.tileSize(true, adaptive.depth);
-        };
-    }
-
-    /**
-     * A new sampler, for one worker: its scratch state is its own.
-     *
-     * @param lens      whether the view has a lens (ADAPTIVE then samples each pixel on its own)
-     * @param estimator the colour of a camera sample, from the render loop
-     * @param tileSize  the render loop's tile side, in pixels (at most {@link #tileSize()} for the
-     *                  lattice samplers, whose cache covers one tile)
-     */
-    PixelSampler newSampler(boolean lens, Estimator estimator, int tileSize) {
-        return switch (antiAliasing) {
-            case NONE -> new CenterSampler(this, lens, estimator);
-            case RANDOM -> new GridSampler(this, lens, estimator);
-            case CORNERS -> new LatticeSampler(this, lens, estimator, tileSize);
-            case ADAPTIVE -> lens ? new NoiseAdaptiveSampler(this, lens, estimator)
-                    : new LatticeSampler(this, lens, estimator, tileSize);
-        };
+        return plan(depthOfField).maxSamplesPerPixel();
     }
 
     /**
@@ -236,13 +211,8 @@ public record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, 
      * @return the mode and its parameters in words, then the depth of field's when there is a lens
      */
     String describe(View.Lens lens) {
-        String aa = switch (antiAliasing) {
-            case NONE -> "NONE";
-            case RANDOM -> "RANDOM " + grid.columns + "x" + grid.rows;
-            case CORNERS -> "CORNERS";
-            case ADAPTIVE -> "ADAPTIVE depth " + adaptive.depth + " threshold " + adaptive.threshold;
-        };
-        return lens.isPinhole() ? aa : aa + ", DOF focal " + lens.focalDistance() + " aperture " + lens.aperture()
-                + (antiAliasing == AntiAliasing.NONE ? " x" + lensSamples : "");
+        SamplerPlan plan = plan(!lens.isPinhole());
+        return lens.isPinhole() ? plan.describe() : plan.describe() + ", DOF focal " + lens.focalDistance() + " aperture "
+                + lens.aperture() + plan.lensSamples();
     }
 }

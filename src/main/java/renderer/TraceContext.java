@@ -47,16 +47,28 @@ final class TraceContext {
      */
     boolean interruptible;
     /**
-     * The most rays the current pixel may trace ({@link RayBudget#MAX_RAYS_PER_PIXEL}; a test may
-     * lower it). The up-front budget counts one bounce; this bounds every bounce below it.
+     * The most rays the current pixel may trace: {@link RayBudget#MAX_RAYS_PER_PIXEL} (a test's
+     * tracer may make contexts with less). The up-front budget counts one bounce; this bounds
+     * every bounce below it.
      */
-    long rayLimit = RayBudget.MAX_RAYS_PER_PIXEL;
+    private final long rayLimit;
     /** cameraRays + shadowRays + secondaryRays when the current pixel began. */
     private long pixelStart;
     /** The current pixel, for the message of one that goes over the budget; -1: a direct traceRay call. */
     private int pixelX = -1, pixelY = -1;
 
+    /** A context with the library's limit of rays per pixel: {@link RayBudget#MAX_RAYS_PER_PIXEL}. */
     TraceContext(int levels, double threshold) {
+        this(levels, threshold, RayBudget.MAX_RAYS_PER_PIXEL);
+    }
+
+    /**
+     * @param levels    the tracer's recursion depth: levels below the camera ray's
+     * @param threshold the smallest product of kT a shadow ray carries on through
+     * @param rayLimit  the most rays a pixel may trace
+     */
+    TraceContext(int levels, double threshold, long rayLimit) {
+        this.rayLimit = rayLimit;
         transmittance = new Transmittance(threshold);
         this.levels = new Level[levels + 1];
         for (int i = 0; i < this.levels.length; ++i) this.levels[i] = new Level(i, i == 0 ? null : this.levels[i - 1]);

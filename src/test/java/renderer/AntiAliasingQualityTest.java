@@ -92,7 +92,7 @@ class AntiAliasingQualityTest {
         long adaptive = TestScenes.camera(flat, adaptiveImage).setAntiAliasing(AntiAliasing.ADAPTIVE).setAdaptive(3, 0)
                 .build().render().cameraRays();
         // Each pixel corner once per tile: a row of k tiles traces SIZE + k corner columns.
-        int tile = LatticeSampler.tileSize(true, 3), tiles = (SIZE + tile - 1) / tile;
+        int tile = LatticeSampler.Plan.adaptive(0, 3, 0).tileSize(), tiles = (SIZE + tile - 1) / tile;
         assertThat(adaptive).isEqualTo((long) (SIZE + tiles) * (SIZE + tiles));
         assertThat(Pixels.of(adaptiveImage)).containsOnly(0x1E3C5A);
     }

@@ -52,6 +52,12 @@ class RayBudgetTest {
     }
 
     /** A camera on {@link TestScenes#EYE} of side × side pixels with {@code tracer}. */
+    /** The rule as a scene file's settings meet it: the sampling's camera rays under a lens or not, the tracer's factors. */
+    private static void rule(Sampling sampling, boolean lens, int beamSize, int shadowSamples,
+                             java.util.Collection<? extends lighting.LightSource> lights) {
+        RayBudget.require(sampling.antiAliasing(), sampling.maxSamplesPerPixel(lens), beamSize, shadowSamples, lights);
+    }
+
     private static Camera.Builder camera(RayTracerBasic tracer, int side) {
         return Camera.getBuilder().setLocation(TestScenes.EYE)
                 .setDirection(new Vector(0, 0, -1), new Vector(0, 1, 0))
@@ -125,13 +131,13 @@ class RayBudgetTest {
         @Test
         @DisplayName("the rule alone, as a scene file is checked: sampling, lens, beam and shadow samples over the lights")
         void theRuleAlone() {
-            assertThatThrownBy(() -> RayBudget.require(Sampling.DEFAULT, false, 1_000_000_000, 16, List.of()))
+            assertThatThrownBy(() -> rule(Sampling.DEFAULT, false, 1_000_000_000, 16, List.of()))
                     .isInstanceOf(IllegalArgumentException.class)
                     .hasMessage("NONE sampling with 1 samples per pixel × (1 + 2 beams of 1000000000 rays: reflection and"
                             + " transmission) × (1 + 16 shadow samples × 0 soft lights + 0 other lights) is 2000000001 rays"
                             + " per pixel, more than the limit of 16777216");
-            RayBudget.require(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.ADAPTIVE), true, 16, 16, lit(1, 2).lights);
-            assertThatIllegalArgumentException().isThrownBy(() -> RayBudget.require(Sampling.DEFAULT, false, 0, 16, List.of()))
+            rule(Sampling.DEFAULT.withAntiAliasing(AntiAliasing.ADAPTIVE), true, 16, 16, lit(1, 2).lights);
+            assertThatIllegalArgumentException().isThrownBy(() -> rule(Sampling.DEFAULT, false, 0, 16, List.of()))
                     .withMessage("beam size must be at least 1 ray, got 0");
         }
 
@@ -143,7 +149,7 @@ class RayBudgetTest {
             Scene scene = lit(softLights, 1);
             Throwable built = catchThrowable(() -> settings.apply(camera(new RayTracerBasic(scene).setBeamSize(beamSize)
                     .setShadowSamples(shadowSamples), 1)).build());
-            Throwable ruled = catchThrowable(() -> RayBudget.require(sampling, lens, beamSize, shadowSamples, scene.lights));
+            Throwable ruled = catchThrowable(() -> rule(sampling, lens, beamSize, shadowSamples, scene.lights));
             assertThat(built).as("build() refuses").isNotNull();
             assertThat(ruled).isInstanceOf(IllegalArgumentException.class).hasMessage(built.getMessage());
         }
@@ -239,19 +245,37 @@ class RayBudgetTest {
          * Deeper bounces: twelve parallel panes that each reflect and transmit everything, so every
          * path splits in two at each of the tracer's levels: far more than the one-bounce figure.
          */
-        private RayTracerBasic hallOfPanes() {
+        private Limited hallOfPanes() {
             Scene scene = lit(1, 1);
             for (int i = 0; i < 12; ++i)
                 scene.geometries.add(new Plane(new Point(0, 0, -i), new Vector(0, 0, 1))
                         .setMaterial(new Material().setKd(0.1).setKr(1).setKt(1)));
-            return new RayTracerBasic(scene).setBeamSize(1).setShadowSamples(4);
+            Limited tracer = new Limited(scene);
+            tracer.setBeamSize(1).setShadowSamples(4);
+            return tracer;
+        }
+
+        /**
+         * The library's tracer whose workers hold a pixel to {@link #maxRaysPerPixel} rather than
+         * 2^24 rays, which a worst-case pixel would take seconds to reach.
+         */
+        private static final class Limited extends RayTracerBasic {
+            long maxRaysPerPixel = Long.MAX_VALUE;
+
+            Limited(Scene scene) {
+                super(scene);
+            }
+
+            @Override
+            TraceContext newContext() {
+                return new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K, maxRaysPerPixel);
+            }
         }
 
         @Test
         @DisplayName("a pixel that needs more than the limit fails naming it, and one at the limit is rendered within it")
         void deeperBouncesAreStoppedAtTheLimit() {
-            RayTracerBasic tracer = hallOfPanes();
-            tracer.maxRaysPerPixel = Long.MAX_VALUE;
+            Limited tracer = hallOfPanes();
             long needed = camera(tracer, 1).setMultithreading(0).build().render().totalRays();
             assertThat(needed).isGreaterThan(10 * figure(1, 1, 4, 1, 1)); // what the up-front figure cannot see
 
@@ -269,8 +293,7 @@ class RayBudgetTest {
         @Test
         @DisplayName("the limit of a pixel is its own: a 2x2 image of pixels within it renders")
         void perPixel() {
-            RayTracerBasic tracer = hallOfPanes();
-            tracer.maxRaysPerPixel = Long.MAX_VALUE;
+            Limited tracer = hallOfPanes();
             long needed = camera(tracer, 1).setMultithreading(0).build().render().totalRays();
             tracer.maxRaysPerPixel = needed + needed / 2; // the four pixels need about 4 × needed together
             assertThat(camera(tracer, 2).setMultithreading(0).build().render().totalRays()).isGreaterThan(2 * needed);

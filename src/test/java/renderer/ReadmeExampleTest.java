@@ -140,10 +140,15 @@ class ReadmeExampleTest {
         return name.find() ? name.group(1) : null;
     }
 
-    /** @return whether this test run has the Spark build (app.spark and Spark itself) on its class path */
+    /**
+     * @return whether this test run has the Spark build (app.spark and Spark itself) on its class
+     *         path; both are asked, as a run without -Pspark after one with it finds app.spark's
+     *         classes left in target/classes but not Spark
+     */
     private static boolean sparkBuild() {
         try {
             Class.forName("app.spark.SparkRenderer", false, ReadmeExampleTest.class.getClassLoader());
+            Class.forName("org.apache.spark.SparkContext", false, ReadmeExampleTest.class.getClassLoader());
             return true;
         } catch (ClassNotFoundException | LinkageError e) {
             return false;

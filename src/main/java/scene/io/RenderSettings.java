@@ -490,7 +490,7 @@ public final class RenderSettings implements java.io.Serializable {
      * Checks this specification against the library's ray budget for {@code scene}, as
      * {@code Camera.Builder.build()} will for a camera over that scene when it is replayed: the
      * stated values over the library's defaults, by the library's rule
-     * ({@link RayBudget#require(Sampling, boolean, int, int, java.util.Collection)}; the budget
+     * ({@link RayBudget#require(renderer.AntiAliasing, long, int, int, java.util.Collection)}; the budget
      * depends on the sampling, the lens, the tracer and the scene's lights, not on the view: a
      * light with a radius takes the shadow samples at each shaded point, every other light one ray).
      *
@@ -505,7 +505,7 @@ public final class RenderSettings implements java.io.Serializable {
         Sampling sampling = antiAliasing.over(Sampling.DEFAULT);
         if (lens.samples != null) sampling = sampling.withLensSamples(lens.samples);
         if (seed != null) sampling = sampling.withSeed(seed);
-        RayBudget.require(sampling, !lens.lens().isPinhole(),
+        RayBudget.require(sampling.antiAliasing(), sampling.maxSamplesPerPixel(!lens.lens().isPinhole()),
                 tracer.beamSize != null ? tracer.beamSize : RayTracerBasic.DEFAULT_BEAM_SIZE,
                 tracer.shadowSamples != null ? tracer.shadowSamples : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, scene.lights);
         return this;
