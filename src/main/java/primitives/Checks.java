@@ -53,4 +53,17 @@ public final class Checks {
             throw new IllegalArgumentException(name + " must be a non-negative finite number, got " + value);
         return value;
     }
+
+    /**
+     * Rejects negative counts and exponents.
+     *
+     * @param value the value to check
+     * @param name  what the value is, for the message (e.g. "shininess")
+     * @return {@code value}
+     * @throws IllegalArgumentException when {@code value} is negative
+     */
+    public static int requireNonNegative(int value, String name) {
+        if (value < 0) throw new IllegalArgumentException(name + " must be non-negative, got " + value);
+        return value;
+    }
 }

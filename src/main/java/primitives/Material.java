@@ -377,9 +377,7 @@ public class Material {
      * @throws IllegalArgumentException when it is negative, naming it
      */
     public Material setShininess(int nShininess) {
-        if (nShininess < 0)
-            throw new IllegalArgumentException("shininess must be non-negative, got " + nShininess);
-        this.nShininess = (int) changed(this.nShininess, nShininess);
+        this.nShininess = (int) changed(this.nShininess, Checks.requireNonNegative(nShininess, "shininess"));
         return this;
     }
 

@@ -610,21 +610,9 @@ public final class Camera {
         }
 
         /**
-         * ADAPTIVE settings: sub-pixels down to 1/2^maxDepth of the pixel side (1..6, default
-         * {@value Camera#DEFAULT_ADAPTIVE_DEPTH}, i.e. up to 8×8). A square (first the pixel) is
-         * traced at its four corners, shared with its neighbours; it is cut into its four quadrants
-         * when its corners spread over more than {@code threshold} divided by the square's share of
-         * the pixel in some channel (0..255 scale, values clamped to 255; default
-         * {@value Camera#DEFAULT_ADAPTIVE_THRESHOLD}): 8 for the pixel, 32 for a quarter, 128 for a
-         * sixteenth. The test bounds what a square can add to its pixel's error, so deeper levels
-         * split only at strong edges. The defaults trace about 2 camera rays per
-         * pixel on the showcase at 600×600 (see BENCHMARKS.md, image quality per ray).
-         * <p>With depth of field the corners would each see one random lens point and could agree
-         * by chance where the blur is noisy, so each pixel takes its own stratified samples
-         * instead: 8, then 8 more at a time while the standard error of their mean (from their
-         * spread) is above {@code threshold} in some channel, up to 4^maxDepth (64 at depth 3).
-         * The defaults trace about 10 camera rays per pixel on the showcase with a lens, for
-         * 40.7 dB against 256 (BENCHMARKS.md, depth of field).
+         * ADAPTIVE's settings ({@link AntiAliasing#ADAPTIVE} says how they are used): the deepest
+         * subdivision (default {@value Camera#DEFAULT_ADAPTIVE_DEPTH}) and the threshold (default
+         * {@value Camera#DEFAULT_ADAPTIVE_THRESHOLD}); other modes ignore them.
          *
          * @param maxDepth  the deepest subdivision, 1..6
          * @param threshold the pixel-level corner spread that subdivides, finite and ≥ 0 (0: any

@@ -132,14 +132,11 @@ public record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, 
     }
 
     /**
-     * ADAPTIVE's settings (see {@link LatticeSampler}, and with a lens {@link NoiseAdaptiveSampler}).
+     * ADAPTIVE's settings, as {@link AntiAliasing#ADAPTIVE} uses them.
      *
-     * @param depth     the deepest subdivision, 1..6: sub-pixels down to 1/2^depth of the pixel
-     *                  side; with a lens, at most 4^depth samples a pixel
-     * @param threshold the pixel-level corner spread that subdivides, on the 0..255 scale, finite
-     *                  and ≥ 0 (the test is "more than": at 0 any difference subdivides, corners
-     *                  that agree exactly never do); with a lens, the estimated standard error of
-     *                  its mean at which a pixel stops
+     * @param depth     the deepest subdivision, 1..6
+     * @param threshold the pixel-level corner spread that subdivides (with a lens, the standard
+     *                  error at which a pixel stops), 0..255 scale, finite and ≥ 0
      *
      * @hidden internal: part of the sampling value
      */

@@ -1,8 +1,5 @@
 package scene.io;
 
-import java.io.IOException;
-import java.io.InvalidObjectException;
-import java.io.ObjectInputStream;
 import java.util.Objects;
 import java.util.StringJoiner;
 
@@ -34,28 +31,29 @@ import scene.Scene;
  * <p>A command line's options are a second specification, replayed after the file's:
  * {@code file.then(options)} states what the options state, and the file's values elsewhere.
  *
- * <p>Immutable: each {@code with…} method states its values on a copy. Serializable (a deserialized
- * copy is checked again): a cluster's driver sends the specification it resolved to its executors.
+ * <p>A record of its parts, each a record of what it states (null: not stated): equality, hashing
+ * and serialization are the parts' (a deserialized copy goes through the same checks, the
+ * records' constructors). Each {@code with…} method states its values on a copy; a cluster's driver
+ * sends the specification it resolved to its executors.
  *
+ * @param image        the image's name and size
+ * @param grid         the grid drawn over the image
+ * @param antiAliasing the sampling as the builder's setters take it
+ * @param lens         the thin lens and its samples
+ * @param tracer       the tracer's extensions
+ * @param threads      the thread count ({@code Camera.Builder.setMultithreading}'s); null: all cores
+ * @param seed         the seed of every random number of the render; null: the library's
  * @serial exclude
  */
-public final class RenderSettings implements java.io.Serializable {
-    private static final long serialVersionUID = 3L;
-
+public record RenderSettings(ImageSpec image, GridSpec grid, AntiAliasingSpec antiAliasing, LensSpec lens, TracerSpec tracer,
+                             Integer threads, Long seed) implements java.io.Serializable {
     /** The image side in pixels when no size is stated: the scene format's default. */
     public static final int DEFAULT_SIZE = 500;
     /** The course's grid colour (java.awt.Color.YELLOW), when a grid's colour is not stated. */
     public static final Color DEFAULT_GRID_COLOR = new Color(255, 255, 0);
-    /**
-     * The most pixels an image can have, {@link ImageWriter#MAX_PIXELS}: the library's limit,
-     * checked here when a size is stated, without allocating.
-     */
+    /** The most pixels an image can have, {@link ImageWriter#MAX_PIXELS}, checked when a size is stated. */
     public static final long MAX_PIXELS = ImageWriter.MAX_PIXELS;
-    /**
-     * The ray budget of one pixel, {@code RayBudget.MAX_RAYS_PER_PIXEL}: the library's limit,
-     * which {@code Camera.Builder.build()} holds every camera to; named here for the scene
-     * format's messages and documentation.
-     */
+    /** The ray budget of one pixel, {@code RayBudget.MAX_RAYS_PER_PIXEL}, named for the scene format's messages. */
     public static final long MAX_RAYS_PER_PIXEL = RayBudget.MAX_RAYS_PER_PIXEL;
     /** The longest image name, in characters (file names have at most 255 bytes): {@code ImageWriter}'s rule. */
     public static final int MAX_IMAGE_NAME_LENGTH = ImageWriters.MAX_FILE_NAME_LENGTH;
@@ -63,139 +61,16 @@ public final class RenderSettings implements java.io.Serializable {
     private static final int ALL_CORES = -2;
 
     /** The specification that states nothing. */
-    private static final RenderSettings EMPTY = new RenderSettings(Image.NONE, Grid.NONE, AntiAliasingSpec.NONE,
-            Lens.NONE, Tracer.NONE, null, null);
+    private static final RenderSettings EMPTY = new RenderSettings(ImageSpec.NONE, GridSpec.NONE, AntiAliasingSpec.NONE,
+            LensSpec.NONE, TracerSpec.NONE, null, null);
 
-    // Each part, and each of its components, is null when the specification does not state it.
-    private final Image image;
-    private final Grid grid;
-    private final AntiAliasingSpec antiAliasing;
-    private final Lens lens;
-    private final Tracer tracer;
-    /** The thread count ({@code Camera.Builder.setMultithreading}'s). */
-    private final Integer threads;
-    /** The seed of every random number of the render. */
-    private final Long seed;
-
-    private RenderSettings(Image image, Grid grid, AntiAliasingSpec antiAliasing, Lens lens, Tracer tracer,
-                           Integer threads, Long seed) {
-        this.image = image;
-        this.grid = grid;
-        this.antiAliasing = antiAliasing;
-        this.lens = lens;
-        this.tracer = tracer;
-        this.threads = threads;
-        this.seed = seed;
-    }
-
-    /**
-     * The image: its name (images/&lt;name&gt;.png) and its size in pixels (stated together),
-     * each checked when stated.
-     */
-    private record Image(String name, Integer width, Integer height) implements java.io.Serializable {
-        static final Image NONE = new Image(null, null, null);
-
-        Image {
-            if (name != null) requireImageName(name);
-            if ((width == null) != (height == null)) throw new IllegalArgumentException("width and height are stated together");
-            if (width != null) requireSize(width, height);
-        }
-
-        Image then(Image later) {
-            return new Image(or(later.name, name), later.width != null ? later.width : width,
-                    later.width != null ? later.height : height);
-        }
-    }
-
-    /** The grid drawn over the image: a line every {@code interval} pixels (0: none), in {@code color}. */
-    private record Grid(Integer interval, Color color) implements java.io.Serializable {
-        static final Grid NONE = new Grid(null, null);
-
-        Grid then(Grid later) {
-            return new Grid(or(later.interval, interval), or(later.color, color));
-        }
-    }
-
-    /**
-     * The sampling as {@code Camera.Builder}'s setters take it: the mode, RANDOM's grid (columns ×
-     * rows, stated together) and ADAPTIVE's depth and threshold.
-     */
-    private record AntiAliasingSpec(AntiAliasing mode, Integer columns, Integer rows, Integer depth, Double threshold)
-            implements java.io.Serializable {
-        static final AntiAliasingSpec NONE = new AntiAliasingSpec(null, null, null, null, null);
-
-        AntiAliasingSpec then(AntiAliasingSpec later) {
-            return new AntiAliasingSpec(or(later.mode, mode), later.columns != null ? later.columns : columns,
-                    later.columns != null ? later.rows : rows, or(later.depth, depth), or(later.threshold, threshold));
-        }
-
-        /** Replays the stated values onto {@code camera}, each through its own setter. */
-        void applyTo(Camera.Builder camera) {
-            if (mode != null) camera.setAntiAliasing(mode);
-            if (columns != null) camera.setAntiAliasingGrid(columns, rows);
-            if (depth != null || threshold != null) {
-                // The builder takes the two together: a specification stating one gets the library's other.
-                Sampling.Adaptive library = Sampling.DEFAULT.adaptive();
-                camera.setAdaptive(depth != null ? depth : library.depth(), threshold != null ? threshold : library.threshold());
-            }
-        }
-
-        /** The stated values over {@code s}, each part checked by the library's rule. */
-        Sampling over(Sampling s) {
-            if (mode != null) s = s.withAntiAliasing(mode);
-            if (columns != null) s = s.withGrid(columns, rows);
-            if (depth != null || threshold != null)
-                s = s.withAdaptive(depth != null ? depth : s.adaptive().depth(),
-                        threshold != null ? threshold : s.adaptive().threshold());
-            return s;
-        }
-    }
-
-    /**
-     * The thin lens, its focal distance and aperture stated together (focal distance 0: the
-     * pinhole camera, whatever the aperture), and its samples per pixel.
-     */
-    private record Lens(Double focalDistance, Double aperture, Integer samples) implements java.io.Serializable {
-        static final Lens NONE = new Lens(null, null, null);
-
-        Lens then(Lens later) {
-            return new Lens(later.focalDistance != null ? later.focalDistance : focalDistance,
-                    later.focalDistance != null ? later.aperture : aperture, or(later.samples, samples));
-        }
-
-        /** Replays the stated values onto {@code camera}, each through its own setter. */
-        void applyTo(Camera.Builder camera) {
-            // A stated pinhole is the builder's aperture 0, which is the pinhole whatever the focal
-            // distance: it undoes a lens set on the builder before.
-            if (focalDistance != null) {
-                if (focalDistance == 0) camera.setDepthOfField(1, 0);
-                else camera.setDepthOfField(focalDistance, aperture);
-            }
-            if (samples != null) camera.setDepthOfFieldSamples(samples);
-        }
-
-        /** @return the stated lens by the library's rule: the pinhole when none is stated or its focal distance is 0 */
-        View.Lens lens() {
-            return focalDistance == null || focalDistance == 0 ? View.Lens.PINHOLE : View.Lens.thin(focalDistance, aperture);
-        }
-    }
-
-    /** The tracer's extensions, as {@link RayTracerBasic}'s setters take them. */
-    private record Tracer(Boolean bvh, Integer beamSize, Integer shadowSamples) implements java.io.Serializable {
-        static final Tracer NONE = new Tracer(null, null, null);
-
-        Tracer then(Tracer later) {
-            return new Tracer(or(later.bvh, bvh), or(later.beamSize, beamSize), or(later.shadowSamples, shadowSamples));
-        }
-
-        /** @return a new tracer for {@code scene} with the stated extensions, each through its own setter */
-        RayTracerBasic newTracer(Scene scene) {
-            RayTracerBasic tracer = new RayTracerBasic(scene);
-            if (bvh != null) tracer.setBvh(bvh);
-            if (beamSize != null) tracer.setBeamSize(beamSize);
-            if (shadowSamples != null) tracer.setShadowSamples(shadowSamples);
-            return tracer;
-        }
+    /** @throws NullPointerException naming a missing part (a copy that arrives serialized without one, say) */
+    public RenderSettings {
+        Objects.requireNonNull(image, "image part");
+        Objects.requireNonNull(grid, "grid part");
+        Objects.requireNonNull(antiAliasing, "anti-aliasing part");
+        Objects.requireNonNull(lens, "lens part");
+        Objects.requireNonNull(tracer, "tracer part");
     }
 
     /** @return a specification that states nothing (a command line without options) */
@@ -214,7 +89,7 @@ public final class RenderSettings implements java.io.Serializable {
      *                                  {@link #requireImageName(String)})
      */
     public static RenderSettings defaults(String imageName) {
-        return EMPTY.with(new Image(requireImageName(imageName), null, null));
+        return EMPTY.with(new ImageSpec(requireImageName(imageName), null, null));
     }
 
     /**
@@ -227,7 +102,7 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings withImage(String name, int width, int height) {
         Objects.requireNonNull(name, "image name");
-        return with(new Image(name, width, height));
+        return with(new ImageSpec(name, width, height));
     }
 
     /**
@@ -237,7 +112,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @throws IllegalArgumentException for a size out of range, naming it
      */
     public RenderSettings withImageSize(int width, int height) {
-        return with(new Image(image.name, width, height));
+        return with(new ImageSpec(image.name(), width, height));
     }
 
     /**
@@ -247,7 +122,7 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings withGrid(int interval, Color color) {
         Objects.requireNonNull(color, "grid colour");
-        return with(new Grid(interval, color));
+        return with(new GridSpec(interval, color));
     }
 
     /**
@@ -258,7 +133,7 @@ public final class RenderSettings implements java.io.Serializable {
     public RenderSettings withAntiAliasing(AntiAliasing mode) {
         Objects.requireNonNull(mode, "anti-aliasing mode");
         AntiAliasingSpec a = antiAliasing;
-        return with(new AntiAliasingSpec(mode, a.columns, a.rows, a.depth, a.threshold));
+        return with(new AntiAliasingSpec(mode, a.columns(), a.rows(), a.depth(), a.threshold()));
     }
 
     /**
@@ -268,7 +143,7 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings withAntiAliasingGrid(int columns, int rows) {
         AntiAliasingSpec a = antiAliasing;
-        return with(new AntiAliasingSpec(a.mode, columns, rows, a.depth, a.threshold));
+        return with(new AntiAliasingSpec(a.mode(), columns, rows, a.depth(), a.threshold()));
     }
 
     /**
@@ -277,7 +152,7 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings withAdaptiveDepth(int depth) {
         AntiAliasingSpec a = antiAliasing;
-        return with(new AntiAliasingSpec(a.mode, a.columns, a.rows, depth, a.threshold));
+        return with(new AntiAliasingSpec(a.mode(), a.columns(), a.rows(), depth, a.threshold()));
     }
 
     /**
@@ -286,7 +161,7 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings withAdaptiveThreshold(double threshold) {
         AntiAliasingSpec a = antiAliasing;
-        return with(new AntiAliasingSpec(a.mode, a.columns, a.rows, a.depth, threshold));
+        return with(new AntiAliasingSpec(a.mode(), a.columns(), a.rows(), a.depth(), threshold));
     }
 
     /**
@@ -296,7 +171,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the lens stated
      */
     public RenderSettings withDepthOfField(double focalDistance, double aperture) {
-        return with(new Lens(focalDistance, aperture, lens.samples));
+        return with(new LensSpec(focalDistance, aperture, lens.samples()));
     }
 
     /**
@@ -304,7 +179,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the lens samples stated
      */
     public RenderSettings withDepthOfFieldSamples(int samples) {
-        return with(new Lens(lens.focalDistance, lens.aperture, samples));
+        return with(new LensSpec(lens.focalDistance(), lens.aperture(), samples));
     }
 
     /**
@@ -328,7 +203,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the choice stated
      */
     public RenderSettings withBvh(boolean on) {
-        return with(new Tracer(on, tracer.beamSize, tracer.shadowSamples));
+        return with(new TracerSpec(on, tracer.beamSize(), tracer.shadowSamples()));
     }
 
     /**
@@ -336,7 +211,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the beam size stated
      */
     public RenderSettings withBeamSize(int rays) {
-        return with(new Tracer(tracer.bvh, rays, tracer.shadowSamples));
+        return with(new TracerSpec(tracer.bvh(), rays, tracer.shadowSamples()));
     }
 
     /**
@@ -344,7 +219,7 @@ public final class RenderSettings implements java.io.Serializable {
      * @return this specification with the shadow samples stated
      */
     public RenderSettings withShadowSamples(int samples) {
-        return with(new Tracer(tracer.bvh, tracer.beamSize, samples));
+        return with(new TracerSpec(tracer.bvh(), tracer.beamSize(), samples));
     }
 
     /**
@@ -356,15 +231,15 @@ public final class RenderSettings implements java.io.Serializable {
      */
     public RenderSettings then(RenderSettings later) {
         return new RenderSettings(image.then(later.image), grid.then(later.grid), antiAliasing.then(later.antiAliasing),
-                lens.then(later.lens), tracer.then(later.tracer), or(later.threads, threads), or(later.seed, seed));
+                lens.then(later.lens), tracer.then(later.tracer), Stated.or(later.threads, threads), Stated.or(later.seed, seed));
     }
 
     /** This specification with one part replaced. */
-    private RenderSettings with(Image image) {
+    private RenderSettings with(ImageSpec image) {
         return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
     }
 
-    private RenderSettings with(Grid grid) {
+    private RenderSettings with(GridSpec grid) {
         return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
     }
 
@@ -372,41 +247,37 @@ public final class RenderSettings implements java.io.Serializable {
         return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
     }
 
-    private RenderSettings with(Lens lens) {
+    private RenderSettings with(LensSpec lens) {
         return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
     }
 
-    private RenderSettings with(Tracer tracer) {
+    private RenderSettings with(TracerSpec tracer) {
         return new RenderSettings(image, grid, antiAliasing, lens, tracer, threads, seed);
-    }
-
-    private static <T> T or(T stated, T otherwise) {
-        return stated != null ? stated : otherwise;
     }
 
     /** @return the image's name (images/&lt;name&gt;.png); null when not stated */
     public String imageName() {
-        return image.name;
+        return image.name();
     }
 
     /** @return the image width in pixels: as stated, else {@value #DEFAULT_SIZE} */
     public int width() {
-        return image.width != null ? image.width : DEFAULT_SIZE;
+        return image.width() != null ? image.width() : DEFAULT_SIZE;
     }
 
     /** @return the image height in pixels: as stated, else {@value #DEFAULT_SIZE} */
     public int height() {
-        return image.height != null ? image.height : DEFAULT_SIZE;
+        return image.height() != null ? image.height() : DEFAULT_SIZE;
     }
 
     /** @return a grid line every this many pixels; 0 (not stated): no grid */
     int gridInterval() {
-        return grid.interval != null ? grid.interval : 0;
+        return grid.interval() != null ? grid.interval() : 0;
     }
 
     /** @return the grid lines' colour: as stated, else {@link #DEFAULT_GRID_COLOR} */
     public Color gridColor() {
-        return grid.color != null ? grid.color : DEFAULT_GRID_COLOR;
+        return grid.color() != null ? grid.color() : DEFAULT_GRID_COLOR;
     }
 
     /**
@@ -431,16 +302,6 @@ public final class RenderSettings implements java.io.Serializable {
         return ImageWriters.requireFileName(name);
     }
 
-    /** Each side at least 1 and at most {@link #MAX_PIXELS} pixels in all, naming the size. */
-    private static void requireSize(int width, int height) {
-        if (width < 1 || height < 1)
-            throw new IllegalArgumentException("image size must be at least 1x1, got " + width + "x" + height);
-        long pixels = (long) width * height;
-        if (pixels > MAX_PIXELS)
-            throw new IllegalArgumentException("image size " + width + "x" + height + " is " + pixels
-                    + " pixels, more than an image can hold (" + MAX_PIXELS + ")");
-    }
-
     /**
      * Replays this specification onto {@code camera} with a new image writer of its name and size
      * (this allocates the image: 4 bytes a pixel); see
@@ -460,7 +321,7 @@ public final class RenderSettings implements java.io.Serializable {
      *         name, an unnamed one (the 2024&ndash;25 form, named when written)
      */
     public ImageWriter newImageWriter() {
-        return image.name != null ? new ImageWriter(image.name, width(), height()) : new ImageWriter(width(), height());
+        return image.name() != null ? new ImageWriter(image.name(), width(), height()) : new ImageWriter(width(), height());
     }
 
     /**
@@ -503,11 +364,11 @@ public final class RenderSettings implements java.io.Serializable {
     public RenderSettings requireRayBudget(Scene scene) {
         // Threads are not the budget's: the file's reader and the command line check them as they are stated.
         Sampling sampling = antiAliasing.over(Sampling.DEFAULT);
-        if (lens.samples != null) sampling = sampling.withLensSamples(lens.samples);
+        if (lens.samples() != null) sampling = sampling.withLensSamples(lens.samples());
         if (seed != null) sampling = sampling.withSeed(seed);
         RayBudget.require(sampling.antiAliasing(), sampling.maxSamplesPerPixel(!lens.lens().isPinhole()),
-                tracer.beamSize != null ? tracer.beamSize : RayTracerBasic.DEFAULT_BEAM_SIZE,
-                tracer.shadowSamples != null ? tracer.shadowSamples : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, scene.lights);
+                tracer.beamSize() != null ? tracer.beamSize() : RayTracerBasic.DEFAULT_BEAM_SIZE,
+                tracer.shadowSamples() != null ? tracer.shadowSamples() : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, scene.lights);
         return this;
     }
 
@@ -520,42 +381,17 @@ public final class RenderSettings implements java.io.Serializable {
         if (gridInterval() > 0) camera.printGrid(gridInterval(), gridColor());
     }
 
-    /** The parts are checked as they are made; a copy that arrives serialized must have all of them. */
-    private void readObject(ObjectInputStream in) throws IOException, ClassNotFoundException {
-        in.defaultReadObject();
-        if (image == null || grid == null || antiAliasing == null || lens == null || tracer == null)
-            throw new InvalidObjectException("render settings: a part is missing");
-    }
-
-    /** Equal when both state the same values (a value stated as its default is still stated). */
-    @Override
-    public boolean equals(Object o) {
-        return o instanceof RenderSettings other && image.equals(other.image) && grid.equals(other.grid)
-                && antiAliasing.equals(other.antiAliasing) && lens.equals(other.lens) && tracer.equals(other.tracer)
-                && Objects.equals(threads, other.threads) && Objects.equals(seed, other.seed);
-    }
-
-    @Override
-    public int hashCode() {
-        return Objects.hash(image, grid, antiAliasing, lens, tracer, threads, seed);
-    }
-
     /** @return the stated values, by name: {@code RenderSettings[image=x 40x20, antiAliasing=RANDOM]} */
     @Override
     public String toString() {
         StringJoiner stated = new StringJoiner(", ", "RenderSettings[", "]");
-        if (image.name != null || image.width != null)
-            stated.add("image=" + (image.name != null ? image.name : "")
-                    + (image.width != null ? " " + image.width + "x" + image.height : ""));
-        String[] names = { "gridInterval", "gridColor", "antiAliasing", "grid", "adaptiveDepth", "adaptiveThreshold",
-                "depthOfField", "lensSamples", "seed", "threads", "bvh", "beamSize", "shadowSamples" };
-        AntiAliasingSpec a = antiAliasing;
-        Object[] values = { grid.interval, grid.color, a.mode, a.columns == null ? null : a.columns + "x" + a.rows,
-                a.depth, a.threshold, lens.focalDistance == null ? null
-                        : "focal " + lens.focalDistance + " aperture " + lens.aperture,
-                lens.samples, seed, threads, tracer.bvh, tracer.beamSize, tracer.shadowSamples };
-        for (int i = 0; i < names.length; ++i)
-            if (values[i] != null) stated.add(names[i] + "=" + values[i]);
+        image.describe(stated);
+        grid.describe(stated);
+        antiAliasing.describe(stated);
+        lens.describe(stated);
+        Stated.add(stated, "seed", seed);
+        Stated.add(stated, "threads", threads);
+        tracer.describe(stated);
         return stated.toString();
     }
 }

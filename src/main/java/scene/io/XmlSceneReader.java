@@ -49,6 +49,7 @@ import lighting.LightQueries;
 import lighting.LightSource;
 import lighting.PointLight;
 import lighting.SpotLight;
+import primitives.Checks;
 import primitives.Color;
 import primitives.Double3;
 import primitives.Material;
@@ -96,7 +97,7 @@ public final class XmlSceneReader {
     private static final ValueType<Integer> LENS_SAMPLES = POSITIVE_INTEGER.narrowedBy("an integer from 1 to "
             + Camera.MAX_SAMPLES_PER_PIXEL, Sampling::requireLensSamples);
     private static final ValueType<Integer> SHININESS = INTEGER.narrowedBy("an integer ≥ 0",
-            n -> new Material().setShininess(n));
+            n -> Checks.requireNonNegative(n, "shininess"));
     private static final ValueType<String> IMAGE_NAME = TEXT.narrowedBy("a file name without /, \\, :, .., control"
             + " characters or invisible format characters (U+202E...), at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH + " characters (the image goes"
             + " to images/<name>.png; only the command line's -o chooses another place)", RenderSettings::requireImageName);

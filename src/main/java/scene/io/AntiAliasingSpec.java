@@ -1,0 +1,55 @@
+package scene.io;
+
+import java.util.StringJoiner;
+
+import renderer.AntiAliasing;
+import renderer.Camera;
+import renderer.Sampling;
+
+/**
+ * The sampling as {@code Camera.Builder}'s setters take it.
+ *
+ * @param mode      the mode
+ * @param columns   RANDOM's grid columns (stated with the rows)
+ * @param rows      RANDOM's grid rows
+ * @param depth     ADAPTIVE's depth
+ * @param threshold ADAPTIVE's threshold
+ * @hidden a part of the specification
+ */
+public record AntiAliasingSpec(AntiAliasing mode, Integer columns, Integer rows, Integer depth, Double threshold)
+        implements java.io.Serializable {
+    static final AntiAliasingSpec NONE = new AntiAliasingSpec(null, null, null, null, null);
+
+    AntiAliasingSpec then(AntiAliasingSpec later) {
+        return new AntiAliasingSpec(Stated.or(later.mode, mode), later.columns != null ? later.columns : columns,
+                later.columns != null ? later.rows : rows, Stated.or(later.depth, depth), Stated.or(later.threshold, threshold));
+    }
+
+    /** Replays the stated values onto {@code camera}, each through its own setter. */
+    void applyTo(Camera.Builder camera) {
+        if (mode != null) camera.setAntiAliasing(mode);
+        if (columns != null) camera.setAntiAliasingGrid(columns, rows);
+        if (depth != null || threshold != null) {
+            // The builder takes the two together: a specification stating one gets the library's other.
+            Sampling.Adaptive library = Sampling.DEFAULT.adaptive();
+            camera.setAdaptive(depth != null ? depth : library.depth(), threshold != null ? threshold : library.threshold());
+        }
+    }
+
+    /** The stated values over {@code s}, each part checked by the library's rule. */
+    Sampling over(Sampling s) {
+        if (mode != null) s = s.withAntiAliasing(mode);
+        if (columns != null) s = s.withGrid(columns, rows);
+        if (depth != null || threshold != null)
+            s = s.withAdaptive(depth != null ? depth : s.adaptive().depth(),
+                    threshold != null ? threshold : s.adaptive().threshold());
+        return s;
+    }
+
+    void describe(StringJoiner out) {
+        Stated.add(out, "antiAliasing", mode);
+        Stated.add(out, "grid", columns == null ? null : columns + "x" + rows);
+        Stated.add(out, "adaptiveDepth", depth);
+        Stated.add(out, "adaptiveThreshold", threshold);
+    }
+}

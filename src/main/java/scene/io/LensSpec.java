@@ -1,0 +1,45 @@
+package scene.io;
+
+import java.util.StringJoiner;
+
+import renderer.Camera;
+import renderer.View;
+
+/**
+ * The thin lens and its samples per pixel.
+ *
+ * @param focalDistance the sharp plane's distance, stated with the aperture; 0: the pinhole
+ *                      camera, whatever the aperture
+ * @param aperture      the lens radius
+ * @param samples       lens samples per pixel
+ * @hidden a part of the specification
+ */
+public record LensSpec(Double focalDistance, Double aperture, Integer samples) implements java.io.Serializable {
+    static final LensSpec NONE = new LensSpec(null, null, null);
+
+    LensSpec then(LensSpec later) {
+        return new LensSpec(later.focalDistance != null ? later.focalDistance : focalDistance,
+                later.focalDistance != null ? later.aperture : aperture, Stated.or(later.samples, samples));
+    }
+
+    /** Replays the stated values onto {@code camera}, each through its own setter. */
+    void applyTo(Camera.Builder camera) {
+        // A stated pinhole undoes a lens set on the builder before: the builder's pinhole is
+        // aperture 0, whatever the focal distance (the course's builder has no setter of its own).
+        if (focalDistance != null) {
+            if (focalDistance == 0) camera.setDepthOfField(1, 0);
+            else camera.setDepthOfField(focalDistance, aperture);
+        }
+        if (samples != null) camera.setDepthOfFieldSamples(samples);
+    }
+
+    /** @return the stated lens by the library's rule: the pinhole when none is stated or its focal distance is 0 */
+    View.Lens lens() {
+        return focalDistance == null || focalDistance == 0 ? View.Lens.PINHOLE : View.Lens.thin(focalDistance, aperture);
+    }
+
+    void describe(StringJoiner out) {
+        Stated.add(out, "depthOfField", focalDistance == null ? null : "focal " + focalDistance + " aperture " + aperture);
+        Stated.add(out, "lensSamples", samples);
+    }
+}
