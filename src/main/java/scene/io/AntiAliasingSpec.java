@@ -9,12 +9,14 @@ import renderer.Sampling;
 /**
  * The sampling as {@code Camera.Builder}'s setters take it.
  *
+ * <p>A part of {@link RenderSettings}: a component is null where it states nothing.
+ *
  * @param mode      the mode
  * @param columns   RANDOM's grid columns (stated with the rows)
  * @param rows      RANDOM's grid rows
  * @param depth     ADAPTIVE's depth
  * @param threshold ADAPTIVE's threshold
- * @hidden a part of the specification
+ * @serial exclude
  */
 public record AntiAliasingSpec(AntiAliasing mode, Integer columns, Integer rows, Integer depth, Double threshold)
         implements java.io.Serializable {

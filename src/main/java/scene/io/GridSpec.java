@@ -7,9 +7,11 @@ import primitives.Color;
 /**
  * The grid drawn over the image.
  *
+ * <p>A part of {@link RenderSettings}: a component is null where it states nothing.
+ *
  * @param interval a line every this many pixels (0: none)
  * @param color    the lines' colour
- * @hidden a part of the specification
+ * @serial exclude
  */
 public record GridSpec(Integer interval, Color color) implements java.io.Serializable {
     static final GridSpec NONE = new GridSpec(null, null);

@@ -9,15 +9,22 @@ import renderer.ImageWriters;
  * The image: its name (images/&lt;name&gt;.png) and its size in pixels (stated together),
  * each checked when stated.
  *
+ * <p>A part of {@link RenderSettings}: a component is null where it states nothing.
+ *
  * @param name   the image's name
  * @param width  its width in pixels
  * @param height its height in pixels
- * @hidden a part of the specification
+ * @serial exclude
  */
 public record ImageSpec(String name, Integer width, Integer height) implements java.io.Serializable {
     static final ImageSpec NONE = new ImageSpec(null, null, null);
 
-    /** @throws IllegalArgumentException for a name or a size the image writer refuses, naming it */
+    /**
+     * @param name   the image's name
+     * @param width  its width in pixels
+     * @param height its height in pixels
+     * @throws IllegalArgumentException for a name or a size the image writer refuses, naming it
+     */
     public ImageSpec {
         if (name != null) ImageWriters.requireFileName(name);
         if ((width == null) != (height == null)) throw new IllegalArgumentException("width and height are stated together");

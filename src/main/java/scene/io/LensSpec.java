@@ -8,11 +8,13 @@ import renderer.View;
 /**
  * The thin lens and its samples per pixel.
  *
+ * <p>A part of {@link RenderSettings}: a component is null where it states nothing.
+ *
  * @param focalDistance the sharp plane's distance, stated with the aperture; 0: the pinhole
  *                      camera, whatever the aperture
  * @param aperture      the lens radius
  * @param samples       lens samples per pixel
- * @hidden a part of the specification
+ * @serial exclude
  */
 public record LensSpec(Double focalDistance, Double aperture, Integer samples) implements java.io.Serializable {
     static final LensSpec NONE = new LensSpec(null, null, null);

@@ -64,7 +64,16 @@ public record RenderSettings(ImageSpec image, GridSpec grid, AntiAliasingSpec an
     private static final RenderSettings EMPTY = new RenderSettings(ImageSpec.NONE, GridSpec.NONE, AntiAliasingSpec.NONE,
             LensSpec.NONE, TracerSpec.NONE, null, null);
 
-    /** @throws NullPointerException naming a missing part (a copy that arrives serialized without one, say) */
+    /**
+     * @param image        the image's name and size
+     * @param grid         the grid drawn over the image
+     * @param antiAliasing the sampling as the builder's setters take it
+     * @param lens         the thin lens and its samples
+     * @param tracer       the tracer's extensions
+     * @param threads      the thread count; null: all cores
+     * @param seed         the render's seed; null: the library's
+     * @throws NullPointerException naming a missing part (a copy that arrives serialized without one, say)
+     */
     public RenderSettings {
         Objects.requireNonNull(image, "image part");
         Objects.requireNonNull(grid, "grid part");

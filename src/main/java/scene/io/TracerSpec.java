@@ -8,10 +8,12 @@ import scene.Scene;
 /**
  * The tracer's extensions, as {@link RayTracerBasic}'s setters take them.
  *
+ * <p>A part of {@link RenderSettings}: a component is null where it states nothing.
+ *
  * @param bvh           whether the tracer uses the bounding volume hierarchy
  * @param beamSize      rays per glossy or diffuse-glass beam
  * @param shadowSamples shadow rays toward a light with a radius
- * @hidden a part of the specification
+ * @serial exclude
  */
 public record TracerSpec(Boolean bvh, Integer beamSize, Integer shadowSamples) implements java.io.Serializable {
     static final TracerSpec NONE = new TracerSpec(null, null, null);
