@@ -236,7 +236,12 @@ public final class Camera {
 
     /** @return the sampling settings in words, for summaries and benchmark tables */
     String describe() {
-        return sampling.describe(view.lens()) + ", " + rayTracer.describe() + ", seed " + sampling.seed();
+        return describe(sampling, view.lens(), rayTracer);
+    }
+
+    /** The words of {@link #describe()}, for a camera or a builder's settings. */
+    private static String describe(Sampling sampling, View.Lens lens, RayTracerBase tracer) {
+        return sampling.describe(lens) + ", " + tracer.describe() + ", seed " + sampling.seed();
     }
 
     /**
@@ -778,9 +783,8 @@ public final class Camera {
         public Camera build() {
             View view = view();
             RayTracerBase tracer = tracer();
-            SamplerPlan plan = sampling.plan(!view.lens().isPinhole());
             // Before the image is allocated: a refused budget costs no memory.
-            tracer.requireRayBudget(plan);
+            SamplerPlan plan = withinBudget(view, tracer);
             ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
             return new Camera(view, sampling, execution(plan), tracer, writer, imageWriter == null, summary, renderListener);
         }
@@ -792,10 +796,29 @@ public final class Camera {
         RegionRenderer regionRenderer() {
             View view = view();
             RayTracerBase tracer = tracer();
-            SamplerPlan plan = sampling.plan(!view.lens().isPinhole());
-            tracer.requireRayBudget(plan);
+            SamplerPlan plan = withinBudget(view, tracer);
             String name = imageWriter != null && imageWriter.hasName() ? imageWriter.getImageName() : "region";
             return new RegionRenderer(view, sampling, execution(plan), tracer, name);
+        }
+
+        /**
+         * Checks the settings as {@link #build()} does, without allocating the image or preparing
+         * the scene (see {@link CameraReports#describe(Builder)}).
+         *
+         * @return the settings in words, as the built camera's summary line will show them
+         */
+        String describeChecked() {
+            View view = view();
+            RayTracerBase tracer = tracer();
+            withinBudget(view, tracer);
+            return describe(sampling, view.lens(), tracer);
+        }
+
+        /** The sampling's plan for {@code view}, its ray budget held with {@code tracer}. */
+        private SamplerPlan withinBudget(View view, RayTracerBase tracer) {
+            SamplerPlan plan = sampling.plan(!view.lens().isPinhole());
+            tracer.requireRayBudget(plan);
+            return plan;
         }
 
         /** The execution of a camera with this builder's settings, the tile size its sampler's. */

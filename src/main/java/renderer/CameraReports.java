@@ -40,4 +40,18 @@ public final class CameraReports {
     public static String describe(Camera camera) {
         return camera.describe();
     }
+
+    /**
+     * A builder's settings in words, checked as its {@code build()} checks them (the view, the ray
+     * budget) without allocating the image or preparing the scene: what a cluster's driver says
+     * of a render whose image it assembles from tiles.
+     *
+     * @param camera the builder whose settings are described
+     * @return the words a camera built from it would describe itself with
+     * @throws java.util.MissingResourceException as {@link Camera.Builder#build()}
+     * @throws IllegalArgumentException           as {@link Camera.Builder#build()}
+     */
+    public static String describe(Camera.Builder camera) {
+        return camera.describeChecked();
+    }
 }

@@ -334,12 +334,8 @@ public record RenderSettings(ImageSpec image, GridSpec grid, AntiAliasingSpec an
     }
 
     /**
-     * Replays this specification onto {@code camera}: the image writer, a new
-     * {@link RayTracerBasic} for {@code scene} with the stated extensions, and each stated value
-     * of the sampling, seed and threads through the builder's own setter (the thread count is all
-     * cores when not stated). What is not stated stays as the builder and the tracer have it; the
-     * view (location, direction, view plane) is the caller's. {@code build()} then checks the
-     * ray budget.
+     * Replays this specification onto {@code camera}: the image writer, then the rest as
+     * {@link #replay(Camera.Builder, Scene)} does.
      *
      * @param camera the builder to configure; its view is the caller's
      * @param scene  what the new tracer renders
@@ -349,7 +345,25 @@ public record RenderSettings(ImageSpec image, GridSpec grid, AntiAliasingSpec an
      * @throws IllegalArgumentException for a stated value the camera or the tracer refuses
      */
     public Camera.Builder applyTo(Camera.Builder camera, Scene scene, ImageWriter image) {
-        camera.setImageWriter(image).setRayTracer(tracer.newTracer(scene));
+        return replay(camera, scene).setImageWriter(image);
+    }
+
+    /**
+     * The one replay of this specification onto {@code camera}: the image's size as its
+     * resolution (nothing allocated: a camera built from it makes its own unnamed image; a
+     * cluster's executor renders regions of it), a new {@link RayTracerBasic} for {@code scene}
+     * with the stated extensions, and each stated value of the sampling, seed and threads through
+     * the builder's own setter (the thread count is all cores when not stated). What is not stated
+     * stays as the builder and the tracer have it; the view (location, direction, view plane) is
+     * the caller's. {@code build()} then checks the ray budget.
+     *
+     * @param camera the builder to configure; its view is the caller's
+     * @param scene  what the new tracer renders
+     * @return {@code camera}, for chaining
+     * @throws IllegalArgumentException for a stated value the camera or the tracer refuses
+     */
+    public Camera.Builder replay(Camera.Builder camera, Scene scene) {
+        camera.setResolution(width(), height()).setRayTracer(tracer.newTracer(scene));
         antiAliasing.applyTo(camera);
         lens.applyTo(camera);
         if (seed != null) camera.setSeed(seed);

@@ -3,7 +3,6 @@ package app.spark;
 import java.io.IOException;
 import java.io.Serializable;
 
-import renderer.ImageWriter;
 import renderer.RegionRenderer;
 import scene.io.LoadedScene;
 import scene.io.RenderSettings;
@@ -31,10 +30,8 @@ record Frame(SceneFiles files, RenderSettings settings) implements Serializable 
     RegionRenderer executorRenderer() {
         try {
             LoadedScene loaded = files.load();
-            // applyTo wants an image writer; a 1x1 one stands in, and the resolution set after it
-            // replaces it, so that the builder makes only the region renderer, no image.
-            return RegionRenderer.of(settings.withThreads(0).applyTo(loaded.requireView(), loaded.scene(), new ImageWriter(1, 1))
-                    .setResolution(settings.width(), settings.height()).setDebugPrint(0).setSummary(false));
+            return RegionRenderer.of(settings.withThreads(0).replay(loaded.requireView(), loaded.scene()).setDebugPrint(0)
+                    .setSummary(false));
         } catch (IOException | SceneFormatException e) {
             throw new IllegalStateException("the scene " + files.scene() + " the driver validated fails on the executor: "
                     + e.getMessage(), e);

@@ -28,10 +28,9 @@ public final class SparkFrame {
         this.scene = scene;
         this.settings = settings;
         this.output = output;
-        // The settings replayed onto a camera are checked by it as a local render's are (the ray
-        // budget of the command line's changes, say). Those checks do not depend on the image
-        // size, so a 1×1 image stands in for the real one, allocated only to assemble the tiles.
-        this.description = CameraReports.describe(camera(settings.withImage(settings.imageName(), 1, 1).newImageWriter()));
+        // The settings replayed onto a builder are checked as a local render's are (the ray budget
+        // of the command line's changes, say), with no image: it is allocated only to assemble the tiles.
+        this.description = CameraReports.describe(builder());
     }
 
     /**
@@ -129,10 +128,14 @@ public final class SparkFrame {
      * uses it to describe the settings and to draw the grid the settings may ask for).
      */
     Camera camera(ImageWriter image) {
+        return builder().setImageWriter(image).build();
+    }
+
+    /** A builder of this frame's view with its settings replayed, quiet. */
+    private Camera.Builder builder() {
         try {
             LoadedScene loaded = scene.loaded();
-            return settings.applyTo(loaded.requireView(), loaded.scene(), image).setSummary(false).setDebugPrint(0)
-                    .build();
+            return settings.replay(loaded.requireView(), loaded.scene()).setSummary(false).setDebugPrint(0);
         } catch (SceneFormatException e) {
             // read() checked that the file has a camera.
             throw new IllegalStateException(e.getMessage(), e);
