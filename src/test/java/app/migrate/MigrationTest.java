@@ -478,7 +478,7 @@ class MigrationTest {
         @Test
         @DisplayName("fold: 2025-26 package and import lines become the library's")
         void fold() {
-            assertThat(Migration.fold("package geometries.impl;\nimport geometries.api.Intersectable;\nimport lighting.impl.*;\n"
+            assertThat(SourceRewrite.fold("package geometries.impl;\nimport geometries.api.Intersectable;\nimport lighting.impl.*;\n"
                     + "import static geometries.api.Intersectable.Intersection;\n"))
                     .isEqualTo("package geometries;\nimport geometries.Intersectable;\nimport lighting.*;\n"
                             + "import static geometries.Intersectable.Intersection;\n");
