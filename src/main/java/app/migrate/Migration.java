@@ -100,6 +100,40 @@ public final class Migration {
 
     /** The migration, with the project's lock held unless it is a dry run. */
     private boolean migrateHeld(Path dir, boolean allowDirty, boolean dryRun, String encoding) throws MigrationException {
+        Planned planned = planned(dir, allowDirty, dryRun, encoding);
+        if (planned == null) return false;
+        Path d = planned.project().layout().dir();
+        if (dryRun) {
+            out.println("raytracer migrate --dry-run: nothing changed; a migration would do this:");
+            planned.report().forEach(out::println);
+            out.println();
+            out.println("The exact change, as a unified diff (paths relative to " + d + "; git apply takes it):");
+            out.print(UnifiedDiff.of(planned.changes()));
+            out.flush();
+            return false;
+        }
+        Apply.apply(d, planned.changes(), Apply.emptiedRoots(planned.plan()), faults, progress);
+        planned.report().forEach(out::println);
+        return true;
+    }
+
+    /**
+     * A migration worked out whole, nothing written yet.
+     *
+     * @param project what was read of the project
+     * @param plan    what it decided
+     * @param report  the summary
+     * @param changes every file it changes, with the text it leaves, in order
+     */
+    record Planned(Project project, Plan plan, List<String> report, List<Change> changes) {
+    }
+
+    /**
+     * Reads the project, checks it and works out every change, writing nothing into it.
+     *
+     * @return null when it is already migrated (said on {@code out})
+     */
+    Planned planned(Path dir, boolean allowDirty, boolean dryRun, String encoding) throws MigrationException {
         Layout named = Layout.read(dir, tools.mavenRepository());
         Path d = named.dir();
         Preflight.requireInside(d, named);
@@ -134,7 +168,7 @@ public final class Migration {
         if (Preflight.alreadyMigrated(d, course)) {
             out.println("raytracer migrate: " + d + " is already migrated (" + Manifest.FILE
                     + "); nothing changed. Undo: raytracer migrate --undo " + d);
-            return false;
+            return null;
         }
         if (course.isEmpty())
             throw new MigrationException(d + " has no course class the library provides (such as primitives.Point or"
@@ -165,19 +199,7 @@ public final class Migration {
             throw new MigrationException("cannot compile in a scratch folder: " + e.getMessage(), e);
         }
         List<String> report = Report.lines(d, project, plan, tools);
-        List<Change> changes = Changes.of(project, plan, report);
-        if (dryRun) {
-            out.println("raytracer migrate --dry-run: nothing changed; a migration would do this:");
-            report.forEach(out::println);
-            out.println();
-            out.println("The exact change, as a unified diff (paths relative to " + d + "; git apply takes it):");
-            out.print(UnifiedDiff.of(changes));
-            out.flush();
-            return false;
-        }
-        Apply.apply(d, changes, Apply.emptiedRoots(plan), faults, progress);
-        report.forEach(out::println);
-        return true;
+        return new Planned(project, plan, report, Changes.of(project, plan, report));
     }
 
     /**
