@@ -56,8 +56,8 @@ final class MigrateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Migration migration = Migration.ofThisProcess(out, err);
         try {
+            Migration migration = Migration.ofThisProcess(out, err);
             Path folder = Path.of(dir);
             if (undo) migration.undo(folder);
             else migration.migrate(folder, allowDirty, dryRun, encoding);

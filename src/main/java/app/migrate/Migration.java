@@ -3,6 +3,7 @@ package app.migrate;
 import java.io.IOException;
 import java.io.PrintStream;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -60,8 +61,9 @@ public final class Migration {
      * @param out      where the summary goes
      * @param progress where each step is announced as it starts
      * @return a migration with the library this command runs with, JUnit from the local Maven repository
+     * @throws MigrationException when the library this command runs with cannot be located or read
      */
-    public static Migration ofThisProcess(PrintStream out, PrintStream progress) {
+    public static Migration ofThisProcess(PrintStream out, PrintStream progress) throws MigrationException {
         return new Migration(Toolchain.ofThisProcess(), Migration.class.getClassLoader(), out, progress);
     }
 
@@ -90,12 +92,28 @@ public final class Migration {
      * @throws MigrationException refused or taken back, with the one line to print; nothing changed
      */
     public boolean migrate(Path dir, boolean allowDirty, boolean dryRun, String encoding) throws MigrationException {
-        if (dryRun) return migrateHeld(dir, allowDirty, true, encoding);
-        Path d = dir.toAbsolutePath().normalize();
-        if (!Files.isDirectory(d)) throw new MigrationException(d + " is not a folder");
-        try (RunLock held = RunLock.take(d)) {
-            return migrateHeld(dir, allowDirty, false, encoding);
+        try {
+            if (dryRun) return migrateHeld(dir, allowDirty, true, encoding);
+            Path d = dir.toAbsolutePath().normalize();
+            if (!Files.isDirectory(d)) throw new MigrationException(d + " is not a folder");
+            try (RunLock held = RunLock.take(d)) {
+                return migrateHeld(dir, allowDirty, false, encoding);
+            }
+        } catch (InvalidPathException e) {
+            throw e; // a name this locale cannot hold: the command says so in its own words
+        } catch (RuntimeException e) {
+            throw unexpected(e);
         }
+    }
+
+    /**
+     * An unchecked exception that reached here (javac's, the JDK's, one of ours): {@link Apply}
+     * and {@link Undo} take back or say how to finish whatever they changed and throw a
+     * {@link MigrationException} for it, so one that gets here came before any change.
+     */
+    private static MigrationException unexpected(RuntimeException e) {
+        return new MigrationException("failed before changing anything: " + Javac.oneLine(String.valueOf(e))
+                + " (nothing was changed; please report it with the command you ran)", e);
     }
 
     /** The migration, with the project's lock held unless it is a dry run. */
@@ -213,6 +231,10 @@ public final class Migration {
         if (!Files.isDirectory(d)) throw new MigrationException(d + " is not a folder");
         try (RunLock held = RunLock.take(d)) {
             Undo.undo(d, faults, out, progress);
+        } catch (InvalidPathException e) {
+            throw e;
+        } catch (RuntimeException e) {
+            throw unexpected(e);
         }
     }
 }

@@ -1,14 +1,38 @@
 package app.migrate;
 
+import java.io.IOException;
+import java.io.StringWriter;
+import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
 import java.util.Map;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
+
+import javax.tools.JavaCompiler;
+import javax.tools.JavaFileObject;
+import javax.tools.SimpleJavaFileObject;
+import javax.tools.ToolProvider;
+
+import com.sun.source.tree.CompilationUnitTree;
+import com.sun.source.tree.ExpressionTree;
+import com.sun.source.tree.IdentifierTree;
+import com.sun.source.tree.ImportTree;
+import com.sun.source.tree.MemberSelectTree;
+import com.sun.source.util.JavacTask;
+import com.sun.source.util.SourcePositions;
+import com.sun.source.util.TreeScanner;
+import com.sun.source.util.Trees;
 
 /**
  * A kept source pointed at the library: 2025–26's {@code geometries.api/impl} and
  * {@code lighting.api/impl} folded, and relocated course classes named as the library's.
+ *
+ * <p>The file is read by javac's own parser, and only names change: a package or import line, a
+ * qualified name in the code. A string literal or a comment that spells the old name stays as the
+ * student wrote it (it may be a message, or a note about the old layout); a regular expression over
+ * the text could not tell them apart.
  */
 final class SourceRewrite {
     private SourceRewrite() {
@@ -16,7 +40,7 @@ final class SourceRewrite {
 
     /** The file rewritten, and its new place (its package's folder, where its package changed). */
     static Kept kept(SourceFile f, Map<String, String> relocated) throws MigrationException {
-        String text = relocate(fold(f.text()), f.packageName(), relocated);
+        String text = rewrite(f.text(), f.relative(f.root()), relocated);
         Path target = f.path();
         String pkg = Catalog.libraryPackage(f.packageName());
         if (!pkg.equals(f.packageName()) && f.path().getParent().equals(f.root().resolve(f.packageName().replace('.', '/')))) {
@@ -26,31 +50,140 @@ final class SourceRewrite {
         return new Kept(f, text, target);
     }
 
-    static String fold(String text) {
-        return text.replaceAll("(?m)^(\\s*(?:package|import)\\s+(?:static\\s+)?)(geometries|lighting)\\.(?:api|impl)\\s*;", "$1$2;")
-                .replaceAll("\\b(geometries|lighting)\\.(?:api|impl)\\.", "$1.");
+    /** The 2025–26 packages folded in {@code text}: {@code geometries.api.Intersectable} → {@code geometries.Intersectable}. */
+    static String fold(String text) throws MigrationException {
+        return rewrite(text, "Source.java", Map.of());
     }
 
     /**
-     * {@code import lighting.Material;} becomes {@code import primitives.Material;} (and so does a
-     * qualified use); a file that reached the class unqualified (in its package, or through
-     * {@code import lighting.*;}) gets the library's import after its package line.
+     * Folds the 2025–26 packages, and names each relocated course class ({@code lighting.Material},
+     * by its library name {@code primitives.Material}) as the library's: {@code import
+     * lighting.Material;} becomes {@code import primitives.Material;}, and so does a qualified use;
+     * a file that reached the class unqualified (in its package, or through {@code import
+     * lighting.*;}) gets the library's import after its package line.
+     *
+     * @param name      the file's name, for a message should javac fail
+     * @param relocated course classes kept in another course package → the library's name for them
      */
-    static String relocate(String text, String pkg, Map<String, String> relocated) {
-        String t = text;
-        for (Map.Entry<String, String> e : relocated.entrySet()) {
-            String from = Catalog.libraryName(e.getKey()), to = e.getValue();
-            String fromPkg = from.substring(0, from.lastIndexOf('.')), simple = from.substring(from.lastIndexOf('.') + 1);
-            t = fold(t).replaceAll("\\b" + Pattern.quote(from) + "\\b", to);
-            boolean unqualified = Catalog.libraryPackage(pkg).equals(fromPkg)
-                    || Pattern.compile("(?m)^\\s*import\\s+" + Pattern.quote(fromPkg) + "\\.\\*\\s*;").matcher(t).find();
-            if (!unqualified || !Pattern.compile("\\b" + Pattern.quote(simple) + "\\b").matcher(t).find()
-                    || t.contains("import " + to + ";"))
-                continue;
-            Matcher p = Pattern.compile("(?m)^\\s*package\\s+[\\w.]+\\s*;[^\\n]*\\n").matcher(t);
-            String line = "import " + to + ";\n";
-            t = p.find() ? t.substring(0, p.end()) + line + t.substring(p.end()) : line + t;
+    static String rewrite(String text, String name, Map<String, String> relocated) throws MigrationException {
+        CompilationUnitTree unit;
+        SourcePositions positions;
+        try {
+            JavacTask task = parser(text);
+            unit = task.parse().iterator().next();
+            positions = Trees.instance(task).getSourcePositions();
+        } catch (IOException | IllegalStateException e) {
+            // The text is in memory: javac failing to read it is javac failing, said with the file.
+            throw new MigrationException("javac could not parse " + name + " to rewrite its package names: " + e.getMessage(), e);
         }
-        return t;
+        // A file with parse errors (the unnamed variable _ on an older JDK) is still rewritten where
+        // its names parsed; the compile that follows reports the errors and sets it aside with them.
+        List<Edit> edits = new ArrayList<>();
+        new Names(unit, positions, relocated, edits).scan(unit, null);
+        imports(unit, positions, text, relocated, edits);
+        edits.sort(Comparator.comparingLong(Edit::start).reversed());
+        StringBuilder out = new StringBuilder(text);
+        for (Edit e : edits) out.replace((int) e.start(), (int) e.end(), e.with());
+        return out.toString();
+    }
+
+    /** {@code text} from {@code start} to {@code end} becomes {@code with}. */
+    private record Edit(long start, long end, String with) {
+    }
+
+    private static JavacTask parser(String text) throws MigrationException {
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        if (javac == null)
+            throw new MigrationException("this Java (" + System.getProperty("java.home")
+                    + ") has no compiler: run migrate with a JDK (17 or newer), as your IDE does");
+        // The file's own name need not make a URI (a space, a Hebrew letter): parsing never looks at it.
+        JavaFileObject source = new SimpleJavaFileObject(URI.create("string:///Source.java"), JavaFileObject.Kind.SOURCE) {
+            @Override
+            public CharSequence getCharContent(boolean ignoreEncodingErrors) {
+                return text;
+            }
+        };
+        // Errors and their chatter are the compile's to report (see rewrite): here they go nowhere.
+        return (JavacTask) javac.getTask(new StringWriter(), null, diagnostic -> { }, List.of("-proc:none"), null, List.of(source));
+    }
+
+    /** The dotted name an expression spells ({@code geometries.api.Intersectable}), or null when it is no plain name. */
+    private static String dotted(ExpressionTree t) {
+        if (t instanceof IdentifierTree id) return id.getName().toString();
+        if (t instanceof MemberSelectTree s) {
+            String left = dotted(s.getExpression());
+            return left == null ? null : left + "." + s.getIdentifier();
+        }
+        return null;
+    }
+
+    /** Whether a name is one of the 2025–26 packages folded into the library's. */
+    private static boolean isFolded(String name) {
+        return name != null && name.matches("(geometries|lighting)\\.(api|impl)");
+    }
+
+    /** The qualified names: a 2025–26 package folded, a relocated class named as the library's. */
+    private static final class Names extends TreeScanner<Void, Void> {
+        private final CompilationUnitTree unit;
+        private final SourcePositions positions;
+        private final Map<String, String> relocated;
+        private final List<Edit> edits;
+
+        Names(CompilationUnitTree unit, SourcePositions positions, Map<String, String> relocated, List<Edit> edits) {
+            this.unit = unit;
+            this.positions = positions;
+            this.relocated = relocated;
+            this.edits = edits;
+        }
+
+        @Override
+        public Void visitMemberSelect(MemberSelectTree node, Void unused) {
+            String name = dotted(node);
+            if (name != null) {
+                String folded = Catalog.libraryName(name);
+                for (Map.Entry<String, String> r : relocated.entrySet())
+                    if (folded.equals(Catalog.libraryName(r.getKey()))) {
+                        edits.add(new Edit(positions.getStartPosition(unit, node), positions.getEndPosition(unit, node), r.getValue()));
+                        return null;
+                    }
+                if (isFolded(name)) {
+                    // Only ".api" goes: the package's first name stays as written.
+                    edits.add(new Edit(positions.getEndPosition(unit, node.getExpression()), positions.getEndPosition(unit, node), ""));
+                    return null;
+                }
+            }
+            return super.visitMemberSelect(node, unused);
+        }
+    }
+
+    /** The library's import for each relocated class the file names unqualified, after its package line. */
+    private static void imports(CompilationUnitTree unit, SourcePositions positions, String text, Map<String, String> relocated,
+            List<Edit> edits) {
+        String pkg = unit.getPackageName() == null ? "" : Catalog.libraryPackage(dotted(unit.getPackageName()));
+        List<String> imported = new ArrayList<>();
+        for (ImportTree i : unit.getImports())
+            if (!i.isStatic()) imported.add(Catalog.libraryName(dotted((ExpressionTree) i.getQualifiedIdentifier())));
+        List<String> simpleNames = new ArrayList<>();
+        new TreeScanner<Void, Void>() {
+            @Override
+            public Void visitIdentifier(IdentifierTree node, Void unused) {
+                simpleNames.add(node.getName().toString());
+                return null;
+            }
+        }.scan(unit.getTypeDecls(), null);
+        long at = 0;
+        if (unit.getPackage() != null) {
+            int nl = text.indexOf('\n', (int) positions.getEndPosition(unit, unit.getPackage()));
+            at = nl < 0 ? text.length() : nl + 1;
+        }
+        StringBuilder lines = new StringBuilder();
+        for (Map.Entry<String, String> r : relocated.entrySet()) {
+            String from = Catalog.libraryName(r.getKey()), to = r.getValue();
+            String fromPkg = from.substring(0, from.lastIndexOf('.')), simple = from.substring(from.lastIndexOf('.') + 1);
+            boolean unqualified = pkg.equals(fromPkg) || imported.contains(fromPkg + ".*");
+            if (unqualified && simpleNames.contains(simple) && !imported.contains(to) && !imported.contains(from))
+                lines.append("import ").append(to).append(";\n");
+        }
+        if (lines.length() > 0) edits.add(new Edit(at, at, lines.toString()));
     }
 }

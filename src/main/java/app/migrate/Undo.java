@@ -43,8 +43,8 @@ final class Undo {
             Files.deleteIfExists(d.resolve(Plan.REPORT));
             Manifest.deleteTemporariesInBackup(d);
             Folders.deleteEmpty(d.resolve(Layout.BACKUP));
-        } catch (IOException e) {
-            throw new MigrationException("undo of " + d + " stopped part-way: " + e.getMessage()
+        } catch (IOException | RuntimeException e) {
+            throw new MigrationException("undo of " + d + " stopped part-way: " + (e.getMessage() == null ? e.toString() : e.getMessage())
                     + " (" + Manifest.FILE + " lists what is left; run raytracer migrate --undo " + d + " again to finish)", e, true);
         }
         long moved = taken.stream().filter(e -> e.kind().equals(Manifest.Entry.MOVE)).count();

@@ -476,15 +476,6 @@ class MigrationTest {
     @DisplayName("pieces")
     class Pieces {
         @Test
-        @DisplayName("fold: 2025-26 package and import lines become the library's")
-        void fold() {
-            assertThat(SourceRewrite.fold("package geometries.impl;\nimport geometries.api.Intersectable;\nimport lighting.impl.*;\n"
-                    + "import static geometries.api.Intersectable.Intersection;\n"))
-                    .isEqualTo("package geometries;\nimport geometries.Intersectable;\nimport lighting.*;\n"
-                            + "import static geometries.Intersectable.Intersection;\n");
-        }
-
-        @Test
         @DisplayName("release needed: the unnamed variable, record patterns, sequenced collections")
         void releaseNeeded() {
             Path none = Path.of("none");
