@@ -119,17 +119,17 @@ final class CourseProjects {
     /** As {@link #migration(Path, OutputStream, OutputStream, Faults)}, the library's classes asked of {@code library}. */
     static Migration migration(Path dir, OutputStream printed, OutputStream steps, Faults faults, ClassLoader library) {
         Toolchain mine;
-        Path library;
+        Path classes;
         try {
             mine = Toolchain.ofThisProcess();
-            library = Toolchain.location(Camera.class);
+            classes = Toolchain.location(Camera.class);
         } catch (MigrationException e) {
             throw new IllegalStateException("the test's own library: " + e.getMessage(), e);
         }
         List<Path> junit = Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
                 .filter(p -> p.matches(".*(junit-jupiter-api|junit-jupiter-params|junit-platform-commons|opentest4j|apiguardian).*\\.jar"))
                 .map(Path::of).toList();
-        Toolchain tools = new Toolchain(library, junit, repository(dir), mine.coordinates(),
+        Toolchain tools = new Toolchain(classes, junit, repository(dir), mine.coordinates(),
                 mine.junitVersion(), mine.jdk(), null);
         PrintStream out = new PrintStream(printed, true, StandardCharsets.UTF_8);
         return new Migration(tools, library, out, new PrintStream(steps, true, StandardCharsets.UTF_8), faults);
