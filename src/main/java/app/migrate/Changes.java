@@ -19,10 +19,24 @@ final class Changes {
     }
 
     /**
-     * @param report the summary, kept as {@link Plan#REPORT} (the last change)
+     * Every file's change but the report's, which names them.
+     *
+     * @param files      the changes, in the order they are made
+     * @param pomChanges what an update of the student's own pom changes, in words (empty for a new pom)
+     */
+    record Draft(List<Change> files, List<String> pomChanges) {
+        /** These changes, then the report kept as {@link Plan#REPORT}: every change, the report last. */
+        List<Change> withReport(List<String> report) {
+            List<Change> all = new ArrayList<>(files);
+            all.add(Change.create(Plan.REPORT, String.join("\n", report) + "\n"));
+            return List.copyOf(all);
+        }
+    }
+
+    /**
      * @throws MigrationException when a build file cannot be read, or the pom cannot be updated
      */
-    static List<Change> of(Project project, Plan plan, List<String> report) throws MigrationException {
+    static Draft of(Project project, Plan plan) throws MigrationException {
         Layout layout = project.layout();
         Path d = layout.dir();
         Charset charset = project.encoding().charset();
@@ -34,9 +48,12 @@ final class Changes {
         for (Kept k : Stream.concat(plan.extras().stream(), plan.tests().stream()).filter(Kept::changed).toList())
             changes.add(Change.replace(k.file().relative(d), Layout.relative(d, k.target()), k.file().text(), k.text(), charset));
         Path pom = d.resolve("pom.xml");
+        List<String> pomChanges = List.of();
         if (Files.isRegularFile(pom)) {
             String text = read(pom);
-            changes.add(Change.replace("pom.xml", "pom.xml", text, PomFile.update(text, plan.build()).text(), StandardCharsets.UTF_8));
+            PomFile.Updated updated = PomFile.update(text, plan.build());
+            pomChanges = updated.changes();
+            changes.add(Change.replace("pom.xml", "pom.xml", text, updated.text(), StandardCharsets.UTF_8));
         } else {
             changes.add(Change.create("pom.xml", PomFile.create(plan.build(), d.getFileName().toString())));
         }
@@ -57,8 +74,7 @@ final class Changes {
                 changes.add(Change.create(".idea/compiler.xml", ImlFile.exclude(null, leftOut)));
             }
         }
-        changes.add(Change.create(Plan.REPORT, String.join("\n", report) + "\n"));
-        return changes;
+        return new Draft(List.copyOf(changes), pomChanges);
     }
 
     private static String read(Path file) throws MigrationException {

@@ -216,8 +216,9 @@ public final class Migration {
         } catch (IOException e) {
             throw new MigrationException("cannot compile in a scratch folder: " + e.getMessage(), e);
         }
-        List<String> report = Report.lines(d, project, plan, tools);
-        return new Planned(project, plan, report, Changes.of(project, plan, report));
+        Changes.Draft draft = Changes.of(project, plan);
+        List<String> report = Report.lines(d, project, plan, draft.pomChanges(), tools);
+        return new Planned(project, plan, report, draft.withReport(report));
     }
 
     /**

@@ -13,7 +13,8 @@ final class Report {
     private Report() {
     }
 
-    static List<String> lines(Path d, Project project, Plan plan, Toolchain tools) {
+    /** @param pomChanges what the update of the student's own pom changes, in words (empty for a new pom) */
+    static List<String> lines(Path d, Project project, Plan plan, List<String> pomChanges, Toolchain tools) {
         Layout layout = project.layout();
         BuildPlan build = plan.build();
         List<String> r = new ArrayList<>();
@@ -73,8 +74,11 @@ final class Report {
         if (rewritten > 0)
             r.add("Rewritten (package and import lines pointed at the library's classes, or test methods taken out as said above): " + rewritten
                     + " files (originals in " + Change.ORIGINALS + ")");
-        r.add("pom.xml: " + (layout.pom() == null ? "written" : "updated") + " (" + build.library() + ", JUnit "
-                + build.junit() + ", Java release " + build.release() + ", every test class runs whatever its name)");
+        if (!Files.isRegularFile(d.resolve("pom.xml")))
+            r.add("pom.xml: written (" + build.library() + ", JUnit " + build.junit() + ", Java release " + build.release()
+                    + ", every test class runs whatever its name)");
+        else
+            r.add("pom.xml: updated (" + (pomChanges.isEmpty() ? "it had all the library needs" : String.join(", ", pomChanges)) + ")");
         if (layout.iml() != null)
             r.add(d.relativize(layout.iml()) + ": the library jar added (from " + tools.mavenRepository() + ")");
         if (!Files.isRegularFile(tools.installedJar())) {
