@@ -11,8 +11,6 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 /**
  * Decides, in a scratch folder, what a migration does: the project compiled as it is, then its
@@ -85,16 +83,26 @@ final class Planner {
         List<Kept> keptTests = new ArrayList<>();
         for (SourceFile f : tests) {
             Kept k = SourceRewrite.kept(f, project.relocated());
-            String name = namesakes.stream().filter(n -> mentions(k.text(), n) > 0).findFirst().orElse(null);
-            if (name == null) {
+            List<Long> lines = namesakes.isEmpty() ? List.of() : JavaNames.lines(k.text(), f.relative(d), namesakes);
+            if (lines.isEmpty()) {
                 keptTests.add(k);
                 continue;
             }
+            // The first namesake the file names, by the list's order: the one the summary names.
+            String name = null;
+            long first = 0;
+            for (String n : namesakes) {
+                first = JavaNames.firstLine(k.text(), f.relative(d), n);
+                if (first > 0) {
+                    name = n;
+                    break;
+                }
+            }
             String why = "it uses your own " + name + ", moved to " + Layout.BACKUP + "/: the library has a class of that name inside"
                     + " it, which this test would run against instead";
-            TestMethods.Trimmed t = TestMethods.without(k.text(), linesMentioning(k.text(), namesakes), why);
+            TestMethods.Trimmed t = TestMethods.without(k.text(), lines, why);
             if (t == null) {
-                leftOutFirst.put(f, f.relative(d) + ":" + mentions(k.text(), name) + ": " + why);
+                leftOutFirst.put(f, f.relative(d) + ":" + first + ": " + why);
                 continue;
             }
             keptTests.add(new Kept(f, t.text(), k.target()));
@@ -166,27 +174,6 @@ final class Planner {
         int n = t.removed().size();
         return f.relative(d) + ": " + n + " test method" + (n == 1 ? "" : "s") + " left out (" + String.join("(), ", t.removed())
                 + "()), the rest kept: " + why;
-    }
-
-    /** The first line (1-based) where {@code name} stands as a word in {@code text}, 0 when nowhere. */
-    private static long mentions(String text, String name) {
-        Matcher m = Pattern.compile("\\b" + Pattern.quote(name) + "\\b").matcher(text);
-        return m.find() ? text.substring(0, m.start()).chars().filter(c -> c == '\n').count() + 1 : 0;
-    }
-
-    /** Every line (1-based) where one of {@code names} stands as a word. */
-    private static List<Long> linesMentioning(String text, Set<String> names) {
-        List<Long> lines = new ArrayList<>();
-        long n = 0;
-        for (String line : text.split("\n", -1)) {
-            n++;
-            for (String name : names)
-                if (Pattern.compile("\\b" + Pattern.quote(name) + "\\b").matcher(line).find()) {
-                    lines.add(n);
-                    break;
-                }
-        }
-        return lines;
     }
 
     /** Writes the files, as they will be, under {@code stage} at their paths in the project. */

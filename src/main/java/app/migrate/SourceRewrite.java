@@ -1,8 +1,5 @@
 package app.migrate;
 
-import java.io.IOException;
-import java.io.StringWriter;
-import java.net.URI;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -10,20 +7,13 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 
-import javax.tools.JavaCompiler;
-import javax.tools.JavaFileObject;
-import javax.tools.SimpleJavaFileObject;
-import javax.tools.ToolProvider;
 
 import com.sun.source.tree.CompilationUnitTree;
 import com.sun.source.tree.ExpressionTree;
 import com.sun.source.tree.IdentifierTree;
 import com.sun.source.tree.ImportTree;
 import com.sun.source.tree.MemberSelectTree;
-import com.sun.source.util.JavacTask;
-import com.sun.source.util.SourcePositions;
 import com.sun.source.util.TreeScanner;
-import com.sun.source.util.Trees;
 
 /**
  * A kept source pointed at the library: 2025–26's {@code geometries.api/impl} and
@@ -66,45 +56,20 @@ final class SourceRewrite {
      * @param relocated course classes kept in another course package → the library's name for them
      */
     static String rewrite(String text, String name, Map<String, String> relocated) throws MigrationException {
-        CompilationUnitTree unit;
-        SourcePositions positions;
-        try {
-            JavacTask task = parser(text);
-            unit = task.parse().iterator().next();
-            positions = Trees.instance(task).getSourcePositions();
-        } catch (IOException | IllegalStateException e) {
-            // The text is in memory: javac failing to read it is javac failing, said with the file.
-            throw new MigrationException("javac could not parse " + name + " to rewrite its package names: " + e.getMessage(), e);
-        }
-        // A file with parse errors (the unnamed variable _ on an older JDK) is still rewritten where
-        // its names parsed; the compile that follows reports the errors and sets it aside with them.
+        Parsed parsed = Parsed.of(text, name);
         List<Edit> edits = new ArrayList<>();
-        new Names(unit, positions, relocated, edits).scan(unit, null);
-        imports(unit, positions, text, relocated, edits);
+        new Names(parsed, relocated, edits).scan(parsed.unit(), null);
+        imports(parsed, text, relocated, edits);
         edits.sort(Comparator.comparingLong(Edit::start).reversed());
         StringBuilder out = new StringBuilder(text);
-        for (Edit e : edits) out.replace((int) e.start(), (int) e.end(), e.with());
+        for (Edit e : edits)
+            if (e.start() >= 0 && e.end() >= e.start()) // a part javac could not place (a parse error there) stays as written
+                out.replace((int) e.start(), (int) e.end(), e.with());
         return out.toString();
     }
 
     /** {@code text} from {@code start} to {@code end} becomes {@code with}. */
     private record Edit(long start, long end, String with) {
-    }
-
-    private static JavacTask parser(String text) throws MigrationException {
-        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
-        if (javac == null)
-            throw new MigrationException("this Java (" + System.getProperty("java.home")
-                    + ") has no compiler: run migrate with a JDK (17 or newer), as your IDE does");
-        // The file's own name need not make a URI (a space, a Hebrew letter): parsing never looks at it.
-        JavaFileObject source = new SimpleJavaFileObject(URI.create("string:///Source.java"), JavaFileObject.Kind.SOURCE) {
-            @Override
-            public CharSequence getCharContent(boolean ignoreEncodingErrors) {
-                return text;
-            }
-        };
-        // Errors and their chatter are the compile's to report (see rewrite): here they go nowhere.
-        return (JavacTask) javac.getTask(new StringWriter(), null, diagnostic -> { }, List.of("-proc:none"), null, List.of(source));
     }
 
     /** The dotted name an expression spells ({@code geometries.api.Intersectable}), or null when it is no plain name. */
@@ -124,14 +89,12 @@ final class SourceRewrite {
 
     /** The qualified names: a 2025–26 package folded, a relocated class named as the library's. */
     private static final class Names extends TreeScanner<Void, Void> {
-        private final CompilationUnitTree unit;
-        private final SourcePositions positions;
+        private final Parsed parsed;
         private final Map<String, String> relocated;
         private final List<Edit> edits;
 
-        Names(CompilationUnitTree unit, SourcePositions positions, Map<String, String> relocated, List<Edit> edits) {
-            this.unit = unit;
-            this.positions = positions;
+        Names(Parsed parsed, Map<String, String> relocated, List<Edit> edits) {
+            this.parsed = parsed;
             this.relocated = relocated;
             this.edits = edits;
         }
@@ -143,12 +106,12 @@ final class SourceRewrite {
                 String folded = Catalog.libraryName(name);
                 for (Map.Entry<String, String> r : relocated.entrySet())
                     if (folded.equals(Catalog.libraryName(r.getKey()))) {
-                        edits.add(new Edit(positions.getStartPosition(unit, node), positions.getEndPosition(unit, node), r.getValue()));
+                        edits.add(new Edit(parsed.start(node), parsed.end(node), r.getValue()));
                         return null;
                     }
                 if (isFolded(name)) {
                     // Only ".api" goes: the package's first name stays as written.
-                    edits.add(new Edit(positions.getEndPosition(unit, node.getExpression()), positions.getEndPosition(unit, node), ""));
+                    edits.add(new Edit(parsed.end(node.getExpression()), parsed.end(node), ""));
                     return null;
                 }
             }
@@ -157,8 +120,8 @@ final class SourceRewrite {
     }
 
     /** The library's import for each relocated class the file names unqualified, after its package line. */
-    private static void imports(CompilationUnitTree unit, SourcePositions positions, String text, Map<String, String> relocated,
-            List<Edit> edits) {
+    private static void imports(Parsed parsed, String text, Map<String, String> relocated, List<Edit> edits) {
+        CompilationUnitTree unit = parsed.unit();
         String pkg = unit.getPackageName() == null ? "" : Catalog.libraryPackage(dotted(unit.getPackageName()));
         List<String> imported = new ArrayList<>();
         for (ImportTree i : unit.getImports())
@@ -173,7 +136,7 @@ final class SourceRewrite {
         }.scan(unit.getTypeDecls(), null);
         long at = 0;
         if (unit.getPackage() != null) {
-            int nl = text.indexOf('\n', (int) positions.getEndPosition(unit, unit.getPackage()));
+            int nl = text.indexOf('\n', (int) parsed.end(unit.getPackage()));
             at = nl < 0 ? text.length() : nl + 1;
         }
         StringBuilder lines = new StringBuilder();
