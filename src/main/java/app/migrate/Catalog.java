@@ -1,5 +1,8 @@
 package app.migrate;
 
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 /**
@@ -81,6 +84,34 @@ final class Catalog {
         for (String other : COURSE_PACKAGES)
             if (exists(other + "." + simple)) return other + "." + simple;
         return null;
+    }
+
+    /**
+     * A project's sources sorted.
+     *
+     * @param course    the course classes the library provides, and those it keeps elsewhere: they move
+     * @param extras    the student's other classes: they stay
+     * @param tests     the tests
+     * @param relocated course classes kept in another course package → the library's name for them
+     */
+    record Sorted(List<SourceFile> course, List<SourceFile> extras, List<SourceFile> tests, Map<String, String> relocated) {
+    }
+
+    Sorted sort(List<SourceFile> files) {
+        List<SourceFile> tests = files.stream().filter(SourceFile::test).toList();
+        // A course class kept in another course package (lighting.Material) goes as the library's
+        // (primitives.Material); what stays is pointed at the library's.
+        Map<String, String> relocated = new LinkedHashMap<>();
+        files.stream().filter(f -> !f.test()).forEach(f -> {
+            String to = relocated(f.className());
+            // Only where the project has no class of the library's name: else this one is its own.
+            if (to != null && files.stream().noneMatch(g -> libraryName(g.className()).equals(to)))
+                relocated.put(f.className(), to);
+        });
+        List<SourceFile> course = files.stream()
+                .filter(f -> !f.test() && (provides(f.className()) || relocated.containsKey(f.className()))).toList();
+        List<SourceFile> extras = files.stream().filter(f -> !f.test() && !course.contains(f)).toList();
+        return new Sorted(course, extras, tests, relocated);
     }
 
     private boolean exists(String name) {

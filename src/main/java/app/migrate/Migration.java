@@ -6,7 +6,6 @@ import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 
@@ -169,19 +168,8 @@ public final class Migration {
         }
         Preflight.requireNames(d, files);
         Preflight.requireReadablePom(layout);
-        List<SourceFile> tests = files.stream().filter(SourceFile::test).toList();
-        // A course class kept in another course package (lighting.Material) goes as the library's
-        // (primitives.Material); what stays is pointed at the library's.
-        Map<String, String> relocated = new LinkedHashMap<>();
-        files.stream().filter(f -> !f.test()).forEach(f -> {
-            String to = catalog.relocated(f.className());
-            // Only where the project has no class of the library's name: else this one is its own.
-            if (to != null && files.stream().noneMatch(g -> Catalog.libraryName(g.className()).equals(to)))
-                relocated.put(f.className(), to);
-        });
-        List<SourceFile> course = files.stream()
-                .filter(f -> !f.test() && (catalog.provides(f.className()) || relocated.containsKey(f.className()))).toList();
-        List<SourceFile> extras = files.stream().filter(f -> !f.test() && !course.contains(f)).toList();
+        Catalog.Sorted sorted = catalog.sort(files);
+        List<SourceFile> course = sorted.course();
 
         if (Preflight.alreadyMigrated(d, course)) {
             out.println("raytracer migrate: " + d + " is already migrated (" + Manifest.FILE
@@ -197,22 +185,14 @@ public final class Migration {
         Preflight.requireJUnit(tools, junit, layout);
 
         List<Libraries.Library> libraries = Libraries.of(d, tools.mavenRepository(), layout.jars(), files);
-        Map<Libraries.Library, Path> resolved = new LinkedHashMap<>();
-        for (Libraries.Library l : libraries) {
-            Path jar = Libraries.jar(l, d, tools.mavenRepository()).orElse(null);
-            if (jar == null) {
-                progress.println("raytracer migrate: fetching " + l.coordinates() + " (" + l.from() + ") with mvn...");
-                jar = tools.fetch(l.coordinates()).orElse(null);
-            }
-            if (jar != null) resolved.put(l, jar);
-        }
+        Map<Libraries.Library, Path> resolved = Libraries.resolved(libraries, d, tools, progress);
         if (libraries.stream().anyMatch(l -> l.artifact().equals("junit") && l.group().equals("junit")))
             tools.fetchIfMissing("org.hamcrest:hamcrest-core:1.3").ifPresent(junit::add);
-        Project project = new Project(layout, charset, strays, libraries, resolved, relocated);
+        Project project = new Project(layout, charset, strays, libraries, resolved, sorted.relocated());
 
         Plan plan;
         try (Scratch scratch = new Scratch()) {
-            plan = new Planner(tools, progress).plan(project, course, extras, tests, junit, scratch.dir);
+            plan = new Planner(tools, progress).plan(project, course, sorted.extras(), sorted.tests(), junit, scratch.dir);
         } catch (IOException e) {
             throw new MigrationException("cannot compile in a scratch folder: " + e.getMessage(), e);
         }
