@@ -4,6 +4,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.regex.Pattern;
 
 /**
  * Which of a student's classes the library provides: a class of the same name in the course's
@@ -32,20 +33,29 @@ final class Catalog {
             "Light", "LightSource", "AmbientLight", "DirectionalLight", "PointLight", "SpotLight", "Camera", "ImageWriter",
             "RayTracerBase", "SimpleRayTracer", "RayTracerBasic", "RayTracerType", "Scene");
 
+    /** 2025–26's packages, which the library keeps folded into {@code geometries} and {@code lighting}. */
+    private static final Pattern FOLDED = Pattern.compile("(geometries|lighting)\\.(api|impl)");
+
     private final ClassLoader library;
 
     Catalog(ClassLoader library) {
         this.library = library;
     }
 
-    /** {@code geometries.impl.Sphere} → {@code geometries.Sphere}; other names unchanged. */
+    /** {@code geometries.impl.Sphere} → {@code geometries.Sphere} (and its nested classes); other names unchanged. */
     static String libraryName(String className) {
-        return className.replaceFirst("^(geometries|lighting)\\.(api|impl)\\.", "$1.");
+        int second = className.indexOf('.', className.indexOf('.') + 1);
+        return second < 0 ? className : libraryPackage(className.substring(0, second)) + className.substring(second);
     }
 
-    /** {@code geometries.impl} → {@code geometries}; other packages unchanged. */
+    /** {@code geometries.impl} → {@code geometries}; other packages unchanged. The one place the fold is written. */
     static String libraryPackage(String packageName) {
-        return packageName.replaceFirst("^(geometries|lighting)\\.(api|impl)$", "$1");
+        return isFolded(packageName) ? packageName.substring(0, packageName.indexOf('.')) : packageName;
+    }
+
+    /** Whether a package is one of 2025–26's {@code geometries.api/impl} and {@code lighting.api/impl}. */
+    static boolean isFolded(String packageName) {
+        return FOLDED.matcher(packageName).matches();
     }
 
     /** Whether the library has a class of this (folded) name in the course's packages. */

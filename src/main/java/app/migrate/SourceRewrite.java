@@ -82,11 +82,6 @@ final class SourceRewrite {
         return null;
     }
 
-    /** Whether a name is one of the 2025–26 packages folded into the library's. */
-    private static boolean isFolded(String name) {
-        return name != null && name.matches("(geometries|lighting)\\.(api|impl)");
-    }
-
     /** The qualified names: a 2025–26 package folded, a relocated class named as the library's. */
     private static final class Names extends TreeScanner<Void, Void> {
         private final Parsed parsed;
@@ -109,7 +104,7 @@ final class SourceRewrite {
                         edits.add(new Edit(parsed.start(node), parsed.end(node), r.getValue()));
                         return null;
                     }
-                if (isFolded(name)) {
+                if (Catalog.isFolded(name)) {
                     // Only ".api" goes: the package's first name stays as written.
                     edits.add(new Edit(parsed.end(node.getExpression()), parsed.end(node), ""));
                     return null;
