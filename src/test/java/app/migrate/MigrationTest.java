@@ -295,7 +295,10 @@ class MigrationTest {
                     "<version>" + BuildPlan.SUREFIRE_VERSION + "</version>", "<artifactId>raytracer</artifactId>")
                     .doesNotContain("2.12.4", "<sourceDirectory>");
             assertThat(dir.resolve("course-backup/originals/pom.xml")).content().contains("2.12.4");
-            assertThat(printed()).contains("pom.xml: updated");
+            // what the update changed, as PomFile recorded it: the too-old Surefire raised, the library added
+            assertThat(printed()).containsPattern("pom\\.xml: updated \\(.*maven-surefire-plugin 2\\.12\\.4 -> "
+                    + BuildPlan.SUREFIRE_VERSION.replace(".", "\\.") + ".*\\)\n")
+                    .contains("dependency io.github.raytracer:raytracer:");
         }
     }
 
