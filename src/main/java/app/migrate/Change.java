@@ -13,7 +13,7 @@ import java.nio.charset.StandardCharsets;
  * @param to      where its new text goes (the same as {@code path} unless it moves)
  * @param before  its text now ({@code null} for {@link Kind#CREATE})
  * @param after   its text after the migration
- * @param charset the encoding {@code after} is written in (a source's own; UTF-8 for the build files)
+ * @param charset the encoding {@code after} is in (a source's own; UTF-8 for the build files)
  */
 record Change(Kind kind, String path, String to, String before, String after, Charset charset) {
     /** Where a rewritten file's original is kept, under its own path. */
@@ -29,8 +29,8 @@ record Change(Kind kind, String path, String to, String before, String after, Ch
         CREATE
     }
 
-    static Change move(String from, String to, String text) {
-        return new Change(Kind.MOVE, from, to, text, text, StandardCharsets.UTF_8);
+    static Change move(String from, String to, String text, Charset charset) {
+        return new Change(Kind.MOVE, from, to, text, text, charset);
     }
 
     static Change replace(String path, String to, String before, String after, Charset charset) {

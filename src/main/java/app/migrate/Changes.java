@@ -42,9 +42,9 @@ final class Changes {
         Charset charset = project.encoding().charset();
         List<Change> changes = new ArrayList<>();
         for (SourceFile f : plan.course())
-            changes.add(Change.move(f.relative(d), Layout.BACKUP + "/" + f.relative(d), f.text()));
+            changes.add(Change.move(f.relative(d), Layout.BACKUP + "/" + f.relative(d), f.text(), charset));
         for (SourceFile f : plan.setAside().keySet())
-            changes.add(Change.move(f.relative(d), Plan.SET_ASIDE + f.relative(d), f.text()));
+            changes.add(Change.move(f.relative(d), Plan.SET_ASIDE + f.relative(d), f.text(), charset));
         for (Kept k : Stream.concat(plan.extras().stream(), plan.tests().stream()).filter(Kept::changed).toList())
             changes.add(Change.replace(k.file().relative(d), Layout.relative(d, k.target()), k.file().text(), k.text(), charset));
         Path pom = d.resolve("pom.xml");

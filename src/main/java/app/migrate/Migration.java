@@ -63,7 +63,11 @@ public final class Migration {
      * @throws MigrationException when the library this command runs with cannot be located or read
      */
     public static Migration ofThisProcess(PrintStream out, PrintStream progress) throws MigrationException {
-        return new Migration(Toolchain.ofThisProcess(), Migration.class.getClassLoader(), out, progress);
+        try {
+            return new Migration(Toolchain.ofThisProcess(), Migration.class.getClassLoader(), out, progress);
+        } catch (RuntimeException e) { // a -Dmaven.repo.local that is no path, say: not the student's folder's name
+            throw unexpected(e);
+        }
     }
 
     /**
