@@ -129,7 +129,8 @@ public final class Migration {
             planned.report().forEach(out::println);
             out.println();
             out.println("The exact change, as a unified diff (paths relative to " + d + "; git apply takes it):");
-            out.print(UnifiedDiff.of(planned.changes()));
+            out.flush();
+            out.writeBytes(UnifiedDiff.bytes(planned.changes()));
             out.flush();
             return false;
         }

@@ -1,5 +1,7 @@
 package app.migrate;
 
+import java.io.ByteArrayOutputStream;
+import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -18,31 +20,56 @@ final class UnifiedDiff {
     private UnifiedDiff() {
     }
 
-    /** The diff of every change, in the order they are made. */
+    /** The diff of every change, in the order they are made, as text (a test's view; what is printed is {@link #bytes}). */
     static String of(List<Change> changes) {
         StringBuilder out = new StringBuilder();
+        for (Change c : changes) out.append(header(c)).append(hunks(c));
+        return out.toString();
+    }
+
+    /**
+     * The diff as {@code git apply} takes it: git's headers in UTF-8, each file's lines in that
+     * file's own encoding (a windows-1255 source's Hebrew comments as their bytes on disk), so that
+     * the context lines match the files byte for byte.
+     */
+    static byte[] bytes(List<Change> changes) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
         for (Change c : changes) {
-            switch (c.kind()) {
-                case MOVE -> out.append("diff --git a/").append(c.path()).append(" b/").append(c.to()).append('\n')
-                        .append("similarity index 100%\nrename from ").append(c.path()).append("\nrename to ").append(c.to()).append('\n');
-                case CREATE -> {
-                    out.append("diff --git a/").append(c.path()).append(" b/").append(c.path()).append("\nnew file mode 100644\n");
-                    if (!c.after().isEmpty())
-                        out.append("--- /dev/null\n+++ b/").append(c.path()).append('\n').append(hunks("", c.after()));
-                }
-                case REPLACE -> {
-                    out.append("diff --git a/").append(c.path()).append(" b/").append(c.backup()).append('\n')
-                            .append("similarity index 100%\ncopy from ").append(c.path()).append("\ncopy to ").append(c.backup()).append('\n');
-                    out.append("diff --git a/").append(c.path()).append(" b/").append(c.to()).append('\n');
-                    if (!c.to().equals(c.path()))
-                        out.append("rename from ").append(c.path()).append("\nrename to ").append(c.to()).append('\n');
-                    if (!c.before().equals(c.after()))
-                        out.append("--- a/").append(c.path()).append("\n+++ b/").append(c.to()).append('\n')
-                                .append(hunks(c.before(), c.after()));
-                }
+            out.writeBytes(header(c).getBytes(StandardCharsets.UTF_8));
+            out.writeBytes(hunks(c).getBytes(c.charset()));
+        }
+        return out.toByteArray();
+    }
+
+    /** The lines before a change's hunks: what happens to the file, and its paths. */
+    private static String header(Change c) {
+        StringBuilder out = new StringBuilder();
+        switch (c.kind()) {
+            case MOVE -> out.append("diff --git a/").append(c.path()).append(" b/").append(c.to()).append('\n')
+                    .append("similarity index 100%\nrename from ").append(c.path()).append("\nrename to ").append(c.to()).append('\n');
+            case CREATE -> {
+                out.append("diff --git a/").append(c.path()).append(" b/").append(c.path()).append("\nnew file mode 100644\n");
+                if (!c.after().isEmpty()) out.append("--- /dev/null\n+++ b/").append(c.path()).append('\n');
+            }
+            case REPLACE -> {
+                out.append("diff --git a/").append(c.path()).append(" b/").append(c.backup()).append('\n')
+                        .append("similarity index 100%\ncopy from ").append(c.path()).append("\ncopy to ").append(c.backup()).append('\n');
+                out.append("diff --git a/").append(c.path()).append(" b/").append(c.to()).append('\n');
+                if (!c.to().equals(c.path()))
+                    out.append("rename from ").append(c.path()).append("\nrename to ").append(c.to()).append('\n');
+                if (!c.before().equals(c.after())) out.append("--- a/").append(c.path()).append("\n+++ b/").append(c.to()).append('\n');
             }
         }
         return out.toString();
+    }
+
+    /** A change's hunks: none for a move or an unchanged text. */
+    private static String hunks(Change c) {
+        return switch (c.kind()) {
+            case MOVE -> "";
+            case CREATE -> hunks("", c.after());
+            case REPLACE -> c.before().equals(c.after()) ? "" : hunks(c.before(), c.after());
+        };
     }
 
     /** One line of an edit script: {@code ' '} kept, {@code '-'} removed, {@code '+'} added, with its line numbers. */

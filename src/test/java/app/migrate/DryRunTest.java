@@ -7,9 +7,11 @@ import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
+import java.nio.charset.Charset;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Arrays;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
@@ -32,10 +34,24 @@ class DryRunTest {
     @TempDir
     Path root;
 
-    /** The two kinds of project: only moves and build files, and one whose kept sources are rewritten and moved. */
+    /**
+     * The kinds of project: only moves and build files; one whose kept sources are rewritten and
+     * moved; the same with a source in windows-1255, a Hebrew comment beside a changed line.
+     */
     private Path project(String kind) throws IOException {
         Path dir = Files.createDirectories(root.resolve(kind));
         if (kind.equals("intellij")) return CourseProjects.intellij(dir);
+        if (kind.equals("windows-1255")) {
+            project2025(dir);
+            Files.write(dir.resolve("src/geometries/impl/Cube.java"), ("package geometries.impl;\n\nimport geometries.api.Intersectable;\n\n"
+                    + "/** \u05e7\u05d5\u05d1\u05d9\u05d9\u05d4: a cube. */\npublic class Cube {\n"
+                    + "    public static Intersectable unit() { return null; }\n}\n").getBytes(Charset.forName("windows-1255")));
+            return dir;
+        }
+        return project2025(dir);
+    }
+
+    private static Path project2025(Path dir) throws IOException {
         write(dir, "src/primitives/Point.java", CourseProjects.POINT);
         write(dir, "src/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1"));
         write(dir, "src/geometries/api/Intersectable.java", "package geometries.api;\n\npublic abstract class Intersectable {\n}\n");
@@ -59,7 +75,7 @@ class DryRunTest {
     }
 
     @ParameterizedTest(name = "{0} project")
-    @ValueSource(strings = { "intellij", "2025-26" })
+    @ValueSource(strings = { "intellij", "2025-26", "windows-1255" })
     @DisplayName("the real run writes exactly the texts the plan holds, where it says, keeping each original")
     void planIsWhatIsWritten(String kind) throws Exception {
         Path dir = project(kind);
@@ -85,7 +101,7 @@ class DryRunTest {
     }
 
     @ParameterizedTest(name = "{0} project")
-    @ValueSource(strings = { "intellij", "2025-26" })
+    @ValueSource(strings = { "intellij", "2025-26", "windows-1255" })
     @DisplayName("the dry run's diff, applied by git apply to a copy, leaves every file as the real run does")
     void diffIsTheChange(String kind) throws Exception {
         Path dir = project(kind);
@@ -94,8 +110,14 @@ class DryRunTest {
         ByteArrayOutputStream printed = new ByteArrayOutputStream();
         assertThat(migration(dir, printed).migrate(dir, true, true)).isFalse();
         assertThat(snapshot(dir)).as("a dry run changes nothing").isEqualTo(before);
-        String out = printed.toString(StandardCharsets.UTF_8);
-        String diff = out.substring(out.indexOf("diff --git "));
+        // The diff as printed, byte for byte: each file's lines are in that file's own encoding.
+        byte[] out = printed.toByteArray();
+        String asLatin1 = new String(out, StandardCharsets.ISO_8859_1);
+        byte[] diff = Arrays.copyOfRange(out, asLatin1.indexOf("diff --git "), out.length);
+        if (kind.equals("windows-1255"))
+            assertThat(new String(diff, StandardCharsets.ISO_8859_1)).as("the Hebrew context line, in the file's own bytes")
+                    .contains(new String(" /** \u05e7\u05d5\u05d1\u05d9\u05d9\u05d4: a cube. */\n".getBytes(Charset.forName("windows-1255")),
+                            StandardCharsets.ISO_8859_1));
 
         assertThat(migration(dir, new ByteArrayOutputStream()).migrate(dir, true, false)).isTrue();
         gitApply(copy, diff);
@@ -166,9 +188,9 @@ class DryRunTest {
     }
 
     /** {@code git apply} of {@code diff} in {@code dir}, as a folder of no repository. */
-    private static void gitApply(Path dir, String diff) throws IOException, InterruptedException {
+    private static void gitApply(Path dir, byte[] diff) throws IOException, InterruptedException {
         Path patch = dir.resolveSibling(dir.getFileName() + ".diff");
-        Files.writeString(patch, diff, StandardCharsets.UTF_8);
+        Files.write(patch, diff);
         ProcessBuilder git = new ProcessBuilder("git", "apply", "--whitespace=nowarn", patch.toString()).directory(dir.toFile())
                 .redirectErrorStream(true);
         git.environment().put("GIT_CEILING_DIRECTORIES", dir.getParent().toString());
