@@ -7,7 +7,6 @@ import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 
-
 import com.sun.source.tree.CompilationUnitTree;
 import com.sun.source.tree.ExpressionTree;
 import com.sun.source.tree.IdentifierTree;
@@ -30,7 +29,7 @@ final class SourceRewrite {
 
     /** The file rewritten, and its new place (its package's folder, where its package changed). */
     static Kept kept(SourceFile f, Map<String, String> relocated) throws MigrationException {
-        String text = rewrite(f.text(), f.relative(f.root()), relocated);
+        String text = rewrite(f.text(), f.path().toString(), relocated);
         Path target = f.path();
         String pkg = Catalog.libraryPackage(f.packageName());
         if (!pkg.equals(f.packageName()) && f.path().getParent().equals(f.root().resolve(f.packageName().replace('.', '/')))) {
@@ -105,7 +104,7 @@ final class SourceRewrite {
                         return null;
                     }
                 if (Catalog.isFolded(name)) {
-                    // Only ".api" goes: the package's first name stays as written.
+                    // Only ".api" or ".impl" goes: the first name stays as written, spacing and all.
                     edits.add(new Edit(parsed.end(node.getExpression()), parsed.end(node), ""));
                     return null;
                 }
@@ -117,10 +116,14 @@ final class SourceRewrite {
     /** The library's import for each relocated class the file names unqualified, after its package line. */
     private static void imports(Parsed parsed, String text, Map<String, String> relocated, List<Edit> edits) {
         CompilationUnitTree unit = parsed.unit();
-        String pkg = unit.getPackageName() == null ? "" : Catalog.libraryPackage(dotted(unit.getPackageName()));
+        // A name javac could not parse (null) is no package or import to match: the compile names its error.
+        String declared = unit.getPackageName() == null ? null : dotted(unit.getPackageName());
+        String pkg = declared == null ? "" : Catalog.libraryPackage(declared);
         List<String> imported = new ArrayList<>();
-        for (ImportTree i : unit.getImports())
-            if (!i.isStatic()) imported.add(Catalog.libraryName(dotted((ExpressionTree) i.getQualifiedIdentifier())));
+        for (ImportTree i : unit.getImports()) {
+            String name = i.getQualifiedIdentifier() instanceof ExpressionTree e ? dotted(e) : null;
+            if (!i.isStatic() && name != null) imported.add(Catalog.libraryName(name));
+        }
         List<String> simpleNames = new ArrayList<>();
         new TreeScanner<Void, Void>() {
             @Override

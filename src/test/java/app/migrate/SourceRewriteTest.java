@@ -66,6 +66,19 @@ class SourceRewriteTest {
     }
 
     @Nested
+    @DisplayName("a file javac cannot parse whole")
+    class ParseErrors {
+        @Test
+        @DisplayName("is rewritten where it parses; the broken part stays as written, for the compile to name")
+        void broken() throws Exception {
+            String text = "package geometries.impl;\nimport geometries.api.Intersectable;\nimport ;\n"
+                    + "class A {\n    void f() { int = geometries.api.Intersectable.class; }\n}\n";
+            assertThat(SourceRewrite.rewrite(text, "A.java", MATERIAL)).startsWith("package geometries;\nimport geometries.Intersectable;\n"
+                    + "import ;\nclass A {\n    void f() { int = ");
+        }
+    }
+
+    @Nested
     @DisplayName("a relocated course class (lighting.Material as the library's primitives.Material)")
     class Relocate {
         @Test
