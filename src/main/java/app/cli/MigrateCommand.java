@@ -35,7 +35,8 @@ final class MigrateCommand implements Callable<Integer> {
             + " (refused when a file changed since).")
     private boolean undo;
 
-    @Option(names = "--dry-run", description = "Print what the migration would do; change nothing.")
+    @Option(names = "--dry-run", description = "Print the summary and the exact change, as a unified diff (paths relative"
+            + " to DIR; git apply takes it); change nothing.")
     private boolean dryRun;
 
     @Option(names = "--allow-dirty", description = "Migrate a git folder that has uncommitted changes.")
@@ -56,8 +57,8 @@ final class MigrateCommand implements Callable<Integer> {
 
     @Override
     public Integer call() {
-        Migration migration = Migration.ofThisProcess(out, err);
         try {
+            Migration migration = Migration.ofThisProcess(out, err);
             Path folder = Path.of(dir);
             if (undo) migration.undo(folder);
             else migration.migrate(folder, allowDirty, dryRun, encoding);

@@ -71,7 +71,7 @@ final class AsIsCheck {
             boolean syntax = p.code().startsWith("compiler.err.expected") || p.code().startsWith("compiler.err.illegal.start")
                     || p.code().startsWith("compiler.err.premature.eof") || p.code().startsWith("compiler.err.not.stmt");
             throw new MigrationException(d + " does not compile as it is (" + d.relativize(p.file()).toString().replace('\\', '/')
-                    + ":" + p.line() + ": " + Migration.oneLine(p.message()) + "): fix it first"
+                    + ":" + p.line() + ": " + Javac.oneLine(p.message()) + "): fix it first"
                     + (syntax ? " (if that file is written for a Java newer than " + jdk + ", run migrate with that JDK)" : "")
                     // A library of the project this machine lacks is the likelier cause of a missing name.
                     + (!missingLibraries.isEmpty() && (p.code().startsWith("compiler.err.cant.resolve")

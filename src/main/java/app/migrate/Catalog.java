@@ -1,6 +1,10 @@
 package app.migrate;
 
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
 import java.util.Set;
+import java.util.regex.Pattern;
 
 /**
  * Which of a student's classes the library provides: a class of the same name in the course's
@@ -29,20 +33,29 @@ final class Catalog {
             "Light", "LightSource", "AmbientLight", "DirectionalLight", "PointLight", "SpotLight", "Camera", "ImageWriter",
             "RayTracerBase", "SimpleRayTracer", "RayTracerBasic", "RayTracerType", "Scene");
 
+    /** 2025–26's packages, which the library keeps folded into {@code geometries} and {@code lighting}. */
+    private static final Pattern FOLDED = Pattern.compile("(geometries|lighting)\\.(api|impl)");
+
     private final ClassLoader library;
 
     Catalog(ClassLoader library) {
         this.library = library;
     }
 
-    /** {@code geometries.impl.Sphere} → {@code geometries.Sphere}; other names unchanged. */
+    /** {@code geometries.impl.Sphere} → {@code geometries.Sphere} (and its nested classes); other names unchanged. */
     static String libraryName(String className) {
-        return className.replaceFirst("^(geometries|lighting)\\.(api|impl)\\.", "$1.");
+        int second = className.indexOf('.', className.indexOf('.') + 1);
+        return second < 0 ? className : libraryPackage(className.substring(0, second)) + className.substring(second);
     }
 
-    /** {@code geometries.impl} → {@code geometries}; other packages unchanged. */
+    /** {@code geometries.impl} → {@code geometries}; other packages unchanged. The one place the fold is written. */
     static String libraryPackage(String packageName) {
-        return packageName.replaceFirst("^(geometries|lighting)\\.(api|impl)$", "$1");
+        return isFolded(packageName) ? packageName.substring(0, packageName.indexOf('.')) : packageName;
+    }
+
+    /** Whether a package is one of 2025–26's {@code geometries.api/impl} and {@code lighting.api/impl}. */
+    static boolean isFolded(String packageName) {
+        return FOLDED.matcher(packageName).matches();
     }
 
     /** Whether the library has a class of this (folded) name in the course's packages. */
@@ -81,6 +94,34 @@ final class Catalog {
         for (String other : COURSE_PACKAGES)
             if (exists(other + "." + simple)) return other + "." + simple;
         return null;
+    }
+
+    /**
+     * A project's sources sorted.
+     *
+     * @param course    the course classes the library provides, and those it keeps elsewhere: they move
+     * @param extras    the student's other classes: they stay
+     * @param tests     the tests
+     * @param relocated course classes kept in another course package → the library's name for them
+     */
+    record Sorted(List<SourceFile> course, List<SourceFile> extras, List<SourceFile> tests, Map<String, String> relocated) {
+    }
+
+    Sorted sort(List<SourceFile> files) {
+        List<SourceFile> tests = files.stream().filter(SourceFile::test).toList();
+        // A course class kept in another course package (lighting.Material) goes as the library's
+        // (primitives.Material); what stays is pointed at the library's.
+        Map<String, String> relocated = new LinkedHashMap<>();
+        files.stream().filter(f -> !f.test()).forEach(f -> {
+            String to = relocated(f.className());
+            // Only where the project has no class of the library's name: else this one is its own.
+            if (to != null && files.stream().noneMatch(g -> libraryName(g.className()).equals(to)))
+                relocated.put(f.className(), to);
+        });
+        List<SourceFile> course = files.stream()
+                .filter(f -> !f.test() && (provides(f.className()) || relocated.containsKey(f.className()))).toList();
+        List<SourceFile> extras = files.stream().filter(f -> !f.test() && !course.contains(f)).toList();
+        return new Sorted(course, extras, tests, relocated);
     }
 
     private boolean exists(String name) {

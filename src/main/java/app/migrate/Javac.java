@@ -77,6 +77,12 @@ final class Javac {
                     + ") has no compiler: run migrate with a JDK (17 or newer), as your IDE does");
     }
 
+    /** javac's message in one line: {@code cannot find symbol (symbol: method f(), location: class A)}. */
+    static String oneLine(String message) {
+        List<String> lines = message.lines().map(String::strip).filter(l -> !l.isEmpty()).toList();
+        return lines.isEmpty() ? "" : lines.get(0) + (lines.size() > 1 ? " (" + String.join(", ", lines.subList(1, lines.size())).replaceAll("\\s+", " ") + ")" : "");
+    }
+
     /** The newest release this JDK compiles for. */
     static int newestRelease() {
         return Runtime.version().feature();
@@ -164,7 +170,7 @@ final class Javac {
             if (!compiled && errors.isEmpty()) {
                 if (chatter.toString().contains("OutOfMemoryError")) throw outOfMemory(files, null);
                 throw new MigrationException("javac stopped without naming an error while compiling " + files.size()
-                        + " files: " + Migration.oneLine(chatter.toString()) + " (nothing was changed)");
+                        + " files: " + Javac.oneLine(chatter.toString()) + " (nothing was changed)");
             }
             return errors;
         }

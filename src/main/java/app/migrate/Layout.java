@@ -236,6 +236,12 @@ record Layout(Path dir, Kind kind, List<Path> mainRoots, List<Path> testRoots, P
         return new ArrayList<>(new LinkedHashSet<>(jars));
     }
 
+    /** {@code p} relative to the project {@code d}, with {@code /}; {@code .} for the project itself. */
+    static String relative(Path d, Path p) {
+        String r = d.relativize(p).toString().replace('\\', '/');
+        return r.isEmpty() ? "." : r;
+    }
+
     static String names(Path dir, List<Path> folders) {
         return String.join(", ", folders.stream().map(f -> dir.relativize(f).toString().replace('\\', '/') + "/").toList());
     }

@@ -1,6 +1,7 @@
 package app.migrate;
 
 import java.io.IOException;
+import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -150,6 +151,23 @@ final class Libraries {
     static Optional<Path> jar(Library l, Path d, Path mavenRepository) {
         if (l.systemPath != null) return Optional.of(d.resolve(l.systemPath)).filter(Files::isRegularFile);
         return Optional.of(Toolchain.repositoryJar(mavenRepository, l.group, l.artifact, l.version)).filter(Files::isRegularFile);
+    }
+
+    /**
+     * The jar of each library that has one on this machine, fetched into the local repository with
+     * Maven where it is missing there (each fetch announced on {@code progress}: it takes seconds).
+     */
+    static Map<Library, Path> resolved(List<Library> libraries, Path d, Toolchain tools, PrintStream progress) {
+        Map<Library, Path> resolved = new LinkedHashMap<>();
+        for (Library l : libraries) {
+            Path jar = jar(l, d, tools.mavenRepository()).orElse(null);
+            if (jar == null) {
+                progress.println("raytracer migrate: fetching " + l.coordinates() + " (" + l.from() + ") with mvn...");
+                jar = tools.fetch(l.coordinates()).orElse(null);
+            }
+            if (jar != null) resolved.put(l, jar);
+        }
+        return resolved;
     }
 
     /** IntelliJ's project libraries ({@code .idea/libraries/*.xml}) by name: their jars' URLs. */

@@ -113,7 +113,7 @@ final class Reasons {
                 return shown + " is not in the library (nor in your course classes)";
             }
         }
-        return Migration.oneLine(p.message());
+        return Javac.oneLine(p.message());
     }
 
     /**

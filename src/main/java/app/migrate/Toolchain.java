@@ -2,9 +2,9 @@ package app.migrate;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.io.UncheckedIOException;
 import java.net.URISyntaxException;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.FileSystemNotFoundException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.security.CodeSource;
@@ -41,14 +41,19 @@ record Toolchain(Path library, List<Path> junit, Path mavenRepository, String co
             "org/junit/jupiter/junit-jupiter-params", "org/junit/platform/junit-platform-commons",
             "org/opentest4j/opentest4j", "org/apiguardian/apiguardian-api");
 
-    /** The toolchain of this process: the library it runs with, JUnit from the local repository. */
-    static Toolchain ofThisProcess() {
+    /**
+     * The toolchain of this process: the library it runs with, JUnit from the local repository.
+     *
+     * @throws MigrationException when the library's own build facts ({@code library.properties}) cannot be read
+     */
+    static Toolchain ofThisProcess() throws MigrationException {
         Path library = location(Catalog.class);
         Properties p = new Properties();
         try (InputStream in = Toolchain.class.getResourceAsStream("library.properties")) {
             if (in != null) p.load(in);
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
+        } catch (IOException | IllegalArgumentException e) {
+            throw new MigrationException("cannot read library.properties in " + library + " (the library's coordinates): "
+                    + e.getMessage() + " (nothing was changed)", e);
         }
         String coordinates = p.getProperty("groupId", "io.github.raytracer") + ":" + p.getProperty("artifactId", "raytracer")
                 + ":" + p.getProperty("version", "1.0.0-SNAPSHOT");
@@ -176,12 +181,20 @@ record Toolchain(Path library, List<Path> junit, Path mavenRepository, String co
         return jars;
     }
 
-    static Path location(Class<?> c) {
+    /**
+     * @throws MigrationException when the class has no location to name (loaded from memory, or a
+     *                            location that is not a file)
+     */
+    static Path location(Class<?> c) throws MigrationException {
         CodeSource source = c.getProtectionDomain().getCodeSource();
+        if (source == null || source.getLocation() == null)
+            throw new MigrationException("cannot tell where the library's classes are loaded from (" + c.getName()
+                    + " has no code source): run migrate from the raytracer jar or its clone (nothing was changed)");
         try {
             return Path.of(source.getLocation().toURI());
-        } catch (URISyntaxException | NullPointerException e) {
-            throw new IllegalStateException("cannot tell where the library's classes are loaded from", e);
+        } catch (URISyntaxException | IllegalArgumentException | FileSystemNotFoundException e) {
+            throw new MigrationException("cannot tell where the library's classes are loaded from (" + source.getLocation()
+                    + " is not a file: " + e.getMessage() + "); run migrate from the raytracer jar or its clone (nothing was changed)", e);
         }
     }
 }

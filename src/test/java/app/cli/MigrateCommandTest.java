@@ -61,6 +61,27 @@ class MigrateCommandTest {
     }
 
     @Test
+    @DisplayName("--dry-run: exit 0, the summary then the exact change as a unified diff, and nothing changed")
+    void dryRun() throws IOException {
+        Path course = app.Project.file("src/it/migrate/course");
+        try (var files = Files.walk(course)) {
+            for (Path f : files.filter(Files::isRegularFile).toList()) {
+                Path to = dir.resolve(course.relativize(f).toString());
+                Files.createDirectories(to.getParent());
+                Files.copy(f, to);
+            }
+        }
+        Cli.Run run = Cli.run("migrate", "--dry-run", dir.toString());
+        assertThat(run.exitCode()).as(run.err()).isZero();
+        assertThat(run.out()).startsWith("raytracer migrate --dry-run: nothing changed; a migration would do this:\n")
+                .contains("\nThe exact change, as a unified diff (paths relative to " + dir.toRealPath() + "; git apply takes it):\n"
+                        + "diff --git a/src/geometries/Geometry.java b/course-backup/src/geometries/Geometry.java\n",
+                        "diff --git a/pom.xml b/pom.xml\nnew file mode 100644\n");
+        assertThat(dir.resolve("course-backup")).doesNotExist();
+        assertThat(dir.resolve("pom.xml")).doesNotExist();
+    }
+
+    @Test
     @DisplayName("--help lists the options and the exit codes")
     void help() {
         Cli.Run run = Cli.run("migrate", "--help");

@@ -113,14 +113,26 @@ final class CourseProjects {
 
     /** As {@link #migration(Path, OutputStream, OutputStream)}, stopped where {@code faults} says. */
     static Migration migration(Path dir, OutputStream printed, OutputStream steps, Faults faults) {
-        Toolchain mine = Toolchain.ofThisProcess();
+        return migration(dir, printed, steps, faults, Camera.class.getClassLoader());
+    }
+
+    /** As {@link #migration(Path, OutputStream, OutputStream, Faults)}, the library's classes asked of {@code library}. */
+    static Migration migration(Path dir, OutputStream printed, OutputStream steps, Faults faults, ClassLoader library) {
+        Toolchain mine;
+        Path classes;
+        try {
+            mine = Toolchain.ofThisProcess();
+            classes = Toolchain.location(Camera.class);
+        } catch (MigrationException e) {
+            throw new IllegalStateException("the test's own library: " + e.getMessage(), e);
+        }
         List<Path> junit = Arrays.stream(System.getProperty("java.class.path").split(File.pathSeparator))
                 .filter(p -> p.matches(".*(junit-jupiter-api|junit-jupiter-params|junit-platform-commons|opentest4j|apiguardian).*\\.jar"))
                 .map(Path::of).toList();
-        Toolchain tools = new Toolchain(Toolchain.location(Camera.class), junit, repository(dir), mine.coordinates(),
+        Toolchain tools = new Toolchain(classes, junit, repository(dir), mine.coordinates(),
                 mine.junitVersion(), mine.jdk(), null);
         PrintStream out = new PrintStream(printed, true, StandardCharsets.UTF_8);
-        return new Migration(tools, Camera.class.getClassLoader(), out, new PrintStream(steps, true, StandardCharsets.UTF_8), faults);
+        return new Migration(tools, library, out, new PrintStream(steps, true, StandardCharsets.UTF_8), faults);
     }
 
     /** The Maven repository of {@link #migration}'s toolchain. */
