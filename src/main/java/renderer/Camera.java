@@ -7,7 +7,6 @@ import java.util.MissingResourceException;
 import java.util.Objects;
 import java.util.function.BiConsumer;
 
-import jdk.jfr.FlightRecorder;
 
 import primitives.Color;
 import primitives.CourseClassGuard;
@@ -192,7 +191,7 @@ public final class Camera {
     public RenderStats render() {
         String name = getImageLabel();
         String scene = getSceneName();
-        RenderEvent event = FlightRecorder.isInitialized() ? new RenderEvent() : null; // see RenderEvent
+        RenderEvent event = ImageEvent.recording() ? new RenderEvent() : null; // see RenderEvent
         RenderStats stats = new RenderLoop(view, sampling, execution, rayTracer, imageWriter).render(name);
         if (event != null) event.commit(name, scene, imageWriter, sampling.antiAliasing(), stats);
         renderListener.accept(this, stats);

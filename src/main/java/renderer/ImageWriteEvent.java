@@ -4,11 +4,8 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 
-import jdk.jfr.Category;
 import jdk.jfr.DataAmount;
 import jdk.jfr.Description;
-import jdk.jfr.Event;
-import jdk.jfr.FlightRecorder;
 import jdk.jfr.Label;
 import jdk.jfr.Name;
 
@@ -17,13 +14,12 @@ import jdk.jfr.Name;
  * {@link RenderEvent render's}: on a timeline, the write (PNG encoding and the move into place)
  * shows apart from the render it follows, and the first write of a JVM, which starts AWT and
  * ImageIO, shows as the long one. Made, as the render's event, only once the flight recorder is
- * initialised (see {@link RenderEvent}); a failed write commits none.
+ * initialised ({@link ImageEvent}); a failed write commits none.
  */
 @Name(ImageWriteEvent.NAME)
 @Label("Image Write")
-@Category("Ray Tracer")
 @Description("One PNG written by an ImageWriter: encoding and the atomic move into place")
-final class ImageWriteEvent extends Event {
+final class ImageWriteEvent extends ImageEvent {
     /** The event's name in a recording (for {@code jfr print --events}). */
     static final String NAME = "raytracer.ImageWrite";
 
@@ -35,23 +31,10 @@ final class ImageWriteEvent extends Event {
     @Description("The PNG's absolute path")
     String file;
 
-    @Label("Width")
-    @Description("Pixels across")
-    int width;
-
-    @Label("Height")
-    @Description("Pixels down")
-    int height;
-
     @Label("Size")
     @Description("The PNG file's size; -1 when it could not be read back")
     @DataAmount(DataAmount.BYTES)
     long bytes;
-
-    /** Begins the event: made just before the write, and only when {@link FlightRecorder#isInitialized()}. */
-    ImageWriteEvent() {
-        begin();
-    }
 
     /**
      * Ends the event once the PNG is in place, fills it in and commits it, if a recording asks for it.
@@ -59,8 +42,7 @@ final class ImageWriteEvent extends Event {
      * @param writerName the writer's name; null for a writer made without one (the file's stem is used)
      */
     void commit(String writerName, Path file, int width, int height) {
-        end();
-        if (!shouldCommit()) return;
+        if (!ended()) return;
         String fileName = file.getFileName().toString();
         this.image = writerName != null ? writerName
                 : fileName.endsWith(".png") ? fileName.substring(0, fileName.length() - ".png".length()) : fileName;

@@ -16,7 +16,6 @@ import java.util.Objects;
 
 import javax.imageio.ImageIO;
 
-import jdk.jfr.FlightRecorder;
 
 import primitives.Color;
 import primitives.CourseClassGuard;
@@ -392,7 +391,7 @@ public class ImageWriter {
      *                              exits during the write
      */
     public void writeToImage(Path file) {
-        ImageWriteEvent event = FlightRecorder.isInitialized() ? new ImageWriteEvent() : null; // see RenderEvent
+        ImageWriteEvent event = ImageEvent.recording() ? new ImageWriteEvent() : null; // see RenderEvent
         // A view of the pixel buffer, not a copy: TYPE_INT_RGB's own layout (0xRRGGBB ints, row
         // by row), so writing needs no second image's worth of memory.
         DirectColorModel rgb = new DirectColorModel(24, 0xFF0000, 0x00FF00, 0x0000FF);

@@ -1,9 +1,6 @@
 package renderer;
 
-import jdk.jfr.Category;
 import jdk.jfr.Description;
-import jdk.jfr.Event;
-import jdk.jfr.FlightRecorder;
 import jdk.jfr.Label;
 import jdk.jfr.Name;
 import jdk.jfr.Timespan;
@@ -13,19 +10,14 @@ import jdk.jfr.Timespan;
  * profiler, which records with JFR) shows each render on the timeline with what it rendered.
  * Its duration covers the scene's preparation and the render loop, not the PNG write.
  * <p>The camera makes one only once the flight recorder is initialised in this JVM (a recording
- * was started, by {@code -XX:StartFlightRecording}, {@code jcmd}, a profiler or the JFR API):
- * the first JFR event class a JVM initialises sets up JFR's machinery, hundreds of classes and
- * longer than a small render, and that must not fall on every first render. With the recorder
- * initialised but no recording asking for the event, {@link #commit(String, String, ImageWriter,
- * AntiAliasing, RenderStats)} does nothing. The PNG write is an event of its own,
- * {@link ImageWriteEvent}.
+ * was started, by {@code -XX:StartFlightRecording}, {@code jcmd}, a profiler or the JFR API), for
+ * the reason {@link ImageEvent} gives. The PNG write is an event of its own, {@link ImageWriteEvent}.
  */
 @Name(RenderEvent.NAME)
 @Label("Render")
-@Category("Ray Tracer")
 @Description("One Camera.render(): the image, its scene, sampling, threads and rays; the duration covers the scene's "
         + "preparation (BVH build) and the render loop, not the PNG write")
-final class RenderEvent extends Event {
+final class RenderEvent extends ImageEvent {
     /** The event's name in a recording (for {@code jfr print --events}). */
     static final String NAME = "raytracer.Render";
 
@@ -36,14 +28,6 @@ final class RenderEvent extends Event {
     @Label("Scene")
     @Description("The name of the scene rendered")
     String scene;
-
-    @Label("Width")
-    @Description("Pixels across")
-    int width;
-
-    @Label("Height")
-    @Description("Pixels down")
-    int height;
 
     @Label("Sampling")
     @Description("The anti-aliasing mode: NONE, RANDOM, CORNERS or ADAPTIVE")
@@ -68,18 +52,9 @@ final class RenderEvent extends Event {
     @Description("Reflected and refracted rays")
     long secondaryRays;
 
-    /**
-     * Begins the event: made just before the render, and only when
-     * {@link FlightRecorder#isInitialized()} (see the class comment).
-     */
-    RenderEvent() {
-        begin();
-    }
-
     /** Ends the event, fills in what the render did and commits it, if a recording asks for it. */
     void commit(String image, String scene, ImageWriter writer, AntiAliasing sampling, RenderStats stats) {
-        end();
-        if (!shouldCommit()) return;
+        if (!ended()) return;
         this.image = image;
         this.scene = scene;
         this.width = writer.getNx();
