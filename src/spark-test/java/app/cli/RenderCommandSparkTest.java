@@ -68,7 +68,7 @@ class RenderCommandSparkTest {
         assertThat(spark.exitCode()).as(spark.err()).isZero();
         assertThat(Files.readAllBytes(dir.resolve("spark.png"))).isEqualTo(Files.readAllBytes(dir.resolve("local.png")));
         assertThat(spark.out()).contains("spark render spark-test-one: 100.0%  2/2 tiles")
-                .contains("spark render spark-test-one 70x35 [RANDOM 2x3, ").contains("1 executor, 2 tasks, 0 retries")
+                .containsPattern("spark render spark-test-one: \\d+\\.\\d+ s, 70x35 \\[RANDOM 2x3, ").contains("1 executor, 2 tasks, 0 retries")
                 .contains("wrote " + dir.resolve("spark.png"));
         assertThat(spark.err()).isEmpty();
     }

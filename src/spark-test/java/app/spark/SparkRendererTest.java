@@ -236,7 +236,7 @@ class SparkRendererTest {
         assertThat(lines.subList(0, 4)).allMatch(l -> l.matches(
                 "spark render showcase: +\\d+\\.\\d%  \\d+/24 tiles  elapsed \\d+\\.\\d s  ETA \\d+\\.\\d s"), "progress lines");
         assertThat(lines.get(3)).contains("100.0%  24/24 tiles");
-        assertThat(lines.get(4)).startsWith("spark render showcase 83x61 [ADAPTIVE depth 3 threshold 8.0, ")
+        assertThat(lines.get(4)).matches("spark render showcase: \\d+\\.\\d+ s, 83x61 \\[ADAPTIVE depth 3 threshold 8\\.0, .*")
                 .contains(" 24 tiles ", "1 executor, 24 tasks, 0 retries");
     }
 

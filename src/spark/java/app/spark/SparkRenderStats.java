@@ -60,13 +60,25 @@ public record SparkRenderStats(double seconds, int frames, long pixels, int tile
         return sum;
     }
 
+    /** @return the figures: {@code 25.400 s, 360000 px, 100 tiles (…), 3.10 Mrays/s, 1 executor, 100 tasks, 0 retries} */
     @Override
     public String toString() {
+        return summary(null);
+    }
+
+    /**
+     * The figures with {@code frame} after the time, as the camera's summary line has them
+     * ({@code render NAME: TIME, WxH [settings] …}).
+     *
+     * @param frame the one frame's size and settings in words; null for a job of several frames
+     * @return the time, the frame, then the other figures
+     */
+    String summary(String frame) {
         return String.format(Locale.ROOT,
-                "%.3f s, %d px, %d tiles (tile time median %.3f s, p90 %.3f s, max %.3f s, sum %.3f s), %.2f Mrays/s,"
+                "%.3f s%s, %d px, %d tiles (tile time median %.3f s, p90 %.3f s, max %.3f s, sum %.3f s), %.2f Mrays/s,"
                         + " %d executor%s, %d task%s, %d retr%s",
-                seconds, pixels, tiles, tileQuantile(0.5), tileQuantile(0.9), tileQuantile(1), tileSum(),
-                seconds > 0 ? rays / seconds / 1e6 : 0,
+                seconds, frame == null ? "" : ", " + frame, pixels, tiles, tileQuantile(0.5), tileQuantile(0.9),
+                tileQuantile(1), tileSum(), seconds > 0 ? rays / seconds / 1e6 : 0,
                 executors, executors == 1 ? "" : "s", tasks, tasks == 1 ? "" : "s", retries, retries == 1 ? "y" : "ies");
     }
 }

@@ -256,8 +256,8 @@ public final class SparkRenderer {
                 broadcastBytes, monitor.executors(), monitor.attempts(), monitor.retries(), tileSeconds);
         if (summary) {
             RenderSettings s = frames.get(0).settings();
-            out.println(label + (frames.size() == 1 ? " " + s.width() + "x" + s.height() + " [" + frames.get(0).describe() + "]" : "")
-                    + ": " + stats);
+            out.println(label + ": " + stats.summary(frames.size() == 1 ? s.width() + "x" + s.height() + " ["
+                    + frames.get(0).describe() + "]" : null));
         }
         return stats;
     }
