@@ -783,7 +783,7 @@ public final class Camera {
             View view = view();
             RayTracerBase tracer = tracer();
             // Before the image is allocated: a refused budget costs no memory.
-            SamplerPlan plan = withinBudget(view, tracer);
+            SamplerPlan plan = withinBudget(view.lens(), tracer);
             ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
             return new Camera(view, sampling, execution(plan), tracer, writer, imageWriter == null, summary, renderListener);
         }
@@ -795,7 +795,7 @@ public final class Camera {
         RegionRenderer regionRenderer() {
             View view = view();
             RayTracerBase tracer = tracer();
-            SamplerPlan plan = withinBudget(view, tracer);
+            SamplerPlan plan = withinBudget(view.lens(), tracer);
             String name = imageWriter != null && imageWriter.hasName() ? imageWriter.getImageName() : "region";
             return new RegionRenderer(view, sampling, execution(plan), tracer, name);
         }
@@ -809,13 +809,22 @@ public final class Camera {
         String describeChecked() {
             View view = view();
             RayTracerBase tracer = tracer();
-            withinBudget(view, tracer);
+            withinBudget(view.lens(), tracer);
             return describe(sampling, view.lens(), tracer);
         }
 
-        /** The sampling's plan for {@code view}, its ray budget held with {@code tracer}. */
-        private SamplerPlan withinBudget(View view, RayTracerBase tracer) {
-            SamplerPlan plan = sampling.plan(!view.lens().isPinhole());
+        /**
+         * Holds the settings to the ray budget as {@link #build()} does, with no view: the budget
+         * depends on the sampling, the lens, the tracer and its scene's lights alone (see
+         * {@link CameraReports#requireRayBudget(Builder)}).
+         */
+        void requireRayBudget() {
+            withinBudget(lens, tracer());
+        }
+
+        /** The sampling's plan under {@code lens}, its ray budget held with {@code tracer}. */
+        private SamplerPlan withinBudget(View.Lens lens, RayTracerBase tracer) {
+            SamplerPlan plan = sampling.plan(!lens.isPinhole());
             tracer.requireRayBudget(plan);
             return plan;
         }

@@ -54,4 +54,16 @@ public final class CameraReports {
     public static String describe(Camera.Builder camera) {
         return camera.describeChecked();
     }
+
+    /**
+     * Holds a builder's settings to the ray budget its {@code build()} holds them to, before any
+     * view is set: the budget depends on the sampling, the lens, the tracer and its scene's lights
+     * alone. How a scene file's or a command line's settings are checked, replayed onto a builder.
+     *
+     * @param camera the builder whose settings are checked
+     * @throws IllegalArgumentException as {@link Camera.Builder#build()} for a budget exceeded, with its message
+     */
+    public static void requireRayBudget(Camera.Builder camera) {
+        camera.requireRayBudget();
+    }
 }

@@ -38,16 +38,6 @@ public record AntiAliasingSpec(AntiAliasing mode, Integer columns, Integer rows,
         }
     }
 
-    /** The stated values over {@code s}, each part checked by the library's rule. */
-    Sampling over(Sampling s) {
-        if (mode != null) s = s.withAntiAliasing(mode);
-        if (columns != null) s = s.withGrid(columns, rows);
-        if (depth != null || threshold != null)
-            s = s.withAdaptive(depth != null ? depth : s.adaptive().depth(),
-                    threshold != null ? threshold : s.adaptive().threshold());
-        return s;
-    }
-
     void describe(StringJoiner out) {
         Stated.add(out, "antiAliasing", mode);
         Stated.add(out, "grid", columns == null ? null : columns + "x" + rows);

@@ -3,7 +3,6 @@ package scene.io;
 import java.util.StringJoiner;
 
 import renderer.Camera;
-import renderer.View;
 
 /**
  * The thin lens and its samples per pixel.
@@ -33,11 +32,6 @@ public record LensSpec(Double focalDistance, Double aperture, Integer samples) i
             else camera.setDepthOfField(focalDistance, aperture);
         }
         if (samples != null) camera.setDepthOfFieldSamples(samples);
-    }
-
-    /** @return the stated lens by the library's rule: the pinhole when none is stated or its focal distance is 0 */
-    View.Lens lens() {
-        return focalDistance == null || focalDistance == 0 ? View.Lens.PINHOLE : View.Lens.thin(focalDistance, aperture);
     }
 
     void describe(StringJoiner out) {

@@ -6,35 +6,27 @@ import java.util.StringJoiner;
 import primitives.Color;
 import renderer.AntiAliasing;
 import renderer.Camera;
+import renderer.CameraReports;
 import renderer.ImageWriter;
 import renderer.ImageWriters;
 import renderer.RayBudget;
 import renderer.RayTracerBasic;
-import renderer.Sampling;
-import renderer.View;
 import scene.Scene;
 
 /**
  * How a scene file or a command line asks for a render: a specification that records only the
- * values it was given, and replays them onto a {@link Camera.Builder} and its
- * {@link RayTracerBasic} ({@link #applyTo(Camera.Builder, Scene, ImageWriter) applyTo}). A value
- * it does not state is the library's: the defaults and limits of the sampling, the tracer and the
- * ray budget exist once, in the builder and the tracer, whose setters check each value as it is
- * replayed and whose {@code build()} checks the ray budget.
+ * values it was given, and replays them onto a {@link Camera.Builder} and its {@link RayTracerBasic}
+ * ({@link #replay(Camera.Builder, Scene) replay}): a value it does not state is the library's, and
+ * the limits, the ray budget included, are the builder's and the tracer's own checks.
  *
- * <p>The image and the thread count are the scene format's own (the library's image has no
- * default size, and the builder's default thread, the calling one, is the course's): a
- * specification that does not state them renders {@value #DEFAULT_SIZE}×{@value #DEFAULT_SIZE}
- * pixels without a grid, on all cores. The image size is checked when it is stated, without
- * allocating; the image is allocated only when asked for ({@link #newImageWriter()}).
- *
- * <p>A command line's options are a second specification, replayed after the file's:
- * {@code file.then(options)} states what the options state, and the file's values elsewhere.
+ * <p>The image and the thread count are the scene format's own: a specification that does not
+ * state them renders {@value #DEFAULT_SIZE}×{@value #DEFAULT_SIZE} pixels without a grid, on all
+ * cores. The image is allocated only when asked for ({@link #newImageWriter()}). A command
+ * line's options are a second specification replayed after the file's: {@code file.then(options)}.
  *
  * <p>A record of its parts, each a record of what it states (null: not stated): equality, hashing
- * and serialization are the parts' (a deserialized copy goes through the same checks, the
- * records' constructors). Each {@code with…} method states its values on a copy; a cluster's driver
- * sends the specification it resolved to its executors.
+ * and serialization are the parts' (a deserialized copy goes through the records' checks). Each
+ * {@code with…} method states its values on a copy; a cluster's driver sends the result to its executors.
  *
  * @param image        the image's name and size
  * @param grid         the grid drawn over the image
@@ -292,20 +284,15 @@ public record RenderSettings(ImageSpec image, GridSpec grid, AntiAliasingSpec an
     /**
      * Checks that {@code name} names a file in images/ and nothing else: a scene file must not
      * choose where on disk its image goes (only the command line's {@code -o} does). The rule is
-     * the image writer's, which names the files.
+     * the image writer's, which names the files ({@link ImageWriters#requireFileName(String)}:
+     * no path separator, drive colon or {@code ..}, at most {@link #MAX_IMAGE_NAME_LENGTH}
+     * characters, none that would not show as what it is).
      *
      * @param name the image name, without ".png"
      * @return {@code name}
      * @throws NullPointerException     for a null name
-     * @throws IllegalArgumentException for a blank name, one longer than
-     *                                  {@link #MAX_IMAGE_NAME_LENGTH}, or one with a path separator
-     *                                  ({@code /} or {@code \}), a drive colon or {@code ..},
-     *                                  naming it; for one with a character that would not show
-     *                                  as what it is ({@link Messages#hidden}: control, format and
-     *                                  bidirectional characters, separators and spaces other than
-     *                                  U+0020, private-use and unassigned code points, Unicode's
-     *                                  default-ignorable characters such as the Hangul fillers, the
-     *                                  blank braille pattern), naming its code point and its kind
+     * @throws IllegalArgumentException for a name the rule refuses, naming it (and a hidden
+     *                                  character's code point and kind)
      */
     public static String requireImageName(String name) {
         return ImageWriters.requireFileName(name);
@@ -372,11 +359,11 @@ public record RenderSettings(ImageSpec image, GridSpec grid, AntiAliasingSpec an
 
     /**
      * Checks this specification against the library's ray budget for {@code scene}, as
-     * {@code Camera.Builder.build()} will for a camera over that scene when it is replayed: the
-     * stated values over the library's defaults, by the library's rule
-     * ({@link RayBudget#require(renderer.AntiAliasing, long, int, int, java.util.Collection)}; the budget
-     * depends on the sampling, the lens, the tracer and the scene's lights, not on the view: a
-     * light with a radius takes the shadow samples at each shaded point, every other light one ray).
+     * {@code Camera.Builder.build()} will for a camera over that scene: replayed onto a new builder
+     * ({@link #replay(Camera.Builder, Scene)}), whose budget is checked with no view
+     * ({@link CameraReports#requireRayBudget(Camera.Builder)}); the budget depends on the
+     * sampling, the lens, the tracer and the scene's lights (a light with a radius takes the shadow
+     * samples at each shaded point, every other light one ray).
      *
      * @param scene the scene the settings will render: only its lights are read
      * @return this specification
@@ -385,13 +372,7 @@ public record RenderSettings(ImageSpec image, GridSpec grid, AntiAliasingSpec an
      *                                  among them (each value alone was checked when it was stated)
      */
     public RenderSettings requireRayBudget(Scene scene) {
-        // Threads are not the budget's: the file's reader and the command line check them as they are stated.
-        Sampling sampling = antiAliasing.over(Sampling.DEFAULT);
-        if (lens.samples() != null) sampling = sampling.withLensSamples(lens.samples());
-        if (seed != null) sampling = sampling.withSeed(seed);
-        RayBudget.require(sampling.antiAliasing(), sampling.maxSamplesPerPixel(!lens.lens().isPinhole()),
-                tracer.beamSize() != null ? tracer.beamSize() : RayTracerBasic.DEFAULT_BEAM_SIZE,
-                tracer.shadowSamples() != null ? tracer.shadowSamples() : RayTracerBasic.DEFAULT_SHADOW_SAMPLES, scene.lights);
+        CameraReports.requireRayBudget(replay(Camera.getBuilder(), scene));
         return this;
     }
 
