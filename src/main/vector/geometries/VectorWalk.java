@@ -157,6 +157,7 @@ final class VectorWalk implements WideWalk {
         double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
         double[] entries = hit.lanes;
         int[] lanes = hit.laneOrder;
+        double[] packed = tree.packed();
         boolean found = false;
         int top = 0, w = 0;
         while (true) {
@@ -198,7 +199,10 @@ final class VectorWalk implements WideWalk {
                     w = link;
                     break;
                 }
-                found |= tree.closestInLeaf(link, count, hit);
+                // A leaf of triangles in lanes: one vector step (its distances over the entries,
+                // which are read no more at this node); any other leaf, in scalar code.
+                found |= count < 0 ? VectorTriangles.closest(tree, packed, link, -count, hit, entries)
+                        : tree.closestInLeaf(link, count, hit);
                 item = -1;
             }
         }
@@ -210,6 +214,7 @@ final class VectorWalk implements WideWalk {
         double ox = query.ox, oy = query.oy, oz = query.oz;
         double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
         double[] entries = query.lanes;
+        double[] packed = tree.packed();
         double bound = Bvh.limit(limit);
         int top = 0, w = 0;
         while (true) {
@@ -225,7 +230,8 @@ final class VectorWalk implements WideWalk {
                     w = link;
                     break;
                 }
-                if (!tree.visitInLeaf(link, count, query, maxDistance, visitor)) return false;
+                if (count < 0 ? !VectorTriangles.visit(tree, packed, link, -count, query, maxDistance, visitor, entries)
+                        : !tree.visitInLeaf(link, count, query, maxDistance, visitor)) return false;
             }
         }
     }
