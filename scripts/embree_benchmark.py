@@ -195,6 +195,7 @@ def main() -> int:
     parser.add_argument("--no-build", action="store_true", help="skip `mvn -q -Pbench compile`")
     parser.add_argument("--java", default="java", help="the java command the library runs on (default: java on the PATH)")
     parser.add_argument("--walks", default="scalar,vector", help="the library's walks to run: scalar, vector (default both)")
+    parser.add_argument("--threads", default="1,2", help="the rows to run: 1 (one thread), 2 (two), or both (default 1,2)")
     parser.add_argument("--out", type=Path, default=OUT / "table.md", help="where the Markdown table goes")
     parser.add_argument("--embree-child", help=argparse.SUPPRESS)
     args = parser.parse_args()
@@ -226,7 +227,7 @@ def main() -> int:
             "|---|--:|--:|---|--:|--:|--:|--:|--:|---|--:|--:|--:|"]
     for name in args.meshes.split(","):
         mesh_file, rays_file, vertices, faces, origins, dirs = files(name)
-        for threads, cpus in ((1, "0"), (2, "0,1")):
+        for threads, cpus in ((t, c) for t, c in ((1, "0"), (2, "0,1")) if str(t) in args.threads.split(",")):
             emb = run_embree_pinned(name, cpus, args.passes)
             scalar_t = None
             for walk in walks:
