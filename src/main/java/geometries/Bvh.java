@@ -362,6 +362,11 @@ public final class Bvh extends Intersectable {
         return found;
     }
 
+    /** @return the wide nodes the vector walk reads, or null when this tree is walked in scalar code (for the tests) */
+    WideNodes wideNodes() {
+        return wide;
+    }
+
     /**
      * The packed numbers the leaves are tested from: a scalar leaf's as {@link BvhLeaf#pack}
      * writes them, a lane leaf's of a tree with wide nodes as {@link TriangleLanes} lays them out.
