@@ -163,15 +163,25 @@ final class VectorWalk implements WideWalk {
         while (true) {
             long bits = test(nd, w, ox, oy, oz, ix, iy, iz, Bvh.limit(hit.t), entries);
             int item = -1;
-            if ((bits & (bits - 1)) == 0) {
+            long rest = bits & (bits - 1); // the children hit but the first
+            if (rest == 0) {
                 // None or one child hit: nothing to order.
                 if (bits != 0) item = w * WIDTH + Long.numberOfTrailingZeros(bits);
+            } else if ((rest & (rest - 1)) == 0) {
+                // Two, the commonest case of several: one comparison instead of the sort (the
+                // nearer first, the first in lane order of equal entries, as the sort orders them).
+                int a = Long.numberOfTrailingZeros(bits), b = Long.numberOfTrailingZeros(rest);
+                boolean bFirst = entries[b] < entries[a];
+                int far = bFirst ? a : b;
+                stack[top] = w * WIDTH + far;
+                stackT[top++] = entries[far];
+                item = w * WIDTH + (bFirst ? b : a);
             } else {
-                // The children hit, nearest first (equal entries in lane order): an insertion
-                // sort of at most four. The nearest is visited now, the others pushed far first.
+                // Three or more children hit, nearest first (equal entries in lane order): an
+                // insertion sort of at most eight. The nearest is visited now, the others pushed far first.
                 int hits = 0;
-                for (long rest = bits; rest != 0; rest &= rest - 1) {
-                    int j = Long.numberOfTrailingZeros(rest);
+                for (long left = bits; left != 0; left &= left - 1) {
+                    int j = Long.numberOfTrailingZeros(left);
                     double e = entries[j];
                     int i = hits++;
                     while (i > 0 && entries[lanes[i - 1]] > e) {
