@@ -17,9 +17,11 @@ import jdk.incubator.vector.VectorSpecies;
  * The walks of a {@link Bvh}'s {@link WideNodes} with the Vector API: all children's boxes of a
  * node tested in one vector step, four children in 256-bit vectors, eight in 512-bit ones (where
  * the CPU has them and the JDK compiles their masks: measured on JDK 25, not on 17, whose 512-bit
- * masks are built as objects). The only class that names {@code jdk.incubator.vector};
- * {@link Vectorization} loads it, by name, only when that module is readable, so that a JVM
- * without it never links this class.
+ * masks are built as objects); a leaf of triangles laid out in lanes ({@link TriangleLanes}, a
+ * negative count in its node) is tested in one vector step too ({@link VectorTriangles}), any
+ * other leaf by the tree's scalar loop. With {@link VectorTriangles}, the only classes that name
+ * {@code jdk.incubator.vector}; {@link Vectorization} loads this one, by name, only when that
+ * module is readable, so that a JVM without it never links either.
  *
  * <p>Each lane computes exactly what the scalar {@link BoundingBox#entry} computes for that
  * child: the float bounds widened to double (exact), the same subtractions and products, and the
