@@ -110,8 +110,12 @@ final class VectorTriangles {
         // No bound here: within(t, max) is asked lane by lane; the vector step rules out the
         // leaves where no triangle is hit in front of the ray, most of them.
         if (!distances(s, first, count, query, Double.POSITIVE_INFINITY, scratch)) return true;
-        for (int j = 0; j < count; ++j)
-            if (!tree.visitTriangle(first + j, scratch[j], maxDistance, visitor)) return false;
-        return true;
+        // Read out before any visitor runs: one may query a tree with this record, whose walk
+        // writes the same scratch.
+        double t0 = scratch[0], t1 = scratch[1], t2 = scratch[2], t3 = scratch[3];
+        return tree.visitTriangle(first, t0, maxDistance, visitor)
+                && (count < 2 || tree.visitTriangle(first + 1, t1, maxDistance, visitor))
+                && (count < 3 || tree.visitTriangle(first + 2, t2, maxDistance, visitor))
+                && (count < 4 || tree.visitTriangle(first + 3, t3, maxDistance, visitor));
     }
 }
