@@ -197,6 +197,31 @@ class VectorTrianglesTest {
     }
 
     @Nested
+    @DisplayName("a visitor that walks the tree again with the same record")
+    class NestedVisit {
+        @Test
+        @DisplayName("sees the leaf's hits as a plain visitor does: the walk inside writes no distance the outer one still reads")
+        void sameVisits() {
+            Geometries g = new Geometries(BvhTest.gridMesh(30));
+            Bvh tree = Bvh.build(g, 1, 4096, true, VectorWalk.anyCpu());
+            int visits = 0;
+            for (Ray ray : RandomScenes.rays(new Random(54), 2000, new Point(15, 1, 15), 16)) {
+                Hit query = Hit.of(ray);
+                List<Double> plain = new ArrayList<>(), nested = new ArrayList<>();
+                tree.visitHits(query, Double.POSITIVE_INFINITY, (geometry, t) -> plain.add(t));
+                tree.visitHits(query, Double.POSITIVE_INFINITY, (geometry, t) -> {
+                    nested.add(t);
+                    tree.visitHits(query, Double.POSITIVE_INFINITY, (inner, u) -> true);
+                    return true;
+                });
+                assertThat(nested).as("visits for %s", ray).containsExactlyElementsOf(plain);
+                visits += plain.size();
+            }
+            assertThat(visits).as("visits (the test must not be vacuous)").isGreaterThan(500);
+        }
+    }
+
+    @Nested
     @TestInstance(TestInstance.Lifecycle.PER_CLASS)
     @DisplayName("ray by ray on the Embree benchmark's meshes: the vector walk's hit is the scalar walk's")
     class OnTheBenchmarkMeshes {
