@@ -28,7 +28,9 @@ public final class WalkCounts {
         double[] rays = MeshRays.readRays(Path.of(args[1]));
         int count = rays.length / 6, triangles = mesh.triangleCount();
 
-        Bvh bvh = Bvh.build(new Geometries(mesh), 1);
+        // The scalar walk's tree, whatever this JVM reads: with wide nodes, the leaves' packed
+        // numbers are laid out in lanes (TriangleLanes), which the scalar copy below does not read.
+        Bvh bvh = Bvh.build(new Geometries(mesh), 1, 4096, true, null);
         float[] node = field(bvh, "node");
         double[] packed = field(bvh, "packed");
         int nodeCount = bvh.nodeCount();

@@ -146,7 +146,9 @@ public final class Bvh extends Intersectable {
         // faster in scalar code (WideWalk.minPrimitives).
         boolean wideNodes = walk != null && nodeCount > 1 && prim.length >= walk.minPrimitives();
         this.walk = wideNodes ? walk : null;
-        wide = wideNodes ? WideNodes.collapse(node, nodeCount, walk.width()) : null;
+        wide = wideNodes ? WideNodes.collapse(node, nodeCount, walk.width(), kind) : null;
+        // The wide walk tests a leaf of triangles in one vector step: its numbers in lanes.
+        if (wideNodes && packed.length > 0) TriangleLanes.arrange(node, nodeCount, kind, packed);
     }
 
     /**
@@ -212,8 +214,9 @@ public final class Bvh extends Intersectable {
      * @return the tree's size in bytes, without the scene's own objects
      */
     public long indexBytes() {
+        // The packed records, without the few doubles of padding after them (TriangleLanes.PADDING).
         return BvhNodes.bytes(nodeCount) + (wide == null ? 0 : wide.bytes()) + prim.length * 9L
-                + packed.length * (long) Double.BYTES;
+                + (packed.length == 0 ? 0 : prim.length * (long) PACKED * Double.BYTES);
     }
 
     /** @return the number of unbounded geometries tested beside the tree */
@@ -357,6 +360,47 @@ public final class Bvh extends Intersectable {
             }
         }
         return found;
+    }
+
+    /** @return the wide nodes the vector walk reads, or null when this tree is walked in scalar code (for the tests) */
+    WideNodes wideNodes() {
+        return wide;
+    }
+
+    /**
+     * The packed numbers the leaves are tested from: a scalar leaf's as {@link BvhLeaf#pack}
+     * writes them, a lane leaf's of a tree with wide nodes as {@link TriangleLanes} lays them out.
+     * For the wide walk's test of a lane leaf.
+     */
+    double[] packed() {
+        return packed;
+    }
+
+    /**
+     * Primitive {@code k}, a triangle of a lane leaf, hit at {@code t} (NaN: missed), offered to
+     * {@code hit} with {@link #closestInLeaf}'s rule, word for word: taken when nearer, or as
+     * near and first in leaf order. For the wide walk, which computes a leaf's distances together
+     * and offers them in leaf order, as the scalar loop meets them.
+     *
+     * @return whether {@code hit} now holds it
+     */
+    boolean offerTriangle(int k, double t, Hit hit) {
+        if (inRange(t, hit.t) || t == hit.t && k < hit.order) {
+            hit.set(t, (Geometry) owner[k], prim[k]);
+            hit.order = k;
+            return true;
+        }
+        return false;
+    }
+
+    /**
+     * Primitive {@code k}, a triangle of a lane leaf, hit at {@code t} (NaN: missed), given to
+     * {@code visitor} when within {@code maxDistance}: {@link #visitInLeaf}'s rule for a triangle.
+     *
+     * @return false when the visitor stopped the walk
+     */
+    boolean visitTriangle(int k, double t, double maxDistance, HitVisitor visitor) {
+        return !within(t, maxDistance) || visitor.visit((Geometry) owner[k], t);
     }
 
     /**

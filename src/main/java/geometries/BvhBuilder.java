@@ -201,7 +201,9 @@ final class BvhBuilder {
         b.owner = ordered;
         b.prim = orderedPrim;
         byte[] kind = new byte[total];
-        double[] packed = new double[packs[0] ? total * BvhLeaf.PACKED : 0];
+        // A few doubles more than the records: a tree with wide nodes loads its lane leaves four
+        // doubles at a time, and the last leaf's last load reaches past the records (TriangleLanes).
+        double[] packed = new double[packs[0] ? total * BvhLeaf.PACKED + TriangleLanes.PADDING : 0];
         if (packs[0]) {
             // In slot order, that is the scene's order, in which its objects were most likely
             // made: the objects are read one after the other, the packed records written at

@@ -22,8 +22,9 @@ import java.util.Arrays;
  * +∞, as the scalar test's miss is);</li>
  * <li>{@code width} floats, as raw int bits: per child, an inner child's wide node, a leaf
  * child's first primitive (in the tree's leaf order);</li>
- * <li>{@code width} floats, as raw int bits: per child, a leaf's primitive count (&gt; 0), 0 for
- * an inner child or an empty slot.</li>
+ * <li>{@code width} floats, as raw int bits: per child, a leaf's primitive count, positive for a
+ * leaf in the scalar layout, negative for a leaf of triangles laid out in lanes
+ * ({@link TriangleLanes}), 0 for an inner child or an empty slot.</li>
  * </ul>
  * A child is addressed as {@code w · width + lane}, the walks' stack entries.
  */
@@ -72,7 +73,10 @@ final class WideNodes {
         return Float.floatToRawIntBits(nd[BASE + (item >>> shift) * 8 * width + LINK * width + (item & (width - 1))]);
     }
 
-    /** @return child {@code item}'s primitive count: &gt; 0 for a leaf, 0 for an inner child (as {@link #link}) */
+    /**
+     * @return child {@code item}'s primitive count (as {@link #link}): &gt; 0 for a leaf in the
+     *         scalar layout, −count for a leaf of triangles in lanes, 0 for an inner child
+     */
     static int count(float[] nd, int item, int shift) {
         int width = 1 << shift;
         return Float.floatToRawIntBits(nd[BASE + (item >>> shift) * 8 * width + COUNT * width + (item & (width - 1))]);
@@ -91,9 +95,11 @@ final class WideNodes {
     /**
      * Collapses the binary tree {@code binary} of {@code nodes} records (root at 0, not a leaf)
      * into nodes of {@code width} children (a power of two, 2 … {@link #MAX_WIDTH}); the binary
-     * root's box stays the walks' first test.
+     * root's box stays the walks' first test. A leaf that {@link TriangleLanes#fits} by the
+     * primitives' {@code kind} gets a negative count: the tree lays it out in lanes
+     * ({@link TriangleLanes#arrange}); with {@code kind} null none does.
      */
-    static WideNodes collapse(float[] binary, int nodes, int width) {
+    static WideNodes collapse(float[] binary, int nodes, int width, byte[] kind) {
         if (width < 2 || width > MAX_WIDTH || Integer.bitCount(width) != 1)
             throw new IllegalArgumentException("a wide node holds 2, 4 or 8 children, not " + width);
         // At most one wide node per inner binary node: the count bounds the records.
@@ -122,8 +128,10 @@ final class WideNodes {
                 }
                 int count = BvhNodes.count(binary, rec);
                 if (count > 0) {
-                    out[at + LINK * width + j] = Float.intBitsToFloat(BvhNodes.first(binary, rec));
-                    out[at + COUNT * width + j] = Float.intBitsToFloat(count);
+                    int first = BvhNodes.first(binary, rec);
+                    boolean lanes = kind != null && TriangleLanes.fits(kind, first, count);
+                    out[at + LINK * width + j] = Float.intBitsToFloat(first);
+                    out[at + COUNT * width + j] = Float.intBitsToFloat(lanes ? -count : count);
                 } else {
                     int child = made++;
                     out[at + LINK * width + j] = Float.intBitsToFloat(child);

@@ -17,9 +17,11 @@ import jdk.incubator.vector.VectorSpecies;
  * The walks of a {@link Bvh}'s {@link WideNodes} with the Vector API: all children's boxes of a
  * node tested in one vector step, four children in 256-bit vectors, eight in 512-bit ones (where
  * the CPU has them and the JDK compiles their masks: measured on JDK 25, not on 17, whose 512-bit
- * masks are built as objects). The only class that names {@code jdk.incubator.vector};
- * {@link Vectorization} loads it, by name, only when that module is readable, so that a JVM
- * without it never links this class.
+ * masks are built as objects); a leaf of triangles laid out in lanes ({@link TriangleLanes}, a
+ * negative count in its node) is tested in one vector step too ({@link VectorTriangles}), any
+ * other leaf by the tree's scalar loop. With {@link VectorTriangles}, the only classes that name
+ * {@code jdk.incubator.vector}; {@link Vectorization} loads this one, by name, only when that
+ * module is readable, so that a JVM without it never links either.
  *
  * <p>Each lane computes exactly what the scalar {@link BoundingBox#entry} computes for that
  * child: the float bounds widened to double (exact), the same subtractions and products, and the
@@ -157,20 +159,31 @@ final class VectorWalk implements WideWalk {
         double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
         double[] entries = hit.lanes;
         int[] lanes = hit.laneOrder;
+        double[] packed = tree.packed();
         boolean found = false;
         int top = 0, w = 0;
         while (true) {
             long bits = test(nd, w, ox, oy, oz, ix, iy, iz, Bvh.limit(hit.t), entries);
             int item = -1;
-            if ((bits & (bits - 1)) == 0) {
+            long rest = bits & (bits - 1); // the children hit but the first
+            if (rest == 0) {
                 // None or one child hit: nothing to order.
                 if (bits != 0) item = w * WIDTH + Long.numberOfTrailingZeros(bits);
+            } else if ((rest & (rest - 1)) == 0) {
+                // Two, the commonest case of several: one comparison instead of the sort (the
+                // nearer first, the first in lane order of equal entries, as the sort orders them).
+                int a = Long.numberOfTrailingZeros(bits), b = Long.numberOfTrailingZeros(rest);
+                boolean bFirst = entries[b] < entries[a];
+                int far = bFirst ? a : b;
+                stack[top] = w * WIDTH + far;
+                stackT[top++] = entries[far];
+                item = w * WIDTH + (bFirst ? b : a);
             } else {
-                // The children hit, nearest first (equal entries in lane order): an insertion
-                // sort of at most four. The nearest is visited now, the others pushed far first.
+                // Three or more children hit, nearest first (equal entries in lane order): an
+                // insertion sort of at most eight. The nearest is visited now, the others pushed far first.
                 int hits = 0;
-                for (long rest = bits; rest != 0; rest &= rest - 1) {
-                    int j = Long.numberOfTrailingZeros(rest);
+                for (long left = bits; left != 0; left &= left - 1) {
+                    int j = Long.numberOfTrailingZeros(left);
                     double e = entries[j];
                     int i = hits++;
                     while (i > 0 && entries[lanes[i - 1]] > e) {
@@ -198,7 +211,10 @@ final class VectorWalk implements WideWalk {
                     w = link;
                     break;
                 }
-                found |= tree.closestInLeaf(link, count, hit);
+                // A leaf of triangles in lanes: one vector step (its distances over the entries,
+                // which are read no more at this node); any other leaf, in scalar code.
+                found |= count < 0 ? VectorTriangles.closest(tree, packed, link, -count, hit, entries)
+                        : tree.closestInLeaf(link, count, hit);
                 item = -1;
             }
         }
@@ -210,6 +226,7 @@ final class VectorWalk implements WideWalk {
         double ox = query.ox, oy = query.oy, oz = query.oz;
         double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
         double[] entries = query.lanes;
+        double[] packed = tree.packed();
         double bound = Bvh.limit(limit);
         int top = 0, w = 0;
         while (true) {
@@ -225,7 +242,8 @@ final class VectorWalk implements WideWalk {
                     w = link;
                     break;
                 }
-                if (!tree.visitInLeaf(link, count, query, maxDistance, visitor)) return false;
+                if (count < 0 ? !VectorTriangles.visit(tree, packed, link, -count, query, maxDistance, visitor, entries)
+                        : !tree.visitInLeaf(link, count, query, maxDistance, visitor)) return false;
             }
         }
     }

@@ -1,0 +1,121 @@
+package geometries;
+
+import jdk.incubator.vector.DoubleVector;
+import jdk.incubator.vector.VectorMask;
+import jdk.incubator.vector.VectorOperators;
+import jdk.incubator.vector.VectorSpecies;
+
+/**
+ * The Möller–Trumbore test of a leaf's triangles in one vector step, a triangle per lane, from
+ * the leaf layout of {@link TriangleLanes}: the {@link VectorWalk}'s leaf test.
+ *
+ * <p>Exact: each lane computes the doubles {@code Triangle.intersect} computes for its triangle,
+ * the same products, sums and quotient in the same order ({@code a·b + c·d + e·f} as
+ * {@code (a·b + c·d) + e·f}; no fused multiply-add, which the scalar kernel does not use), so a
+ * lane's distance is the scalar distance to the bit. Where the scalar kernel returns NaN early (a
+ * determinant or a barycentric coordinate out of its tolerance), the lane computes on and its
+ * distance is replaced by NaN at the end: the same answer. The distances are then offered to the
+ * hit (or the visitor) one by one in leaf order, by the tree's own scalar rule, so the winner,
+ * its distance and the tie rule are the scalar loop's ({@code VectorTrianglesTest}, ray by ray).
+ *
+ * <p>Four lanes whatever the node width (leaves hold at most four primitives): 256-bit vectors,
+ * which every CPU the vector walk runs on has.
+ */
+final class VectorTriangles {
+    private static final VectorSpecies<Double> LANES = DoubleVector.SPECIES_256;
+    /** {@code primitives.Util}'s zero tolerance, 2^-40: {@code isZero(x)} is {@code |x| < ZERO}. */
+    static final double ZERO = 0x1p-40;
+    /** Lane j holds j: the lanes at or past a leaf's count are not its triangles. */
+    private static final DoubleVector LANE_INDEX = DoubleVector.fromArray(LANES, new double[] { 0, 1, 2, 3 }, 0);
+    private static final DoubleVector NAN = DoubleVector.broadcast(LANES, Double.NaN);
+
+    static {
+        if (LANES.length() != TriangleLanes.LANES) throw new AssertionError("lanes " + LANES.length());
+    }
+
+    private VectorTriangles() {
+    }
+
+    /**
+     * The distances of the lane leaf of {@code count} triangles from {@code first} (its numbers in
+     * {@code s}, as {@link TriangleLanes} lays them out), NaN for a miss, into
+     * {@code out[0 … count)}; only when one of them may be a hit nearer than {@code bound}.
+     *
+     * @param bound the distance no hit is taken beyond (the current hit's, for a closest hit: a
+     *              tie at it may still win; +∞ for no bound)
+     * @return whether {@code out} was written: some triangle is hit at {@code t} with
+     *         {@code alignZero(t) > 0} and {@code t <= bound}
+     */
+    static boolean distances(double[] s, int first, int count, Hit ray, double bound, double[] out) {
+        // Number r of the leaf's triangles: row r, a lane per triangle.
+        DoubleVector ax = row(s, first, count, 0), ay = row(s, first, count, 1), az = row(s, first, count, 2);
+        DoubleVector e1x = row(s, first, count, 3), e1y = row(s, first, count, 4), e1z = row(s, first, count, 5);
+        DoubleVector e2x = row(s, first, count, 6), e2y = row(s, first, count, 7), e2z = row(s, first, count, 8);
+        double dx = ray.dx, dy = ray.dy, dz = ray.dz;
+        // Triangle.intersect, lane by lane, in its order. Products are commutative in IEEE
+        // arithmetic (dy·e2z is e2z·dy to the bit); only the grouping of sums matters, kept.
+        DoubleVector px = e2z.mul(dy).sub(e2y.mul(dz)), py = e2x.mul(dz).sub(e2z.mul(dx)),
+                pz = e2y.mul(dx).sub(e2x.mul(dy));
+        DoubleVector det = e1x.mul(px).add(e1y.mul(py)).add(e1z.mul(pz));
+        // isZero(det): |det| < 2^-40 (NaN is not zero, and computes on as the scalar kernel does).
+        VectorMask<Double> miss = det.abs().compare(VectorOperators.LT, ZERO);
+        DoubleVector inv = DoubleVector.broadcast(LANES, 1.0).div(det);
+        DoubleVector tx = DoubleVector.broadcast(LANES, ray.ox).sub(ax), ty = DoubleVector.broadcast(LANES, ray.oy).sub(ay),
+                tz = DoubleVector.broadcast(LANES, ray.oz).sub(az);
+        DoubleVector u = tx.mul(px).add(ty.mul(py)).add(tz.mul(pz)).mul(inv);
+        // alignZero(u) <= 0 is u < 2^-40, and alignZero(u - 1) >= 0 is u - 1 > -2^-40: for every
+        // double, NaN included (false both ways), -0.0 and the tolerance's edges (TriangleLanesTest).
+        miss = miss.or(u.compare(VectorOperators.LT, ZERO)).or(u.sub(1.0).compare(VectorOperators.GT, -ZERO));
+        DoubleVector qx = e1z.mul(ty).sub(e1y.mul(tz)), qy = e1x.mul(tz).sub(e1z.mul(tx)),
+                qz = e1y.mul(tx).sub(e1x.mul(ty));
+        DoubleVector v = qx.mul(dx).add(qy.mul(dy)).add(qz.mul(dz)).mul(inv);
+        miss = miss.or(v.compare(VectorOperators.LT, ZERO)).or(u.add(v).sub(1.0).compare(VectorOperators.GT, -ZERO));
+        DoubleVector t = e2x.mul(qx).add(e2y.mul(qy)).add(e2z.mul(qz)).mul(inv).blend(NAN, miss);
+        // A hit the caller may take: alignZero(t) > 0 (t >= 2^-40) and t <= bound, in a lane of the leaf.
+        VectorMask<Double> may = t.compare(VectorOperators.GE, ZERO).and(t.compare(VectorOperators.LE, bound))
+                .and(LANE_INDEX.compare(VectorOperators.LT, (double) count));
+        if (!may.anyTrue()) return false;
+        t.intoArray(out, 0);
+        return true;
+    }
+
+    /** @return number {@code r} of the lane leaf's triangles, a lane each (lanes past the count: whatever follows) */
+    private static DoubleVector row(double[] s, int first, int count, int r) {
+        return DoubleVector.fromArray(LANES, s, TriangleLanes.row(first, count, r));
+    }
+
+    /**
+     * The closest-hit test of the lane leaf of {@code count} triangles from {@code first}: each
+     * distance offered to {@code hit} in leaf order by the tree's rule ({@link Bvh#offerTriangle}).
+     *
+     * @param scratch room for {@link TriangleLanes#LANES} distances
+     * @return whether a triangle of the leaf now holds the hit
+     */
+    static boolean closest(Bvh tree, double[] s, int first, int count, Hit hit, double[] scratch) {
+        if (!distances(s, first, count, hit, hit.t, scratch)) return false;
+        boolean found = false;
+        for (int j = 0; j < count; ++j) found |= tree.offerTriangle(first + j, scratch[j], hit);
+        return found;
+    }
+
+    /**
+     * The any-hit visit of the lane leaf: each hit within {@code maxDistance} to {@code visitor}
+     * in leaf order ({@link Bvh#visitTriangle}).
+     *
+     * @param scratch room for {@link TriangleLanes#LANES} distances
+     * @return false when the visitor stopped the walk
+     */
+    static boolean visit(Bvh tree, double[] s, int first, int count, Hit query, double maxDistance, HitVisitor visitor,
+                         double[] scratch) {
+        // No bound here: within(t, max) is asked lane by lane; the vector step rules out the
+        // leaves where no triangle is hit in front of the ray, most of them.
+        if (!distances(s, first, count, query, Double.POSITIVE_INFINITY, scratch)) return true;
+        // Read out before any visitor runs: one may query a tree with this record, whose walk
+        // writes the same scratch.
+        double t0 = scratch[0], t1 = scratch[1], t2 = scratch[2], t3 = scratch[3];
+        return tree.visitTriangle(first, t0, maxDistance, visitor)
+                && (count < 2 || tree.visitTriangle(first + 1, t1, maxDistance, visitor))
+                && (count < 3 || tree.visitTriangle(first + 2, t2, maxDistance, visitor))
+                && (count < 4 || tree.visitTriangle(first + 3, t3, maxDistance, visitor));
+    }
+}
