@@ -98,8 +98,7 @@ public record RenderSettings(ImageSpec image, GridSpec grid, AntiAliasingSpec an
      * @param width  image width in pixels, at least 1
      * @param height image height in pixels, at least 1; width × height at most {@link #MAX_PIXELS}
      * @return this specification with the image's name and size stated
-     * @throws IllegalArgumentException for a name that is not a plain file name, or a size out of
-     *                                  range, naming it
+     * @throws IllegalArgumentException for a name that is not a plain file name, or a size out of range, naming it
      */
     public RenderSettings withImage(String name, int width, int height) {
         Objects.requireNonNull(name, "image name");
