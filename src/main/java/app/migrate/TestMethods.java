@@ -33,6 +33,7 @@ final class TestMethods {
 
     /**
      * @param text          the test file's source
+     * @param name          the file's name, for a message should javac fail
      * @param errorLines    the 1-based lines javac reported errors on
      * @param reasonComment why, said in each left-out method's place (line breaks become spaces)
      * @return the text without each method (of any top-level or nested class) whose span holds an
@@ -43,13 +44,14 @@ final class TestMethods {
      *         does not parse whole, or when it would keep no test method
      * @throws MigrationException when this Java has no compiler (a JRE), or javac fails on the text in memory
      */
-    static Trimmed without(String text, Collection<Long> errorLines, String reasonComment) throws MigrationException {
+    static Trimmed without(String text, String name, Collection<Long> errorLines, String reasonComment) throws MigrationException {
         Objects.requireNonNull(text, "text");
+        Objects.requireNonNull(name, "name");
         Objects.requireNonNull(errorLines, "errorLines");
         Objects.requireNonNull(reasonComment, "reasonComment");
         // javac rejects a byte order mark as an illegal character; a space of the same length keeps every offset.
         String source = text.startsWith(BOM) ? " " + text.substring(1) : text;
-        Parsed parsed = Parsed.of(source, "the test file");
+        Parsed parsed = Parsed.of(source, name);
         if (!parsed.whole()) return null;
 
         MethodSpans spans = new MethodSpans(parsed, source);

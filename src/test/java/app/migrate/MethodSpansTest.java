@@ -69,7 +69,7 @@ class MethodSpansTest {
         @DisplayName("an error on a line of a string, a text block or a comment takes out the method around it, nothing else")
         void errorInsideLiteralLine() throws MigrationException {
             for (String fragment : List.of("void inString", "void inTextBlock", "void inLineComment", "@DisplayName(\"@Test")) {
-                TestMethods.Trimmed t = TestMethods.without(TEXT, List.of(line(TEXT, fragment)), REASON);
+                TestMethods.Trimmed t = TestMethods.without(TEXT, "VectorTest.java", List.of(line(TEXT, fragment)), REASON);
 
                 assertThat(t.removed()).as(fragment).containsExactly("parses");
                 assertThat(t.text()).as(fragment).contains("void rotates() {").contains("/* @TestFactory")
@@ -80,7 +80,7 @@ class MethodSpansTest {
         @Test
         @DisplayName("a block comment between methods that holds a method is in no method: the whole file is left out")
         void errorOnCommentedMethod() throws MigrationException {
-            assertThat(TestMethods.without(TEXT, List.of(line(TEXT, "void inBlockComment")), REASON)).isNull();
+            assertThat(TestMethods.without(TEXT, "VectorTest.java", List.of(line(TEXT, "void inBlockComment")), REASON)).isNull();
         }
 
         @Test
@@ -98,7 +98,7 @@ class MethodSpansTest {
                     }
                     """;
 
-            assertThat(TestMethods.without(text, List.of(line(text, ".rotate(90)")), REASON)).isNull();
+            assertThat(TestMethods.without(text, "VectorTest.java", List.of(line(text, ".rotate(90)")), REASON)).isNull();
         }
     }
 
@@ -138,8 +138,8 @@ class MethodSpansTest {
         @Test
         @DisplayName("taken out, it leaves the next method byte for byte; kept, it stays byte for byte")
         void takenOutOrKept() throws MigrationException {
-            TestMethods.Trimmed first = TestMethods.without(TEXT, List.of(line(TEXT, "/* } */")), REASON);
-            TestMethods.Trimmed second = TestMethods.without(TEXT, List.of(line(TEXT, ".rotate(90)")), REASON);
+            TestMethods.Trimmed first = TestMethods.without(TEXT, "VectorTest.java", List.of(line(TEXT, "/* } */")), REASON);
+            TestMethods.Trimmed second = TestMethods.without(TEXT, "VectorTest.java", List.of(line(TEXT, ".rotate(90)")), REASON);
 
             assertThat(first.text()).isEqualTo(TEXT.replace(BRACY, "    // raytracer migrate: braces() left out: " + REASON + "\n"));
             assertThat(second.text()).startsWith("class BraceTest {\n" + BRACY).contains("// raytracer migrate: after() left out:");
@@ -172,7 +172,7 @@ class MethodSpansTest {
         @Test
         @DisplayName("no method is taken out, even one far from the syntax error (a patched-up tree's bounds are a guess)")
         void leftAsIs() throws MigrationException {
-            assertThat(TestMethods.without(TEXT, List.of(line(TEXT, ".rotate(90)")), REASON)).isNull();
+            assertThat(TestMethods.without(TEXT, "VectorTest.java", List.of(line(TEXT, ".rotate(90)")), REASON)).isNull();
         }
 
         @Test

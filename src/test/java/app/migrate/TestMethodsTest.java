@@ -32,12 +32,12 @@ class TestMethodsTest {
     }
 
     private static TestMethods.Trimmed without(String text, String... errorFragments) throws MigrationException {
-        return TestMethods.without(text, lines(text, errorFragments), REASON);
+        return TestMethods.without(text, "VectorTest.java", lines(text, errorFragments), REASON);
     }
 
     /** The trimmed text still parses, and trimming it again with no error changes nothing. */
     private static void assertParses(String text) throws MigrationException {
-        TestMethods.Trimmed again = TestMethods.without(text, List.of(), REASON);
+        TestMethods.Trimmed again = TestMethods.without(text, "VectorTest.java", List.of(), REASON);
         assertThat(again).as("the result parses and keeps a test").isNotNull();
         assertThat(again.text()).isEqualTo(text);
         assertThat(again.removed()).isEmpty();
@@ -338,7 +338,7 @@ class TestMethodsTest {
         @Test
         @DisplayName("no error line: the text as it is")
         void noError() throws MigrationException {
-            TestMethods.Trimmed trimmed = TestMethods.without(VECTOR_TEST, List.of(), REASON);
+            TestMethods.Trimmed trimmed = TestMethods.without(VECTOR_TEST, "VectorTest.java", List.of(), REASON);
 
             assertThat(trimmed.text()).isEqualTo(VECTOR_TEST);
             assertThat(trimmed.removed()).isEmpty();
@@ -347,7 +347,7 @@ class TestMethodsTest {
         @Test
         @DisplayName("the reason on one line, with no backslash javac would read as a Unicode escape")
         void reasonOnOneLine() throws MigrationException {
-            TestMethods.Trimmed trimmed = TestMethods.without(VECTOR_TEST, lines(VECTOR_TEST, ".rotate(90)"),
+            TestMethods.Trimmed trimmed = TestMethods.without(VECTOR_TEST, "VectorTest.java", lines(VECTOR_TEST, ".rotate(90)"),
                     "first\r\nsecond\nthird\rin C:\\users\\u000a");
 
             assertThat(trimmed.text()).contains("    // raytracer migrate: rotate() left out: first second third in C:\\\\users\\\\u000a\n\n");
@@ -520,7 +520,7 @@ class TestMethodsTest {
         @ValueSource(strings = { "", "class VectorTest {}", "class VectorTest { void helper() { } }" })
         @DisplayName("a file with no test method, even without an error")
         void noTestMethod(String text) throws MigrationException {
-            assertThat(TestMethods.without(text, List.of(), REASON)).isNull();
+            assertThat(TestMethods.without(text, "VectorTest.java", List.of(), REASON)).isNull();
         }
 
         @Test
@@ -537,7 +537,7 @@ class TestMethodsTest {
         void noSuchLine(long line) throws MigrationException {
             Collection<Long> errors = List.of(line);
 
-            assertThat(TestMethods.without(VECTOR_TEST, errors, REASON)).isNull();
+            assertThat(TestMethods.without(VECTOR_TEST, "VectorTest.java", errors, REASON)).isNull();
         }
 
         @Test
