@@ -3,8 +3,10 @@ package app.migrate;
 import java.io.IOException;
 import java.io.StringWriter;
 import java.net.URI;
+import java.util.ArrayList;
 import java.util.List;
 
+import javax.tools.Diagnostic;
 import javax.tools.JavaCompiler;
 import javax.tools.JavaFileObject;
 import javax.tools.SimpleJavaFileObject;
@@ -21,9 +23,16 @@ import com.sun.source.util.Trees;
  * each part of it lies: what tells a name in the code from the same word in a string or a comment.
  *
  * <p>A text with parse errors (the unnamed variable {@code _} on an older JDK) is still read where
- * it parses; the compile that follows reports its errors and sets the file aside with them.
+ * it parses; the compile that follows reports its errors and sets the file aside with them. Who
+ * must not guess at a tree javac patched up (where a method ends, to cut it out) asks {@link #whole()}.
+ *
+ * @param errorLines the lines (1-based; -1 for an error javac placed nowhere) of the parser's errors
  */
-record Parsed(CompilationUnitTree unit, SourcePositions positions) {
+record Parsed(CompilationUnitTree unit, SourcePositions positions, List<Long> errorLines) {
+    Parsed {
+        errorLines = List.copyOf(errorLines);
+    }
+
     /**
      * @param name the file's name, for a message should javac fail
      * @throws MigrationException when this Java has no compiler, or javac fails on a text in memory
@@ -41,14 +50,21 @@ record Parsed(CompilationUnitTree unit, SourcePositions positions) {
             }
         };
         try {
-            // Errors and their chatter are the compile's to report (see above): here they go nowhere.
-            JavacTask task = (JavacTask) javac.getTask(new StringWriter(), null, diagnostic -> { }, List.of("-proc:none"), null,
-                    List.of(source));
+            // Errors are the compile's to report (see above): here only their lines are kept, for whole().
+            List<Long> errorLines = new ArrayList<>();
+            JavacTask task = (JavacTask) javac.getTask(new StringWriter(), null, diagnostic -> {
+                if (diagnostic.getKind() == Diagnostic.Kind.ERROR) errorLines.add(diagnostic.getLineNumber());
+            }, List.of("-proc:none"), null, List.of(source));
             CompilationUnitTree unit = task.parse().iterator().next();
-            return new Parsed(unit, Trees.instance(task).getSourcePositions());
+            return new Parsed(unit, Trees.instance(task).getSourcePositions(), errorLines);
         } catch (IOException | IllegalStateException e) {
             throw new MigrationException("javac could not parse " + name + ": " + e.getMessage() + " (nothing was changed)", e);
         }
+    }
+
+    /** Whether javac parsed the text without an error: every tree stands where the text puts it. */
+    boolean whole() {
+        return errorLines.isEmpty();
     }
 
     long start(Tree t) {

@@ -100,7 +100,7 @@ final class Planner {
             }
             String why = "it uses your own " + name + ", moved to " + Layout.BACKUP + "/: the library has a class of that name inside"
                     + " it, which this test would run against instead";
-            TestMethods.Trimmed t = TestMethods.without(k.text(), lines, why);
+            TestMethods.Trimmed t = TestMethods.without(k.text(), f.relative(d), lines, why);
             if (t == null) {
                 leftOutFirst.put(f, f.relative(d) + ":" + first + ": " + why);
                 continue;
@@ -124,7 +124,7 @@ final class Planner {
         for (Map.Entry<Path, List<Javac.Problem>> e : test.failed().entrySet()) {
             Kept k = stagedTests.get(e.getKey());
             Javac.Problem first = e.getValue().get(0);
-            TestMethods.Trimmed t = TestMethods.without(k.text(), e.getValue().stream().map(Javac.Problem::line).toList(),
+            TestMethods.Trimmed t = TestMethods.without(k.text(), k.file().relative(d), e.getValue().stream().map(Javac.Problem::line).toList(),
                     reasons.explain(first, true));
             if (t == null) continue;
             Files.write(e.getKey(), t.text().getBytes(charset));

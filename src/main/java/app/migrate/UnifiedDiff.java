@@ -41,26 +41,35 @@ final class UnifiedDiff {
         return out.toByteArray();
     }
 
-    /** The lines before a change's hunks: what happens to the file, and its paths. */
+    /** The lines before a change's hunks: what happens to the file, and its paths (each as git quotes it: {@link GitPath}). */
     private static String header(Change c) {
         StringBuilder out = new StringBuilder();
         switch (c.kind()) {
-            case MOVE -> out.append("diff --git a/").append(c.path()).append(" b/").append(c.to()).append('\n')
-                    .append("similarity index 100%\nrename from ").append(c.path()).append("\nrename to ").append(c.to()).append('\n');
+            case MOVE -> out.append(diffGit(c.path(), c.to())).append("similarity index 100%\n")
+                    .append(named("rename from", c.path())).append(named("rename to", c.to()));
             case CREATE -> {
-                out.append("diff --git a/").append(c.path()).append(" b/").append(c.path()).append("\nnew file mode 100644\n");
-                if (!c.after().isEmpty()) out.append("--- /dev/null\n+++ b/").append(c.path()).append('\n');
+                out.append(diffGit(c.path(), c.path())).append("new file mode 100644\n");
+                if (!c.after().isEmpty()) out.append("--- /dev/null\n").append(GitPath.fileLine("+++", "b/" + c.path()));
             }
             case REPLACE -> {
-                out.append("diff --git a/").append(c.path()).append(" b/").append(c.backup()).append('\n')
-                        .append("similarity index 100%\ncopy from ").append(c.path()).append("\ncopy to ").append(c.backup()).append('\n');
-                out.append("diff --git a/").append(c.path()).append(" b/").append(c.to()).append('\n');
-                if (!c.to().equals(c.path()))
-                    out.append("rename from ").append(c.path()).append("\nrename to ").append(c.to()).append('\n');
-                if (!c.before().equals(c.after())) out.append("--- a/").append(c.path()).append("\n+++ b/").append(c.to()).append('\n');
+                out.append(diffGit(c.path(), c.backup())).append("similarity index 100%\n")
+                        .append(named("copy from", c.path())).append(named("copy to", c.backup()));
+                out.append(diffGit(c.path(), c.to()));
+                if (!c.to().equals(c.path())) out.append(named("rename from", c.path())).append(named("rename to", c.to()));
+                if (!c.before().equals(c.after()))
+                    out.append(GitPath.fileLine("---", "a/" + c.path())).append(GitPath.fileLine("+++", "b/" + c.to()));
             }
         }
         return out.toString();
+    }
+
+    private static String diffGit(String from, String to) {
+        return "diff --git " + GitPath.quoted("a/" + from) + " " + GitPath.quoted("b/" + to) + "\n";
+    }
+
+    /** A {@code rename from}, {@code copy to}, … line: git quotes the bare path there, with no {@code a/} or {@code b/}. */
+    private static String named(String what, String path) {
+        return what + " " + GitPath.quoted(path) + "\n";
     }
 
     /** A change's hunks: none for a move or an unchanged text. */

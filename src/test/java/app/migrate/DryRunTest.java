@@ -4,6 +4,7 @@ import static app.migrate.CourseProjects.snapshot;
 import static app.migrate.CourseProjects.write;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
+import static java.nio.charset.StandardCharsets.UTF_8;
 
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
@@ -12,6 +13,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.Arrays;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
@@ -184,6 +186,47 @@ class DryRunTest {
         @DisplayName("lines added at the end are numbered after the last line kept")
         void appended() {
             assertThat(UnifiedDiff.hunks("a\nb\nc\nd\n", "a\nb\nc\nd\ne\n")).isEqualTo("@@ -2,3 +2,4 @@\n b\n c\n d\n+e\n");
+        }
+    }
+
+    @Nested
+    @DisplayName("paths git quotes")
+    class QuotedPaths {
+        @Test
+        @DisplayName("a space and double quotes in a path, one starting with a quote: git apply moves, copies, rewrites and creates them")
+        void gitApplies() throws Exception {
+            Path dir = Files.createDirectories(root.resolve("quoted"));
+            String moved = "\"my\" shapes/Old Cube.java", rewritten = "src/say \"hi\"/Sphere.java",
+                    created = "src/new dir/pom x.xml";
+            write(dir, moved, "class OldCube {}\n");
+            write(dir, rewritten, "package a;\nclass Sphere {}\n");
+            List<Change> changes = List.of(Change.move(moved, "course-backup/" + moved, "class OldCube {}\n", UTF_8),
+                    Change.replace(rewritten, "src/b c/Sphere.java", "package a;\nclass Sphere {}\n",
+                            "package b;\nclass Sphere {}\n", UTF_8),
+                    Change.create(created, "<project/>\n"));
+
+            gitApply(dir, UnifiedDiff.bytes(changes));
+
+            assertThat(snapshot(dir)).isEqualTo(Map.of("course-backup/" + moved, "class OldCube {}\n",
+                    Change.ORIGINALS + rewritten, "package a;\nclass Sphere {}\n", "src/b c/Sphere.java", "package b;\nclass Sphere {}\n",
+                    created, "<project/>\n"));
+        }
+
+        @Test
+        @DisplayName("a Hebrew folder name (quoted as its UTF-8 bytes in octal): git apply moves the file there")
+        void nonAscii() throws Exception {
+            // Java names files in the platform's encoding: under a C locale it cannot make a Hebrew name at all.
+            assumeTrue(Charset.forName(System.getProperty("sun.jnu.encoding")).newEncoder().canEncode("\u05e6"),
+                    "file names here are in " + System.getProperty("sun.jnu.encoding"));
+            Path dir = Files.createDirectories(root.resolve("hebrew"));
+            write(dir, "src/\u05e6\u05d5\u05e8\u05d5\u05ea/Cube.java", "class Cube {}\n");
+            List<Change> changes = List.of(Change.move("src/\u05e6\u05d5\u05e8\u05d5\u05ea/Cube.java",
+                    "course-backup/\u05e6\u05d5\u05e8\u05d5\u05ea/Cube.java", "class Cube {}\n", UTF_8));
+
+            assertThat(UnifiedDiff.of(changes)).startsWith("diff --git \"a/src/\\327\\246");
+            gitApply(dir, UnifiedDiff.bytes(changes));
+
+            assertThat(snapshot(dir)).isEqualTo(Map.of("course-backup/\u05e6\u05d5\u05e8\u05d5\u05ea/Cube.java", "class Cube {}\n"));
         }
     }
 

@@ -31,13 +31,13 @@ class TestMethodsTest {
         return found;
     }
 
-    private static TestMethods.Trimmed without(String text, String... errorFragments) {
-        return TestMethods.without(text, lines(text, errorFragments), REASON);
+    private static TestMethods.Trimmed without(String text, String... errorFragments) throws MigrationException {
+        return TestMethods.without(text, "VectorTest.java", lines(text, errorFragments), REASON);
     }
 
     /** The trimmed text still parses, and trimming it again with no error changes nothing. */
-    private static void assertParses(String text) {
-        TestMethods.Trimmed again = TestMethods.without(text, List.of(), REASON);
+    private static void assertParses(String text) throws MigrationException {
+        TestMethods.Trimmed again = TestMethods.without(text, "VectorTest.java", List.of(), REASON);
         assertThat(again).as("the result parses and keeps a test").isNotNull();
         assertThat(again.text()).isEqualTo(text);
         assertThat(again.removed()).isEmpty();
@@ -95,7 +95,7 @@ class TestMethodsTest {
     class TakesOut {
         @Test
         @DisplayName("one failing method of three: replaced by one comment line, the rest byte for byte")
-        void oneOfThree() {
+        void oneOfThree() throws MigrationException {
             TestMethods.Trimmed trimmed = without(VECTOR_TEST, ".rotate(90)");
 
             assertThat(trimmed.text()).isEqualTo(VECTOR_TEST_WITHOUT_ROTATE);
@@ -106,13 +106,13 @@ class TestMethodsTest {
         @ParameterizedTest(name = "an error on the line of {0}")
         @ValueSource(strings = { "@Test\n    void rotate", "void rotate()", "new Vector(1, 0, 0).rotate", "}\n\n    @Test\n    void scale" })
         @DisplayName("whichever line of the method javac names: its annotation, its header, its body, its closing brace")
-        void anyLineOfTheMethod(String fragment) {
+        void anyLineOfTheMethod(String fragment) throws MigrationException {
             assertThat(without(VECTOR_TEST, fragment).text()).isEqualTo(VECTOR_TEST_WITHOUT_ROTATE);
         }
 
         @Test
         @DisplayName("two failing methods, several errors each, named in file order")
-        void twoInFileOrder() {
+        void twoInFileOrder() throws MigrationException {
             TestMethods.Trimmed trimmed = without(VECTOR_TEST, ".scale(2)", "void scale", ".rotate(90)", "void rotate");
 
             assertThat(trimmed.removed()).containsExactly("rotate", "scale");
@@ -121,7 +121,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("a test named as a method the remaining tests call (add() and v.add(...))")
-        void testNamedAsCalledMethod() {
+        void testNamedAsCalledMethod() throws MigrationException {
             String text = VECTOR_TEST.replace("new Vector(1, 2, 3).scale(2)", "new Vector(1, 2, 3).add(new Vector(1, 2, 3))");
 
             assertThat(without(text, "void add").removed()).containsExactly("add");
@@ -129,7 +129,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("its Javadoc and the comment lines directly above go with it; a comment after a blank line stays")
-        void withItsJavadoc() {
+        void withItsJavadoc() throws MigrationException {
             String text = """
                     class VectorTest {
                         @Test
@@ -168,7 +168,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("its Javadoc even across a blank line (javac gives it to the method all the same)")
-        void javadocAcrossBlankLine() {
+        void javadocAcrossBlankLine() throws MigrationException {
             String text = """
                     class VectorTest {
                         @Test
@@ -195,7 +195,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("a method of a @Nested class, indented as it was")
-        void nestedClass() {
+        void nestedClass() throws MigrationException {
             String text = """
                     class CameraTest {
                         @Test
@@ -242,7 +242,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("a CRLF file keeps CRLF, in the comment line too")
-        void crlf() {
+        void crlf() throws MigrationException {
             String text = VECTOR_TEST.replace("\n", "\r\n");
             TestMethods.Trimmed trimmed = without(text, ".rotate(90)");
 
@@ -252,7 +252,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("a file with a byte order mark, tabs and Hebrew comments")
-        void bomTabsHebrew() {
+        void bomTabsHebrew() throws MigrationException {
             String text = "\uFEFF" + VECTOR_TEST.replace("    ", "\t")
                     .replace("\t@Test\n\tvoid rotate", "\t// בדיקת סיבוב בזווית ישרה\n\t@Test\n\tvoid rotate")
                     .replace("class VectorTest {", "class VectorTest { // וקטורים");
@@ -267,7 +267,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("a string literal and comments that look like code do not move the spans")
-        void literalsAndComments() {
+        void literalsAndComments() throws MigrationException {
             String text = """
                     class ParserTest {
                         @Test
@@ -311,7 +311,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("a JUnit 4 test (org.junit.Test, also written in full) is a test method")
-        void junit4() {
+        void junit4() throws MigrationException {
             String text = """
                     import static org.junit.Assert.assertEquals;
 
@@ -337,8 +337,8 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("no error line: the text as it is")
-        void noError() {
-            TestMethods.Trimmed trimmed = TestMethods.without(VECTOR_TEST, List.of(), REASON);
+        void noError() throws MigrationException {
+            TestMethods.Trimmed trimmed = TestMethods.without(VECTOR_TEST, "VectorTest.java", List.of(), REASON);
 
             assertThat(trimmed.text()).isEqualTo(VECTOR_TEST);
             assertThat(trimmed.removed()).isEmpty();
@@ -346,8 +346,8 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("the reason on one line, with no backslash javac would read as a Unicode escape")
-        void reasonOnOneLine() {
-            TestMethods.Trimmed trimmed = TestMethods.without(VECTOR_TEST, lines(VECTOR_TEST, ".rotate(90)"),
+        void reasonOnOneLine() throws MigrationException {
+            TestMethods.Trimmed trimmed = TestMethods.without(VECTOR_TEST, "VectorTest.java", lines(VECTOR_TEST, ".rotate(90)"),
                     "first\r\nsecond\nthird\rin C:\\users\\u000a");
 
             assertThat(trimmed.text()).contains("    // raytracer migrate: rotate() left out: first second third in C:\\\\users\\\\u000a\n\n");
@@ -356,7 +356,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("a method sharing its closing line with code: the code starts the next line")
-        void codeAfterClosingBrace() {
+        void codeAfterClosingBrace() throws MigrationException {
             String text = """
                     class VectorTest {
                         @Test
@@ -402,7 +402,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("when no remaining method calls it")
-        void unused() {
+        void unused() throws MigrationException {
             TestMethods.Trimmed trimmed = without(TEXT.replace("turned());", "new Vector(0, 1, 0));"), ".rotate(90)");
 
             assertThat(trimmed.text()).endsWith("""
@@ -416,7 +416,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("with the failing tests that call it")
-        void withItsCallers() {
+        void withItsCallers() throws MigrationException {
             TestMethods.Trimmed trimmed = without(TEXT, ".rotate(90)", "turned());");
 
             assertThat(trimmed.removed()).containsExactly("rotate", "turned");
@@ -426,7 +426,7 @@ class TestMethodsTest {
         @ParameterizedTest(name = "called as {0}")
         @ValueSource(strings = { "turned()", "this.turned()", "Optional.of(this).map(VectorTest::turned).get()" })
         @DisplayName("not when a remaining method still calls it: the whole file is left out")
-        void stillCalled(String call) {
+        void stillCalled(String call) throws MigrationException {
             String text = TEXT.replace("new Vector(1, 1, 1).scale(2)", call);
 
             assertThat(without(text, ".rotate(90)")).isNull();
@@ -434,7 +434,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("not when a remaining field calls it")
-        void calledByField() {
+        void calledByField() throws MigrationException {
             String text = TEXT.replace("class VectorTest {\n", "class VectorTest {\n    private final Vector v = turned();\n");
 
             assertThat(without(text, ".rotate(90)")).isNull();
@@ -442,7 +442,7 @@ class TestMethodsTest {
 
         @Test
         @DisplayName("not when it is the @MethodSource of a remaining test")
-        void methodSource() {
+        void methodSource() throws MigrationException {
             String text = TEXT.replace("    @Test\n    void add() {", "    @ParameterizedTest\n    @MethodSource(\"turned\")\n    void add(Vector v) {");
 
             assertThat(without(text, ".rotate(90)")).isNull();
@@ -500,32 +500,32 @@ class TestMethodsTest {
                 "/** Vectors. */", "class VectorTest", "Vector.LIMIT", "private Vector v;", "static {", "Vector.warmUp",
                 "VectorTest() {", "Vector.count", "new Vector(1, 2, 3);", "@Override", "v.describe()", "} // end" })
         @DisplayName("an error outside a method that can go: import, field, class header, initializer, constructor, @BeforeEach, override")
-        void outsideRemovableMethod(String fragment) {
+        void outsideRemovableMethod(String fragment) throws MigrationException {
             assertThat(without(TEXT, ".rotate(90)", fragment)).isNull();
         }
 
         @Test
         @DisplayName("the sample itself trims (the nulls above come from the named line)")
-        void sampleTrims() {
+        void sampleTrims() throws MigrationException {
             assertThat(without(TEXT, ".rotate(90)").removed()).containsExactly("rotate");
         }
 
         @Test
         @DisplayName("every test method fails")
-        void allTestsFail() {
+        void allTestsFail() throws MigrationException {
             assertThat(without(VECTOR_TEST, "void add", ".rotate(90)", ".scale(2)")).isNull();
         }
 
         @ParameterizedTest(name = "the file \"{0}\"")
         @ValueSource(strings = { "", "class VectorTest {}", "class VectorTest { void helper() { } }" })
         @DisplayName("a file with no test method, even without an error")
-        void noTestMethod(String text) {
-            assertThat(TestMethods.without(text, List.of(), REASON)).isNull();
+        void noTestMethod(String text) throws MigrationException {
+            assertThat(TestMethods.without(text, "VectorTest.java", List.of(), REASON)).isNull();
         }
 
         @Test
         @DisplayName("the file does not parse")
-        void doesNotParse() {
+        void doesNotParse() throws MigrationException {
             String text = VECTOR_TEST.replace("void scale() {", "void scale() {{");
 
             assertThat(without(text, ".rotate(90)")).isNull();
@@ -534,15 +534,15 @@ class TestMethodsTest {
         @ParameterizedTest(name = "line {0}")
         @ValueSource(longs = { 0, -1, 23, 1000 })
         @DisplayName("an error line the file does not have")
-        void noSuchLine(long line) {
+        void noSuchLine(long line) throws MigrationException {
             Collection<Long> errors = List.of(line);
 
-            assertThat(TestMethods.without(VECTOR_TEST, errors, REASON)).isNull();
+            assertThat(TestMethods.without(VECTOR_TEST, "VectorTest.java", errors, REASON)).isNull();
         }
 
         @Test
         @DisplayName("an error on a line shared by two methods")
-        void sharedLine() {
+        void sharedLine() throws MigrationException {
             String text = VECTOR_TEST.replace("    }\n\n    @Test\n    void scale() {", "    } @Test void scale() {");
 
             assertThat(without(text, "void scale")).isNull();
