@@ -30,7 +30,9 @@
  * <li>The values a built camera is a facade over, each checked once, where it is made:
  * {@code View} (location, frame, view plane and resolution, lens: it makes camera rays from film
  * and lens coordinates), {@code Sampling} (the anti-aliasing mode and its parameters, lens samples,
- * seed: it makes each worker's sampler and knows the camera rays a pixel may take) and
+ * seed: its {@code plan(lens)} is the one place the mode is decided, a {@code SamplerPlan} that
+ * each sampler class defines beside it, giving the camera rays a pixel may take, the tile size and
+ * each worker's sampler) and
  * {@code Execution} (threads, tile size, progress, output). {@code RayBudget} holds the rays of a
  * pixel to one limit. Each limit is a static rule there ({@code Execution.requireThreads},
  * {@code Sampling.Grid}, {@code View.Frame.along}, {@code RayBudget.require}, ...), which the
@@ -39,7 +41,7 @@
  * <li>The loop: {@code RenderLoop(View, Sampling, Execution, tracer, image)} prepares the tracer
  * once per render and holds the {@code PreparedTracer} it returns; it cuts the image into tiles
  * that workers claim; each worker asks the tracer for its {@code TraceContext} (its scratch state,
- * never shared) and the sampling for a {@code PixelSampler} ({@code CenterSampler},
+ * never shared, with the pixel's ray limit) and the sampling's plan for a {@code PixelSampler} ({@code CenterSampler},
  * {@code GridSampler}, {@code LatticeSampler}, and for ADAPTIVE with a lens
  * {@code NoiseAdaptiveSampler}) over the pass's {@code Estimator} (the view's camera ray, traced by
  * the prepared tracer). The sampler positions the {@code SampleStream} of each sample, draws film
