@@ -646,6 +646,16 @@ public final class Camera {
         }
 
         /**
+         * The pinhole camera, everything sharp (the default): turns off a depth of field set before.
+         *
+         * @return this builder
+         */
+        public Builder setPinhole() {
+            this.lens = View.Lens.PINHOLE;
+            return this;
+        }
+
+        /**
          * Lens samples per pixel with depth of field and no anti-aliasing (default 16), stratified
          * over the lens (16 cover it as a jittered 4×4 grid would); with anti-aliasing, each
          * anti-aliasing sample takes its own lens point instead.

@@ -165,7 +165,7 @@ class CourseFaceTest {
                 "enableCBR()", "setViewPlaneSize(double, double)", "setViewPlaneDistance(double)",
                 // the improvements, one line each (API.md): anti-aliasing, depth of field, threads and progress
                 "setAntiAliasing(AntiAliasing)", "setAntiAliasing(AntiAliasing, int, int)", "setAntiAliasingGrid(int, int)",
-                "setAdaptive(int, double)", "setDepthOfField(double, double)", "setDepthOfFieldSamples(int)",
+                "setAdaptive(int, double)", "setDepthOfField(double, double)", "setPinhole()", "setDepthOfFieldSamples(int)",
                 "setDofRays(int)", "setMultithreading(int)", "setDebugPrint(double)",
                 // the render's output: its seed, summary line, where lines go, and a listener (the JUnit reports)
                 "setSeed(long)", "setSummary(boolean)", "setOutput(PrintStream)", "setRenderListener(BiConsumer)"));

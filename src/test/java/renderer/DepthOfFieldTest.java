@@ -116,4 +116,18 @@ class DepthOfFieldTest {
                 .setDepthOfFieldSamples(8).build().renderImage();
         assertThat(Pixels.of(lens)).isEqualTo(Pixels.of(pinhole));
     }
+
+    @ParameterizedTest(name = "{0}")
+    @MethodSource("modes")
+    @DisplayName("setPinhole() after a depth of field turns it off: the pinhole image byte for byte, and the summary's words")
+    void pinholeTurnsTheLensOff(String name, UnaryOperator<Camera.Builder> mode) {
+        ImageWriter pinhole = new ImageWriter("pinhole", 60, 40), undone = new ImageWriter("lens-undone", 60, 40);
+        Camera plain = mode.apply(TestScenes.camera(TestScenes.everyEffect(), pinhole)).setSeed(5).build();
+        Camera off = mode.apply(TestScenes.camera(TestScenes.everyEffect(), undone)).setSeed(5).setDepthOfField(7, 2)
+                .setPinhole().build();
+        plain.renderImage();
+        off.renderImage();
+        assertThat(Pixels.of(undone)).isEqualTo(Pixels.of(pinhole));
+        assertThat(off.describe()).isEqualTo(plain.describe()).doesNotContain("DOF");
+    }
 }

@@ -25,10 +25,9 @@ public record LensSpec(Double focalDistance, Double aperture, Integer samples) i
 
     /** Replays the stated values onto {@code camera}, each through its own setter. */
     void applyTo(Camera.Builder camera) {
-        // A stated pinhole undoes a lens set on the builder before: the builder's pinhole is
-        // aperture 0, whatever the focal distance (the course's builder has no setter of its own).
+        // A stated pinhole undoes a lens set on the builder before.
         if (focalDistance != null) {
-            if (focalDistance == 0) camera.setDepthOfField(1, 0);
+            if (focalDistance == 0) camera.setPinhole();
             else camera.setDepthOfField(focalDistance, aperture);
         }
         if (samples != null) camera.setDepthOfFieldSamples(samples);
