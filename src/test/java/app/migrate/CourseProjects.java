@@ -107,6 +107,21 @@ final class CourseProjects {
      * path, and an empty Maven repository beside {@code dir} ({@link #repository}) that nothing is
      * fetched into: a library a fixture needs is put there by {@link #install}.
      */
+    /**
+     * The 2025–26 layout in DIR: {@code Point} and {@code Vector} in primitives, an abstract
+     * {@code geometries.api.Intersectable}, and {@code geometries.impl}'s {@code Sphere} (a course
+     * class) and {@code Cube} (the student's own, using the api).
+     */
+    static void apiImpl(Path dir) throws IOException {
+        write(dir, "src/primitives/Point.java", POINT);
+        write(dir, "src/primitives/Vector.java", vector("primitives", "0, 0, 1"));
+        write(dir, "src/geometries/api/Intersectable.java", "package geometries.api;\n\npublic abstract class Intersectable {\n}\n");
+        write(dir, "src/geometries/impl/Sphere.java",
+                "package geometries.impl;\n\nimport geometries.api.Intersectable;\n\npublic class Sphere extends Intersectable {\n}\n");
+        write(dir, "src/geometries/impl/Cube.java", "package geometries.impl;\n\nimport geometries.api.Intersectable;\n\n"
+                + "public class Cube {\n    public static Intersectable unit() { return null; }\n}\n");
+    }
+
     static Migration migration(Path dir, OutputStream printed, OutputStream steps) {
         return migration(dir, printed, steps, Faults.NONE);
     }

@@ -54,13 +54,7 @@ class DryRunTest {
     }
 
     private static Path project2025(Path dir) throws IOException {
-        write(dir, "src/primitives/Point.java", CourseProjects.POINT);
-        write(dir, "src/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1"));
-        write(dir, "src/geometries/api/Intersectable.java", "package geometries.api;\n\npublic abstract class Intersectable {\n}\n");
-        write(dir, "src/geometries/impl/Sphere.java",
-                "package geometries.impl;\n\nimport geometries.api.Intersectable;\n\npublic class Sphere extends Intersectable {\n}\n");
-        write(dir, "src/geometries/impl/Cube.java", "package geometries.impl;\n\nimport geometries.api.Intersectable;\n\n"
-                + "public class Cube {\n    public static Intersectable unit() { return null; }\n}\n");
+        CourseProjects.apiImpl(dir);
         write(dir, "unittests/geometries/impl/CubeTest.java", "package geometries.impl;\n\nimport geometries.api.Intersectable;\n"
                 + "import org.junit.jupiter.api.Test;\n\nclass CubeTest {\n    @Test\n    void unit() {\n"
                 + "        Intersectable i = Cube.unit();\n    }\n}\n");

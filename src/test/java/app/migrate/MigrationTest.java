@@ -202,13 +202,7 @@ class MigrationTest {
     class Year5786 {
         @BeforeEach
         void project() throws IOException {
-            write(dir, "src/primitives/Point.java", CourseProjects.POINT);
-            write(dir, "src/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1"));
-            write(dir, "src/geometries/api/Intersectable.java", "package geometries.api;\n\npublic abstract class Intersectable {\n}\n");
-            write(dir, "src/geometries/impl/Sphere.java",
-                    "package geometries.impl;\n\nimport geometries.api.Intersectable;\n\npublic class Sphere extends Intersectable {\n}\n");
-            write(dir, "src/geometries/impl/Cube.java", "package geometries.impl;\n\nimport geometries.api.Intersectable;\n\n"
-                    + "public class Cube {\n    public static Intersectable unit() { return null; }\n}\n");
+            CourseProjects.apiImpl(dir);
             write(dir, "src/test/Main.java", "package test;\n\npublic class Main {\n    public static void main(String[] args) {\n"
                     + "        try {\n            Integer.parseInt(\"x\");\n        } catch (Exception _) {\n        }\n    }\n}\n");
             write(dir, "unittests/geometries/impl/CubeTest.java", "package geometries.impl;\n\nimport geometries.api.Intersectable;\n"
