@@ -26,9 +26,12 @@ def project(tmp_path: Path, with_jar: bool) -> Path:
 
 def startup(folder: Path, home: Path, suffix: str) -> Path:
     """Where the launcher keeps its start-up archive for the JDK at `home`: named by the checksum
-    of the JDK's release file, as POSIX cksum computes it."""
+    of the JDK's release file, as POSIX cksum computes it, and "-vector" when the JDK has the
+    vector module (the launcher adds it by default, and an archive fits only its modules)."""
     key = subprocess.run(["cksum"], stdin=(home / "release").open("rb"), capture_output=True, text=True,
                          check=True).stdout.split()[0]
+    if "jdk.incubator.vector" in (home / "release").read_text():
+        key += "-vector"
     return folder / "target" / "startup" / f"raytracer-{key}.{suffix}"
 
 
@@ -102,15 +105,16 @@ def test_the_users_options_come_after_the_launchers(tmp_path):
 
 
 @needs_jar
-@pytest.mark.parametrize("vector", ["1", ""])
+@pytest.mark.parametrize("vector", ["", "1", "0"])
 def test_a_render_prints_no_incubator_warning_and_says_its_walk(tmp_path, vector):
     folder = project(tmp_path, with_jar=True)
     done = run(folder, str(ROOT / "scenes" / "two-colors.xml"), "--width=40", f"--output={tmp_path / 'x.png'}",
                env={"RAYTRACER_VECTOR": vector})
     assert done.returncode == 0, done.stderr
     assert "incubator" not in done.stderr
-    if vector:  # the module, where the JDK has it: this scene is below the vector walk's size threshold
-        assert "-wide vector walk" in done.stdout or "scalar walk (" in done.stdout
+    if vector != "0":  # the module by default, where the JDK has it: a short render keeps the scalar walk
+        assert "scalar walk (the " in done.stdout and "-wide vector walk is not compiled yet)" in done.stdout \
+            or "scalar walk (" in done.stdout and "jdk.incubator.vector" not in done.stdout
     else:
         assert "scalar walk (no jdk.incubator.vector)" in done.stdout
 
@@ -131,20 +135,23 @@ def fake_jdk(tmp_path: Path, version: str, modules: str = "java.base") -> Path:
     return home
 
 
-@pytest.mark.parametrize("asked, modules, vector", [("1", "java.base jdk.incubator.vector java.desktop", True),
+@pytest.mark.parametrize("asked, modules, vector", [("", "java.base jdk.incubator.vector java.desktop", True),
+                                                    ("", "java.base jdk.incubator.vector", True),
                                                     ("1", "java.base jdk.incubator.vector", True),
-                                                    ("1", "java.base java.desktop", False),
-                                                    ("", "java.base jdk.incubator.vector", False),
-                                                    ("yes", "java.base jdk.incubator.vector", False)])
-def test_the_vector_module_is_added_when_asked_where_the_jdk_has_it_and_its_warning_dropped(tmp_path, asked, modules,
-                                                                                           vector):
+                                                    ("", "java.base java.desktop", False),
+                                                    ("0", "java.base jdk.incubator.vector", False)])
+def test_the_vector_module_is_added_unless_turned_off_where_the_jdk_has_it_and_its_warning_dropped(tmp_path, asked,
+                                                                                                  modules, vector):
     (tmp_path / "project").mkdir()
     folder = project(tmp_path / "project", with_jar=False)
     (folder / "target").mkdir()
     (folder / "target" / "raytracer.jar").write_bytes(b"")
     home = fake_jdk(tmp_path, "17.0.12", modules)
-    startup(folder, home, "jsa").parent.mkdir()
-    startup(folder, home, "jsa").write_bytes(b"")  # as after a start-up archive that could not be made
+    archive = startup(folder, home, "jsa")
+    if not vector:
+        archive = archive.with_name(archive.name.replace("-vector", ""))
+    archive.parent.mkdir()
+    archive.write_bytes(b"")  # as after a start-up archive that could not be made
     done = run(folder, "scene.xml", env={"JAVA_HOME": str(home), "RAYTRACER_VECTOR": asked})
     assert done.returncode == 3  # the JVM's own exit status
     assert ("jdk.incubator.vector" in done.stdout.splitlines()) == vector

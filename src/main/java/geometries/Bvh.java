@@ -52,6 +52,8 @@ public final class Bvh extends Intersectable {
     private final WideWalk walk;
     /** The wide nodes the {@link #walk} reads, or null (no walk, or a root that is a leaf). */
     private final WideNodes wide;
+    /** Whether the {@link #wide} nodes are walked yet; before, the binary ones are, in scalar code. */
+    private final WideGate gate;
 
     /**
      * The tree of {@code geometries} as they are now, for a render: the tree an earlier call
@@ -71,7 +73,8 @@ public final class Bvh extends Intersectable {
         Intersectable[] now = collected.toArray(new Intersectable[0]);
         Bvh kept = geometries.keptTree();
         if (kept != null && kept.indexes(now)) return kept;
-        Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, true, Vectorization.WALK);
+        Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, true, Vectorization.WALK,
+                Vectorization.COMPILED);
         for (Intersectable leaf : now)
             if (!(leaf instanceof Geometry g && g.isLibraryShape())) return tree;
         geometries.keepTree(tree);
@@ -115,22 +118,31 @@ public final class Bvh extends Intersectable {
      * when {@code pairs} (else every node with bins; for the tests that both searches agree).
      */
     static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs) {
-        return build(geometries, parallelism, forkAbove, pairs, Vectorization.WALK);
+        return build(geometries, parallelism, forkAbove, pairs, Vectorization.WALK, Vectorization.COMPILED);
     }
 
     /**
      * As {@link #build(Geometries, int, int, boolean)}, walked by {@code walk} (null: the scalar
-     * walk), whatever this JVM's {@link Vectorization} chose: for the tests that both walks agree.
+     * walk) from the first ray on, whatever this JVM's {@link Vectorization} chose: for the tests
+     * that both walks agree.
      */
     static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs, WideWalk walk) {
+        return build(geometries, parallelism, forkAbove, pairs, walk, WideGate.OPEN);
+    }
+
+    /** As {@link #build(Geometries, int, int, boolean, WideWalk)}, its wide nodes walked once {@code gate} opens. */
+    static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs, WideWalk walk, WideGate gate) {
         if (parallelism < 1) throw new IllegalArgumentException("parallelism must be at least 1, got " + parallelism);
         List<Intersectable> collected = new ArrayList<>();
         geometries.collectLeaves(collected);
-        return new Bvh(collected.toArray(new Intersectable[0]), parallelism, Math.max(1, forkAbove), pairs, walk);
+        return new Bvh(collected.toArray(new Intersectable[0]), parallelism, Math.max(1, forkAbove), pairs, walk, gate);
     }
 
-    /** Indexes {@code all}, a scene's leaves (this tree keeps the array), to be walked by {@code walk} (null: scalar). */
-    private Bvh(Intersectable[] all, int parallelism, int forkAbove, boolean pairs, WideWalk walk) {
+    /**
+     * Indexes {@code all}, a scene's leaves (this tree keeps the array), to be walked by
+     * {@code walk} (null: scalar) once {@code gate} is open.
+     */
+    private Bvh(Intersectable[] all, int parallelism, int forkAbove, boolean pairs, WideWalk walk, WideGate gate) {
         leaves = all;
         BvhBuilder built = BvhBuilder.index(all, parallelism, forkAbove, pairs);
         unbounded = built.unbounded;
@@ -149,17 +161,29 @@ public final class Bvh extends Intersectable {
         wide = wideNodes ? WideNodes.collapse(node, nodeCount, walk.width(), kind) : null;
         // The wide walk tests a leaf of triangles in one vector step: its numbers in lanes.
         if (wideNodes && packed.length > 0) TriangleLanes.arrange(node, nodeCount, kind, packed);
+        this.gate = gate;
     }
 
     /**
-     * One line for a render's summary: which walk this JVM's trees use, the vector walk of wide
-     * nodes or the scalar one, and for the scalar one why ({@code jdk.incubator.vector} not
-     * readable, {@code -Draytracer.simd=false}, a CPU without 256-bit vectors).
+     * This tree will be walked for seconds more (a long render, {@code RenderLoop}): when its wide
+     * nodes wait behind the JVM's closed gate, the vector walk is warmed ({@link VectorWarmUp}),
+     * once per JVM. Not before: the warm-up costs about a second of processor time, which a
+     * short render would lose.
+     */
+    void expectLongWalk() {
+        if (wide != null && gate == Vectorization.COMPILED && !gate.isOpen()) VectorWarmUp.start();
+    }
+
+    /**
+     * One line for a render's summary: which walk this JVM's trees take now, the vector walk of
+     * wide nodes or the scalar one, and for the scalar one why ({@code jdk.incubator.vector} not
+     * readable, {@code -Draytracer.simd=false}, a CPU without 256-bit vectors, or a vector walk
+     * not compiled yet: only a render with seconds of work left has it compiled).
      *
      * @return the walk, in words
      */
     public static String walkDescription() {
-        return Vectorization.DESCRIPTION;
+        return Vectorization.describe();
     }
 
     /**
@@ -264,7 +288,8 @@ public final class Bvh extends Intersectable {
         // A walk already in progress on this record (this one's caller, through a user's shape
         // that walks a tree of its own with the record) owns the record's stack: this one then
         // takes arrays of its own. Rare (only user shapes do it), so the common walk allocates nothing.
-        int size = wide == null ? depth : wide.stackSize();
+        // The wide walk's stack, or the binary walk's while the gate is closed: room for either.
+        int size = wide == null ? depth : Math.max(depth, wide.stackSize());
         boolean nested = hit.walking;
         int[] stack;
         double[] stackT;
@@ -278,7 +303,7 @@ public final class Bvh extends Intersectable {
             hit.walking = true;
         }
         try {
-            return (wide != null ? walk.closestHit(this, wide.node, hit, stack, stackT)
+            return (wide != null && gate.isOpen() ? walk.closestHit(this, wide.node, hit, stack, stackT)
                     : binaryClosestHit(hit, stack, stackT, ox, oy, oz, ix, iy, iz)) | found;
         } finally {
             if (!nested) hit.walking = false;
@@ -308,7 +333,9 @@ public final class Bvh extends Intersectable {
             int rec = BvhNodes.at(n);
             int count = BvhNodes.count(nd, rec);
             if (count > 0) {
-                found |= closestInLeaf(BvhNodes.first(nd, rec), count, hit);
+                int first = BvhNodes.first(nd, rec);
+                found |= wide != null && TriangleLanes.fits(kind, first, count) ? closestInLanes(first, count, hit)
+                        : closestInLeaf(first, count, hit);
             } else {
                 int left = n + 1, right = BvhNodes.right(nd, rec);
                 double tMax = limit(hit.t);
@@ -360,6 +387,27 @@ public final class Bvh extends Intersectable {
             }
         }
         return found;
+    }
+
+    /**
+     * {@link #closestInLeaf} of a leaf laid out in lanes ({@link TriangleLanes}), one triangle at
+     * a time: the scalar walk of a tree with wide nodes, before the vector walk is compiled
+     * ({@link WideGate}).
+     */
+    private boolean closestInLanes(int first, int count, Hit hit) {
+        boolean found = false;
+        for (int j = 0; j < count; ++j)
+            found |= offerTriangle(first + j, Triangle.intersect(hit, packed, TriangleLanes.row(first, count, 0) + j, count), hit);
+        return found;
+    }
+
+    /** {@link #visitInLeaf} of a leaf laid out in lanes, as {@link #closestInLanes}. */
+    private boolean visitInLanes(int first, int count, Hit query, double maxDistance, HitVisitor visitor) {
+        for (int j = 0; j < count; ++j) {
+            double t = Triangle.intersect(query, packed, TriangleLanes.row(first, count, 0) + j, count);
+            if (!visitTriangle(first + j, t, maxDistance, visitor)) return false;
+        }
+        return true;
     }
 
     /** @return the wide nodes the vector walk reads, or null when this tree is walked in scalar code (for the tests) */
@@ -440,7 +488,7 @@ public final class Bvh extends Intersectable {
         double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
         // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
-        if (wide != null) {
+        if (wide != null && gate.isOpen()) {
             if (entry(0, ox, oy, oz, ix, iy, iz, limit) == Double.POSITIVE_INFINITY) return true;
             int size = wide.stackSize();
             // As the closest-hit walk's stack: a walk in progress on this record keeps its own.
@@ -462,7 +510,11 @@ public final class Bvh extends Intersectable {
                 n = BvhNodes.skip(count, n);
                 continue;
             }
-            if (count > 0 && !visitInLeaf(BvhNodes.first(nd, rec), count, query, maxDistance, visitor)) return false;
+            if (count > 0) {
+                int first = BvhNodes.first(nd, rec);
+                if (!(wide != null && TriangleLanes.fits(kind, first, count) ? visitInLanes(first, count, query, maxDistance, visitor)
+                        : visitInLeaf(first, count, query, maxDistance, visitor))) return false;
+            }
             ++n; // into an inner node's left child, or past a leaf
         }
         return true;

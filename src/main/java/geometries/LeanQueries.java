@@ -18,6 +18,17 @@ public final class LeanQueries {
     }
 
     /**
+     * Told that a render will walk {@code world} for seconds more: when it is a tree with wide
+     * nodes whose vector walk this JVM has not compiled yet, that walk is warmed on a thread of
+     * its own ({@link Bvh#expectLongWalk}); otherwise nothing.
+     *
+     * @param world the render's geometry, a tree or not
+     */
+    public static void expectLongWalk(Intersectable world) {
+        if (world instanceof Bvh tree) tree.expectLongWalk();
+    }
+
+    /**
      * The closest hit of the ray {@code hit} carries (see {@link Hit#reset(double)} for its bound):
      * a hit at distance {@code t} with {@code alignZero(t) > 0} and {@code t} below {@code hit}'s
      * current distance replaces the record. No object is made for a library shape.

@@ -1,5 +1,6 @@
 package renderer;
 
+import geometries.LeanQueries;
 import primitives.Rgb;
 
 /**
@@ -16,4 +17,13 @@ interface PreparedTracer {
      *         valid until its next trace
      */
     Rgb traceRay(TraceContext ctx);
+
+    /**
+     * Told, from a render's worker, that the render has at least {@link RenderLoop#LONG_RENDER_SECONDS}
+     * of work left at its pace so far: worth a start-up cost that pays back over seconds (the
+     * scene's tree warms its vector walk, {@link LeanQueries#expectLongWalk}). Cheap and idempotent:
+     * called after each tile from then on. By default nothing.
+     */
+    default void expectLongRender() {
+    }
 }

@@ -88,6 +88,15 @@ public final class Progress {
         }
     }
 
+    /**
+     * @return the seconds the work still needs at the pace so far (the ETA its lines print);
+     *         +∞ before anything is done
+     */
+    double remainingSeconds() {
+        long now = done.get();
+        return now == 0 ? Double.POSITIVE_INFINITY : elapsedSeconds() * (total - now) / now;
+    }
+
     /** @return seconds since this progress was made */
     public double elapsedSeconds() {
         return (System.nanoTime() - start) / 1e9;

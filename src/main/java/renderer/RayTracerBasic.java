@@ -143,7 +143,7 @@ public class RayTracerBasic extends RayTracerBase {
         Intersectable world = useBvh ? Bvh.of(scene.geometries) : scene.geometries;
         WhittedShader prepared = new WhittedShader(scene.background, scene.ambientLight.getIntensity(), world, scene.lights.toArray(new LightSource[0]), beamSize, shadowSamples);
         shader = prepared;
-        return prepared::shadeCameraRay;
+        return prepared;
     }
 
     @Override
@@ -183,6 +183,6 @@ public class RayTracerBasic extends RayTracerBase {
         ctx.random.reset(Double.doubleToLongBits(h.getX()) * 31 + Double.doubleToLongBits(h.getY()),
                 Double.hashCode(h.getZ()), Double.hashCode(d.getX()) * 31 + Double.hashCode(d.getY()), Double.hashCode(d.getZ()));
         ctx.cameraRay().ray(h.getX(), h.getY(), h.getZ(), d.getX(), d.getY(), d.getZ());
-        return shader.shadeCameraRay(ctx).toColor();
+        return shader.traceRay(ctx).toColor();
     }
 }

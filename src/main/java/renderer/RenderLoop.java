@@ -22,6 +22,19 @@ import java.util.concurrent.atomic.AtomicReference;
  * may run at once (each has its own counters).
  */
 final class RenderLoop {
+    /**
+     * A render with at least this many seconds left at its pace is long
+     * ({@link PreparedTracer#expectLongRender}): the vector walk's warm-up costs about 1.1 s of
+     * processor time (its thread and the compiler's), which the vector walk pays back only after
+     * some 5 s of a 2-thread render (BENCHMARKS.md, "The vector walk without asking").
+     */
+    static final double LONG_RENDER_SECONDS = 8;
+    /**
+     * Seconds of render before its pace is trusted: the first tiles run while the code is still
+     * compiled, so the pace at first promises more time than the render takes.
+     */
+    static final double PACE_SECONDS = 1;
+
     private final SamplerPlan sampling;
     private final Execution execution;
     private final RayTracerBase tracer;
@@ -106,6 +119,7 @@ final class RenderLoop {
         private final String name;
         /** The colour of a camera sample: the view's camera ray, traced by the tracer as this render prepared it. */
         private final Estimator estimator;
+        private final PreparedTracer prepared;
         private final Rect rect;
         /** The rectangle's pixels, row by row; null: the tiles go into the image. */
         private final int[] out;
@@ -124,6 +138,7 @@ final class RenderLoop {
                 rays.generate(px, py, u, v, ctx);
                 return prepared.traceRay(ctx);
             };
+            this.prepared = prepared;
             this.rect = rect;
             this.out = out;
             this.tilesX = (rect.x1 - rect.x0 + tile - 1) / tile;
@@ -210,6 +225,9 @@ final class RenderLoop {
                     for (int t = nextTile.getAndIncrement(); t < tileCount; t = nextTile.getAndIncrement()) {
                         if (cancelled.get() || Thread.currentThread().isInterrupted()) throw interrupted();
                         progress.advance(renderTile(t, sampler, ctx, tilePixels));
+                        // Only once the pace is known: the first tiles include the code's warm-up.
+                        if (progress.elapsedSeconds() >= PACE_SECONDS && progress.remainingSeconds() >= LONG_RENDER_SECONDS)
+                            prepared.expectLongRender();
                     }
                 } catch (CancellationException e) {
                     // From the tile loop, or from the tracer within a pixel: the others stop too.

@@ -28,7 +28,7 @@ import renderer.TraceContext.Level;
  * {@code Double3}'s, so every sum and product has the bits of the same sum or product of those
  * objects. The golden-image tests and {@code DeterminismTest} hold the images to the bit.
  */
-final class WhittedShader {
+final class WhittedShader implements PreparedTracer {
     /** The recursion depth limit of reflection and refraction (the course's value). */
     static final int MAX_CALC_COLOR_LEVEL = 10;
     /** Below this accumulated coefficient (in every channel) a contribution is not traced (the course's value). */
@@ -85,13 +85,20 @@ final class WhittedShader {
         this.shadowSamples = shadowSamples;
     }
 
+    /** The scene's tree warms its vector walk ({@link LeanQueries#expectLongWalk}). */
+    @Override
+    public void expectLongRender() {
+        LeanQueries.expectLongWalk(world);
+    }
+
     /**
      * The colour seen along the camera ray in {@link TraceContext#cameraRay()}: the colour at its
      * closest hit plus the ambient light times the material's kA, or the background.
      *
      * @return the context's {@link TraceContext#cameraColour()}, valid until its next trace
      */
-    Rgb shadeCameraRay(TraceContext ctx) {
+    @Override
+    public Rgb traceRay(TraceContext ctx) {
         ctx.stopIfInterrupted(); // a pixel may take 65,536 camera samples
         ctx.requireWithinBudget(0); // the camera ray is counted already
         Level top = ctx.top();

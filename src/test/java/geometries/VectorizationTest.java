@@ -8,14 +8,16 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Pattern;
 
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 /**
  * Which walk a JVM gets, decided once per JVM (so each case is a JVM of its own): the vector walk
- * only where {@code jdk.incubator.vector} is readable, the scalar walk otherwise, and
- * {@code -Draytracer.simd=false} wins over the module.
+ * only where {@code jdk.incubator.vector} is readable, and then not before it is compiled (a
+ * fresh JVM says so) unless {@code -Draytracer.simd=true} asks for it from the first ray; the
+ * scalar walk otherwise, and {@code -Draytracer.simd=false} wins over the module.
  */
 class VectorizationTest {
     /** Prints this JVM's walk, for the cases below. */
@@ -26,7 +28,8 @@ class VectorizationTest {
     @ParameterizedTest(name = "{0} → {1}")
     @CsvSource(delimiter = '|', value = {
             "''|scalar walk (no jdk.incubator.vector)",
-            "--add-modules jdk.incubator.vector|-wide vector walk",
+            "--add-modules jdk.incubator.vector|scalar walk (the [48]-wide vector walk is not compiled yet)",
+            "--add-modules jdk.incubator.vector -Draytracer.simd=true|-wide vector walk",
             "--add-modules jdk.incubator.vector -Draytracer.simd=false|scalar walk (-Draytracer.simd=false)",
             "-Draytracer.simd=true|scalar walk (no jdk.incubator.vector)"})
     void walkOfTheJvm(String options, String expected) throws IOException, InterruptedException {
@@ -41,6 +44,6 @@ class VectorizationTest {
         assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
         assertThat(p.exitValue()).isZero();
         if (expected.startsWith("-wide")) assertThat(out).matches("[48]" + expected + " \\(trees of \\d+ primitives or more\\)");
-        else assertThat(out).isEqualTo(expected);
+        else assertThat(out).matches(Pattern.quote(expected).replace("[48]", "\\E[48]\\Q"));
     }
 }

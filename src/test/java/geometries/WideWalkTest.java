@@ -42,6 +42,17 @@ class WideWalkTest {
         return Bvh.build(g, 1, 4096, true, VectorWalk.anyCpu());
     }
 
+    /**
+     * The tree {@link #vector} builds, behind a closed gate: walked by the scalar walk over its
+     * binary nodes, which reads the leaves laid out in lanes one triangle at a time (a render's
+     * tree before its vector walk is compiled, {@link WideGate}).
+     */
+    private static Bvh closedGate(Geometries g) {
+        Bvh tree = Bvh.build(g, 1, 4096, true, VectorWalk.anyCpu(), new WideGate(false));
+        assertThat(tree.wideNodes() != null || tree.nodeCount() <= 1).as("wide nodes behind the gate").isTrue();
+        return tree;
+    }
+
     /** The scenes of the tree's own tests, with meshes, lattices and degenerate boxes. */
     static Stream<Arguments> scenes() {
         return Stream.concat(BvhTest.searchScenes(), Stream.of(
@@ -79,18 +90,22 @@ class WideWalkTest {
     @MethodSource("scenes")
     @DisplayName("the same closest hit for every ray: geometry, primitive and distance")
     void sameClosestHits(Scene scene) {
-        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries());
+        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries()), c = closedGate(scene.geometries());
         Hit a = new Hit(), b = new Hit();
         int hits = 0;
         for (Ray ray : rays(scene, 11)) {
             boolean fa = s.closestHit(a.setRay(ray).reset(Double.POSITIVE_INFINITY));
-            boolean fb = v.closestHit(b.setRay(ray).reset(Double.POSITIVE_INFINITY));
-            assertThat(fb).as("hit or miss for %s", ray).isEqualTo(fa);
-            if (!fa) continue;
-            ++hits;
-            assertThat(b.geometry).as("geometry for %s", ray).isSameAs(a.geometry);
-            assertThat(b.primitive).as("primitive for %s", ray).isEqualTo(a.primitive);
-            assertThat(Double.doubleToRawLongBits(b.t)).as("distance for %s", ray).isEqualTo(Double.doubleToRawLongBits(a.t));
+            for (Bvh wide : List.of(v, c)) {
+                String walk = wide == v ? "vector walk" : "scalar walk of the wide tree";
+                boolean fb = wide.closestHit(b.setRay(ray).reset(Double.POSITIVE_INFINITY));
+                assertThat(fb).as("%s: hit or miss for %s", walk, ray).isEqualTo(fa);
+                if (!fa) continue;
+                assertThat(b.geometry).as("%s: geometry for %s", walk, ray).isSameAs(a.geometry);
+                assertThat(b.primitive).as("%s: primitive for %s", walk, ray).isEqualTo(a.primitive);
+                assertThat(Double.doubleToRawLongBits(b.t)).as("%s: distance for %s", walk, ray)
+                        .isEqualTo(Double.doubleToRawLongBits(a.t));
+            }
+            if (fa) ++hits;
         }
         assertThat(hits).as("rays that hit (the test must not be vacuous)").isGreaterThan(RAYS / 10);
     }
@@ -99,13 +114,15 @@ class WideWalkTest {
     @MethodSource("scenes")
     @DisplayName("the same any-hit visits in the same order, within random distances")
     void sameVisits(Scene scene) {
-        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries());
+        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries()), c = closedGate(scene.geometries());
         Random rnd = new Random(5);
         int visits = 0;
         for (Ray ray : rays(scene, 12)) {
             double max = rnd.nextBoolean() ? Double.POSITIVE_INFINITY : 3 * scene.half() * rnd.nextDouble();
             List<Visit> expected = Hits.visited(s, ray, max);
             assertThat(Hits.visited(v, ray, max)).as("visits within %s for %s", max, ray).containsExactlyElementsOf(expected);
+            assertThat(Hits.visited(c, ray, max)).as("scalar walk of the wide tree: visits within %s for %s", max, ray)
+                    .containsExactlyElementsOf(expected);
             visits += expected.size();
         }
         assertThat(visits).as("visits (the test must not be vacuous)").isGreaterThan(RAYS / 20);

@@ -42,7 +42,7 @@ class WhittedShaderTest {
                 beamSize, 1);
         ctx.random.reset(7, 0, 0, 0);
         ctx.cameraRay().ray(0, 0, 10, 0, 0, -1);
-        return shader.shadeCameraRay(ctx);
+        return shader.traceRay(ctx);
     }
 
     @Test

@@ -17,12 +17,16 @@ import org.junit.jupiter.params.provider.MethodSource;
 
 /**
  * The same images whichever walk the JVM takes: each scene of {@code scenes/} and a mesh of 10⁵
- * triangles rendered by the command line in a JVM with {@code jdk.incubator.vector} (the vector
- * walk) and in one with {@code -Draytracer.simd=false} (the scalar walk), byte for byte.
+ * triangles rendered by the command line in a JVM with {@code jdk.incubator.vector} and
+ * {@code -Draytracer.simd=true} (the vector walk from the first ray), in one with the module only
+ * (the default: a short render walks its wide tree in scalar code, lane leaves included), and in
+ * one with {@code -Draytracer.simd=false} (the scalar walk of a binary tree), byte for byte.
  */
 @DisplayName("the command line's images are the same bytes with the vector walk and the scalar walk")
 class WalkImagesTest {
-    private static final List<String> VECTOR = List.of("-Xshare:off", "--add-modules", "jdk.incubator.vector");
+    private static final List<String> VECTOR = List.of("-Xshare:off", "--add-modules", "jdk.incubator.vector",
+            "-Draytracer.simd=true");
+    private static final List<String> DEFAULT = List.of("-Xshare:off", "--add-modules", "jdk.incubator.vector");
     private static final List<String> SCALAR = List.of("-Xshare:off", "--add-modules", "jdk.incubator.vector",
             "-Draytracer.simd=false");
 
@@ -36,7 +40,10 @@ class WalkImagesTest {
         Path file = scene.endsWith(".xml") ? app.Project.file("scenes", scene) : bumpySphere(dir);
         byte[] vector = render(dir, file, VECTOR, "vector");
         byte[] scalar = render(dir, file, SCALAR, "scalar");
+        byte[] gated = render(dir, file, DEFAULT, "default");
         assertThat(vector).as("the vector walk's PNG against the scalar walk's").isEqualTo(scalar);
+        assertThat(gated).as("the default JVM's PNG (the wide tree, scalar until compiled) against the scalar walk's")
+                .isEqualTo(scalar);
     }
 
     private static byte[] render(Path dir, Path scene, List<String> jvm, String name) throws IOException, InterruptedException {
@@ -45,7 +52,11 @@ class WalkImagesTest {
                 "--output=" + png));
         assertThat(run.exitCode()).as("exit code; stderr: %s", run.err()).isZero();
         assertThat(run.out()).as("the walk named in the summary")
-                .contains(name.equals("vector") ? "-wide vector walk" : "scalar walk (-Draytracer.simd=false)");
+                .contains(switch (name) {
+                    case "vector" -> "-wide vector walk";
+                    case "scalar" -> "scalar walk (-Draytracer.simd=false)";
+                    default -> " walk";
+                });
         return Files.readAllBytes(png);
     }
 
