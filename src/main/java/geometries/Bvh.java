@@ -48,12 +48,14 @@ public final class Bvh extends Intersectable {
     private final BoundingBox rootBox;
     private final int nodeCount;
     private final int depth;
-    /** The wide walk of this tree, or null: then the binary nodes are walked in scalar code. */
-    private final WideWalk walk;
-    /** The wide nodes the {@link #walk} reads, or null (no walk, or a root that is a leaf). */
-    private final WideNodes wide;
-    /** Whether the {@link #wide} nodes are walked yet; before, the binary ones are, in scalar code. */
-    private final WideGate gate;
+    /**
+     * What the vector walk reads, or null: the binary nodes are then walked in scalar code. Made
+     * with the tree when a walk is asked for by name (a test, {@code -Draytracer.simd=true}), or
+     * later, while a long render walks the tree ({@link #expectLongWalk}); then published whole.
+     */
+    private volatile WideTree wide;
+    /** Whether this tree gets {@link #wide} once a long render asks and the vector walk is compiled. */
+    private final boolean widens;
 
     /**
      * The tree of {@code geometries} as they are now, for a render: the tree an earlier call
@@ -73,8 +75,8 @@ public final class Bvh extends Intersectable {
         Intersectable[] now = collected.toArray(new Intersectable[0]);
         Bvh kept = geometries.keptTree();
         if (kept != null && kept.indexes(now)) return kept;
-        Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, true, Vectorization.WALK,
-                Vectorization.COMPILED);
+        Bvh tree = new Bvh(now, Runtime.getRuntime().availableProcessors(), FORK_ABOVE, true, Vectorization.eagerWalk(),
+                true);
         for (Intersectable leaf : now)
             if (!(leaf instanceof Geometry g && g.isLibraryShape())) return tree;
         geometries.keepTree(tree);
@@ -118,7 +120,7 @@ public final class Bvh extends Intersectable {
      * when {@code pairs} (else every node with bins; for the tests that both searches agree).
      */
     static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs) {
-        return build(geometries, parallelism, forkAbove, pairs, Vectorization.WALK, Vectorization.COMPILED);
+        return build(geometries, parallelism, forkAbove, pairs, Vectorization.eagerWalk(), true);
     }
 
     /**
@@ -127,22 +129,25 @@ public final class Bvh extends Intersectable {
      * that both walks agree.
      */
     static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs, WideWalk walk) {
-        return build(geometries, parallelism, forkAbove, pairs, walk, WideGate.OPEN);
-    }
-
-    /** As {@link #build(Geometries, int, int, boolean, WideWalk)}, its wide nodes walked once {@code gate} opens. */
-    static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs, WideWalk walk, WideGate gate) {
-        if (parallelism < 1) throw new IllegalArgumentException("parallelism must be at least 1, got " + parallelism);
-        List<Intersectable> collected = new ArrayList<>();
-        geometries.collectLeaves(collected);
-        return new Bvh(collected.toArray(new Intersectable[0]), parallelism, Math.max(1, forkAbove), pairs, walk, gate);
+        return build(geometries, parallelism, forkAbove, pairs, walk, false);
     }
 
     /**
-     * Indexes {@code all}, a scene's leaves (this tree keeps the array), to be walked by
-     * {@code walk} (null: scalar) once {@code gate} is open.
+     * As {@link #build(Geometries, int, int, boolean, WideWalk)}; when {@code later}, a tree walked
+     * in scalar code at first gets this JVM's vector walk in a long render ({@link #expectLongWalk}).
      */
-    private Bvh(Intersectable[] all, int parallelism, int forkAbove, boolean pairs, WideWalk walk, WideGate gate) {
+    static Bvh build(Geometries geometries, int parallelism, int forkAbove, boolean pairs, WideWalk walk, boolean later) {
+        if (parallelism < 1) throw new IllegalArgumentException("parallelism must be at least 1, got " + parallelism);
+        List<Intersectable> collected = new ArrayList<>();
+        geometries.collectLeaves(collected);
+        return new Bvh(collected.toArray(new Intersectable[0]), parallelism, Math.max(1, forkAbove), pairs, walk, later);
+    }
+
+    /**
+     * Indexes {@code all}, a scene's leaves (this tree keeps the array), walked by {@code walk}
+     * (null: scalar) and, when {@code later}, by this JVM's vector walk once a long render asks.
+     */
+    private Bvh(Intersectable[] all, int parallelism, int forkAbove, boolean pairs, WideWalk walk, boolean later) {
         leaves = all;
         BvhBuilder built = BvhBuilder.index(all, parallelism, forkAbove, pairs);
         unbounded = built.unbounded;
@@ -156,22 +161,31 @@ public final class Bvh extends Intersectable {
         depth = built.maxDepth + 1;
         // A root that is a leaf has no children to test together, and a small tree is walked
         // faster in scalar code (WideWalk.minPrimitives).
-        boolean wideNodes = walk != null && nodeCount > 1 && prim.length >= walk.minPrimitives();
-        this.walk = wideNodes ? walk : null;
-        wide = wideNodes ? WideNodes.collapse(node, nodeCount, walk.width(), kind) : null;
-        // The wide walk tests a leaf of triangles in one vector step: its numbers in lanes.
-        if (wideNodes && packed.length > 0) TriangleLanes.arrange(node, nodeCount, kind, packed);
-        this.gate = gate;
+        if (walk != null && nodeCount > 1 && prim.length >= walk.minPrimitives())
+            wide = WideTree.of(walk, node, nodeCount, kind, packed);
+        widens = later && wide == null && nodeCount > 1 && Vectorization.AVAILABLE && prim.length >= Vectorization.MIN_PRIMITIVES;
     }
 
     /**
-     * This tree will be walked for seconds more (a long render, {@code RenderLoop}): when its wide
-     * nodes wait behind the JVM's closed gate, the vector walk is warmed ({@link VectorWarmUp}),
-     * once per JVM. Not before: the warm-up costs about a second of processor time, which a
-     * short render would lose.
+     * This tree will be walked for seconds more (a long render, {@code RenderLoop}): a tree large
+     * enough for the vector walk gets its wide part when the walk runs compiled in this JVM
+     * ({@link Vectorization#COMPILED}), and until then the walk is warmed ({@link VectorWarmUp}),
+     * once per JVM. Not before: the warm-up costs about a second of processor time, which a short
+     * render would lose.
      */
     void expectLongWalk() {
-        if (wide != null && gate == Vectorization.COMPILED && !gate.isOpen()) VectorWarmUp.start();
+        if (!widens || wide != null) return;
+        if (Vectorization.COMPILED.get()) widen(Vectorization.walk());
+        else VectorWarmUp.start();
+    }
+
+    /**
+     * Gives this tree its wide part for {@code walk} (null: none), unless it has one: from the
+     * next ray on, every thread walks it with {@code walk}. The same hits either way, so a render
+     * may take it between two rays.
+     */
+    synchronized void widen(WideWalk walk) {
+        if (wide == null && walk != null && nodeCount > 1) wide = WideTree.of(walk, node, nodeCount, kind, packed);
     }
 
     /**
@@ -239,7 +253,8 @@ public final class Bvh extends Intersectable {
      */
     public long indexBytes() {
         // The packed records, without the few doubles of padding after them (TriangleLanes.PADDING).
-        return BvhNodes.bytes(nodeCount) + (wide == null ? 0 : wide.bytes()) + prim.length * 9L
+        WideTree w = wide;
+        return BvhNodes.bytes(nodeCount) + (w == null ? 0 : w.bytes(prim.length)) + prim.length * 9L
                 + (packed.length == 0 ? 0 : prim.length * (long) PACKED * Double.BYTES);
     }
 
@@ -288,8 +303,8 @@ public final class Bvh extends Intersectable {
         // A walk already in progress on this record (this one's caller, through a user's shape
         // that walks a tree of its own with the record) owns the record's stack: this one then
         // takes arrays of its own. Rare (only user shapes do it), so the common walk allocates nothing.
-        // The wide walk's stack, or the binary walk's while the gate is closed: room for either.
-        int size = wide == null ? depth : Math.max(depth, wide.stackSize());
+        WideTree w = wide; // read once: another thread may publish it meanwhile
+        int size = w == null ? depth : w.nodes().stackSize();
         boolean nested = hit.walking;
         int[] stack;
         double[] stackT;
@@ -303,7 +318,7 @@ public final class Bvh extends Intersectable {
             hit.walking = true;
         }
         try {
-            return (wide != null && gate.isOpen() ? walk.closestHit(this, wide.node, hit, stack, stackT)
+            return (w != null ? w.walk().closestHit(this, w.nodes().node, w.lanes(), hit, stack, stackT)
                     : binaryClosestHit(hit, stack, stackT, ox, oy, oz, ix, iy, iz)) | found;
         } finally {
             if (!nested) hit.walking = false;
@@ -333,9 +348,7 @@ public final class Bvh extends Intersectable {
             int rec = BvhNodes.at(n);
             int count = BvhNodes.count(nd, rec);
             if (count > 0) {
-                int first = BvhNodes.first(nd, rec);
-                found |= wide != null && TriangleLanes.fits(kind, first, count) ? closestInLanes(first, count, hit)
-                        : closestInLeaf(first, count, hit);
+                found |= closestInLeaf(BvhNodes.first(nd, rec), count, hit);
             } else {
                 int left = n + 1, right = BvhNodes.right(nd, rec);
                 double tMax = limit(hit.t);
@@ -389,39 +402,10 @@ public final class Bvh extends Intersectable {
         return found;
     }
 
-    /**
-     * {@link #closestInLeaf} of a leaf laid out in lanes ({@link TriangleLanes}), one triangle at
-     * a time: the scalar walk of a tree with wide nodes, before the vector walk is compiled
-     * ({@link WideGate}).
-     */
-    private boolean closestInLanes(int first, int count, Hit hit) {
-        boolean found = false;
-        for (int j = 0; j < count; ++j)
-            found |= offerTriangle(first + j, Triangle.intersect(hit, packed, TriangleLanes.row(first, count, 0) + j, count), hit);
-        return found;
-    }
-
-    /** {@link #visitInLeaf} of a leaf laid out in lanes, as {@link #closestInLanes}. */
-    private boolean visitInLanes(int first, int count, Hit query, double maxDistance, HitVisitor visitor) {
-        for (int j = 0; j < count; ++j) {
-            double t = Triangle.intersect(query, packed, TriangleLanes.row(first, count, 0) + j, count);
-            if (!visitTriangle(first + j, t, maxDistance, visitor)) return false;
-        }
-        return true;
-    }
-
     /** @return the wide nodes the vector walk reads, or null when this tree is walked in scalar code (for the tests) */
     WideNodes wideNodes() {
-        return wide;
-    }
-
-    /**
-     * The packed numbers the leaves are tested from: a scalar leaf's as {@link BvhLeaf#pack}
-     * writes them, a lane leaf's of a tree with wide nodes as {@link TriangleLanes} lays them out.
-     * For the wide walk's test of a lane leaf.
-     */
-    double[] packed() {
-        return packed;
+        WideTree w = wide;
+        return w == null ? null : w.nodes();
     }
 
     /**
@@ -488,15 +472,17 @@ public final class Bvh extends Intersectable {
         double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
         // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
-        if (wide != null && gate.isOpen()) {
+        WideTree w = wide;
+        if (w != null) {
             if (entry(0, ox, oy, oz, ix, iy, iz, limit) == Double.POSITIVE_INFINITY) return true;
-            int size = wide.stackSize();
+            int size = w.nodes().stackSize();
             // As the closest-hit walk's stack: a walk in progress on this record keeps its own.
-            if (query.walking) return walk.visitHits(this, wide.node, query, limit, maxDistance, visitor, new int[size]);
+            if (query.walking)
+                return w.walk().visitHits(this, w.nodes().node, w.lanes(), query, limit, maxDistance, visitor, new int[size]);
             reserveStack(query, size);
             query.walking = true;
             try {
-                return walk.visitHits(this, wide.node, query, limit, maxDistance, visitor, query.stack);
+                return w.walk().visitHits(this, w.nodes().node, w.lanes(), query, limit, maxDistance, visitor, query.stack);
             } finally {
                 query.walking = false;
             }
@@ -510,11 +496,7 @@ public final class Bvh extends Intersectable {
                 n = BvhNodes.skip(count, n);
                 continue;
             }
-            if (count > 0) {
-                int first = BvhNodes.first(nd, rec);
-                if (!(wide != null && TriangleLanes.fits(kind, first, count) ? visitInLanes(first, count, query, maxDistance, visitor)
-                        : visitInLeaf(first, count, query, maxDistance, visitor))) return false;
-            }
+            if (count > 0 && !visitInLeaf(BvhNodes.first(nd, rec), count, query, maxDistance, visitor)) return false;
             ++n; // into an inner node's left child, or past a leaf
         }
         return true;

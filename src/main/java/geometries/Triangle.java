@@ -72,17 +72,7 @@ public class Triangle extends Polygon {
 
     /** {@link #intersect} of a triangle packed at {@code s[at..at + 9)} by {@link #pack}. */
     static double intersect(Hit query, double[] s, int at) {
-        return intersect(query, s, at, 1);
-    }
-
-    /**
-     * {@link #intersect} of a triangle whose nine packed numbers lie {@code step} apart from
-     * {@code s[at]} on: 1 as {@link #pack} writes them, the leaf's triangle count in a leaf laid
-     * out in lanes ({@link TriangleLanes}), which the scalar walk reads this way.
-     */
-    static double intersect(Hit query, double[] s, int at, int step) {
-        return intersect(query, s[at], s[at + step], s[at + 2 * step], s[at + 3 * step], s[at + 4 * step],
-                s[at + 5 * step], s[at + 6 * step], s[at + 7 * step], s[at + 8 * step]);
+        return intersect(query, s[at], s[at + 1], s[at + 2], s[at + 3], s[at + 4], s[at + 5], s[at + 6], s[at + 7], s[at + 8]);
     }
 
     /** Möller–Trumbore instead of the polygon's plane-then-edges test. */

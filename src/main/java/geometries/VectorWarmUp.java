@@ -9,26 +9,27 @@ import com.sun.management.HotSpotDiagnosticMXBean;
 import primitives.Point;
 
 /**
- * Opens the JVM's gate ({@link Vectorization#COMPILED}) once its vector walk runs compiled: a
- * daemon thread, started when a render is long enough ({@link Bvh#expectLongWalk}), walks a small tree of its own
- * with both walks, the same rays in turn, until the vector walk's rounds take at most
- * {@link #COMPILED_RATIO} times the scalar walk's, {@link #STREAK} rounds running.
+ * Finds out when this JVM's vector walk runs compiled, and then sets
+ * {@link Vectorization#COMPILED}: a daemon thread, started by the first long render
+ * ({@link Bvh#expectLongWalk}), loads the vector walk and walks a small tree of its own with both
+ * walks, the same rays in turn, until the vector walk's rounds take at most
+ * {@link #COMPILED_RATIO} times the scalar walk's, {@link #STREAK} rounds running. A long render's
+ * tree then gets its wide part at its next tile, and the render's threads the vector walk.
  *
  * <p>Why a thread and a tree of its own: the vector code becomes fast only when the optimizing
  * compiler has compiled it, after some 10<sup>5</sup> rays run interpreted or in the quick tier,
  * where its vectors are objects (tens of microseconds a ray). On a small tree those rays cost a
  * few hundred milliseconds of one core; on a render's tree, in the render's threads, they cost
  * about a second of a short render (BENCHMARKS.md, "The vector walk in a fresh JVM"). Meanwhile
- * the render walks its tree in scalar code, at its usual speed, and takes the vector walk from
- * the ray after the gate opens: the code compiled on the small tree runs the large one as fast
- * as a warm JVM does. A walk still many times slower than the scalar one is still interpreted; a
- * compiled one is within a small factor of it, faster on large trees (the ratio only tells the
- * two states apart, {@link WideWalk#minPrimitives} decides which trees take the wide walk). A
- * JVM that never compiles it (the quick tier only, {@code -XX:TieredStopAtLevel=1} or
- * {@code -XX:-TieredCompilation} with the interpreter) keeps its gate closed and is not warmed;
- * nor is a JVM so busy that the vector walk is not compiled within {@link #GIVE_UP_CPU_NANOS} of
- * the thread's processor time. The images do not depend on any of this, only the time: both
- * walks return the same hits.
+ * the render walks its tree in scalar code, at its usual speed; the code compiled on the small
+ * tree runs the large one as fast as a warm JVM does. A walk still many times slower than the
+ * scalar one is still interpreted; a compiled one is within a small factor of it, faster on large
+ * trees (the ratio only tells the two states apart, {@link Vectorization#MIN_PRIMITIVES} decides
+ * which trees take the wide walk). A JVM that never compiles it (the quick tier only,
+ * {@code -XX:TieredStopAtLevel=1}, or {@code -Xint}) is not warmed and keeps the scalar walk; nor
+ * is a JVM so busy that the vector walk is not compiled within {@link #GIVE_UP_CPU_NANOS} of the
+ * thread's processor time. The images do not depend on any of this, only the time: both walks
+ * return the same hits.
  */
 final class VectorWarmUp implements Runnable {
     /** A compiled vector walk takes at most this many times the scalar walk's time on the warm-up tree. */
@@ -36,17 +37,14 @@ final class VectorWarmUp implements Runnable {
     /** Rounds in a row that must be that fast: one round is a few milliseconds, a scheduler's hiccup can flatter one. */
     static final int STREAK = 3;
     /**
-     * The warm-up stops, the gate closed, when the vector walk is not compiled after this much of
+     * The warm-up stops, the vector walk never taken, when it is not compiled after this much of
      * its thread's processor time (ns): about six times what it takes on a quiet machine.
      */
     static final long GIVE_UP_CPU_NANOS = 3_000_000_000L;
     /** Closest-hit rays, and as many any-hit queries, per walk and round. */
     private static final int RAYS_PER_ROUND = 64;
 
-    private final WideWalk walk;
-
-    private VectorWarmUp(WideWalk walk) {
-        this.walk = walk;
+    private VectorWarmUp() {
     }
 
     /** Starts the warm-up of this JVM's vector walk, once per JVM (later calls return at once). */
@@ -57,7 +55,7 @@ final class VectorWarmUp implements Runnable {
     /** The lazy holder: the JVM initialises it once, on the first {@link #start}, whichever thread asks. */
     private static final class Once {
         static {
-            Thread thread = new Thread(new VectorWarmUp(Vectorization.WALK), "raytracer vector walk warm-up");
+            Thread thread = new Thread(new VectorWarmUp(), "raytracer vector walk warm-up");
             thread.setDaemon(true);
             thread.start();
         }
@@ -69,10 +67,12 @@ final class VectorWarmUp implements Runnable {
 
     @Override
     public void run() {
-        if (walk == null || !optimizingCompiler()) return;
+        if (!optimizingCompiler()) return;
+        WideWalk walk = Vectorization.walk(); // the vector classes load here, on this thread
+        if (walk == null) return;
         Geometries shapes = shapes(walk.minPrimitives());
-        Bvh wide = Bvh.build(shapes, 1, Integer.MAX_VALUE, true, walk, WideGate.OPEN);
-        Bvh scalar = Bvh.build(shapes, 1, Integer.MAX_VALUE, true, null, WideGate.OPEN);
+        Bvh wide = Bvh.build(shapes, 1, Integer.MAX_VALUE, true, walk);
+        Bvh scalar = Bvh.build(shapes, 1, Integer.MAX_VALUE, true, null);
         if (wide.wideNodes() == null) return; // cannot happen: the tree is made large enough
         ThreadMXBean threads = ManagementFactory.getThreadMXBean();
         long start = threads.getCurrentThreadCpuTime();
@@ -86,7 +86,7 @@ final class VectorWarmUp implements Runnable {
             long t2 = System.nanoTime();
             streak = t1 - t0 <= COMPILED_RATIO * (t2 - t1) ? streak + 1 : 0;
             if (streak == STREAK) {
-                Vectorization.COMPILED.open();
+                Vectorization.COMPILED.set(true);
                 return;
             }
         }

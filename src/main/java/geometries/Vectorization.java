@@ -1,69 +1,97 @@
 package geometries;
 
 import java.lang.reflect.InvocationTargetException;
+import java.util.concurrent.atomic.AtomicBoolean;
 
 /**
- * Which walk the trees of this JVM use, chosen once when the class initialises (Apache Lucene's
- * {@code VectorizationProvider} pattern): the {@code VectorWalk} of wide nodes when the
- * incubating Vector API is readable ({@code --add-modules jdk.incubator.vector}) and the CPU's
- * vectors hold four doubles (AVX2 and later); the scalar walk of binary nodes otherwise. A tree
- * a render builds takes the vector walk only once it runs compiled ({@link #COMPILED}); until
- * then, and in a JVM that never compiles it, the scalar walk. Nothing is required of anyone:
- * {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true} takes the
- * vector walk from the first ray (a JVM that renders for long: a benchmark, a Spark executor).
- * Both walks return the same hits, so the choice changes speed only, never an image.
+ * Which walk the trees of this JVM take (Apache Lucene's {@code VectorizationProvider} pattern):
+ * the {@code VectorWalk} of wide nodes where the incubating Vector API is readable
+ * ({@code --add-modules jdk.incubator.vector}) and the CPU's vectors hold four doubles (AVX2 and
+ * later); the scalar walk of binary nodes otherwise. A render's tree takes the vector walk only
+ * in a render with seconds of work left, once the walk runs compiled ({@link #COMPILED},
+ * {@link Bvh#expectLongWalk}): a short render never loads a vector class. Nothing is required
+ * of anyone: {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true}
+ * gives every tree the vector walk from its first ray (a JVM that renders for long: a benchmark,
+ * a Spark executor). Both walks return the same hits, so the choice changes speed only, never an
+ * image.
  */
 final class Vectorization {
     /** The system property: {@code false} forces the scalar walk, {@code true} the vector walk from the first ray. */
     static final String PROPERTY = "raytracer.simd";
     private static final String MODULE = "jdk.incubator.vector";
-
-    /** The wide walk of this JVM, or null for the scalar walk. */
-    static final WideWalk WALK;
+    /** Whether this JVM may take the vector walk: the module is readable and not refused by the property. */
+    static final boolean AVAILABLE;
+    /** Whether {@code -Draytracer.simd=true} asks for the vector walk from the first ray. */
+    private static final boolean EAGER;
+    /** Why the scalar walk when not {@link #AVAILABLE}; null when it is. */
+    private static final String WHY_NOT;
     /**
-     * The gate of the trees a render builds: opened by {@link VectorWarmUp} once {@link #WALK}
-     * runs compiled in this JVM (open from the start with {@code -Draytracer.simd=true}), never
-     * when there is no {@link #WALK}. The one piece of state a JVM shares between its renders,
-     * and it decides speed only: both walks give the same hits.
+     * The smallest tree worth the wide walk on this JDK. A vector step costs more than the few
+     * scalar box tests of a shallow tree: the renders of the benchmark (interleaved A/B, one
+     * thread) ran slower with the vector walk on a scene of 72 shapes (glossy: 1.08x on JDK 17,
+     * 1.11x on JDK 25) and faster from 133 shapes on JDK 25 (showcase: 0.75-0.92x); on JDK 17,
+     * whose vector code is slower, from about 10^4 triangles (meshes: 1.5-1.9x faster; the teapot
+     * scene of 1,392 shapes on par, the showcase of 133 mixed).
      */
-    static final WideGate COMPILED;
-    /** Why there is no {@link #WALK}, in words; null when there is one. */
-    private static final String WHY_SCALAR;
+    static final int MIN_PRIMITIVES = Runtime.version().feature() >= 25 ? 128 : 4096;
+    /**
+     * Whether the vector walk runs compiled in this JVM: set by {@link VectorWarmUp} (from the
+     * start with {@code -Draytracer.simd=true}), never unset. The one piece of state a JVM's
+     * renders share, and it decides speed only: both walks give the same hits.
+     */
+    static final AtomicBoolean COMPILED;
 
     static {
-        WideWalk walk = null;
-        String why;
         String asked = System.getProperty(PROPERTY);
-        if ("false".equalsIgnoreCase(asked)) {
-            why = "-D" + PROPERTY + "=false";
-        } else if (ModuleLayer.boot().findModule(MODULE).isEmpty()) {
-            why = "no " + MODULE;
-        } else {
-            try {
-                walk = (WideWalk) Class.forName("geometries.VectorWalk").getConstructor().newInstance();
-                why = null;
-            } catch (InvocationTargetException e) {
-                why = e.getCause().getMessage(); // the walk's own reason: a CPU without 256-bit vectors
-            } catch (ReflectiveOperationException | LinkageError e) {
-                why = "the vector walk did not load: " + e;
-            }
-        }
-        WALK = walk;
-        WHY_SCALAR = why;
-        COMPILED = new WideGate(walk != null && "true".equalsIgnoreCase(asked));
-    }
-
-    /**
-     * @return one line: the walk a render's tree takes now (the vector one once {@link #COMPILED}
-     *         is open) and, for the scalar one, why
-     */
-    static String describe() {
-        if (WALK == null) return "scalar walk (" + WHY_SCALAR + ")";
-        return COMPILED.isOpen() ? WALK.description()
-                : "scalar walk (the " + WALK.width() + "-wide vector walk is not compiled yet)";
+        if ("false".equalsIgnoreCase(asked)) WHY_NOT = "-D" + PROPERTY + "=false";
+        else if (ModuleLayer.boot().findModule(MODULE).isEmpty()) WHY_NOT = "no " + MODULE;
+        else WHY_NOT = null;
+        AVAILABLE = WHY_NOT == null;
+        EAGER = AVAILABLE && "true".equalsIgnoreCase(asked);
+        COMPILED = new AtomicBoolean(EAGER);
     }
 
     private Vectorization() {
     }
 
+    /** The walk, loaded the first time it is asked for (by the warm-up's thread, or at once when {@link #EAGER}). */
+    private static final class Loaded {
+        static final WideWalk WALK;
+        static final String WHY_NOT;
+
+        static {
+            WideWalk walk = null;
+            String why = null;
+            try {
+                walk = (WideWalk) Class.forName("geometries.VectorWalk").getConstructor().newInstance();
+            } catch (InvocationTargetException e) {
+                why = e.getCause().getMessage(); // the walk's own reason: a CPU without 256-bit vectors
+            } catch (ReflectiveOperationException | LinkageError e) {
+                why = "the vector walk did not load: " + e;
+            }
+            WALK = walk;
+            WHY_NOT = why;
+        }
+    }
+
+    /** @return this JVM's vector walk, or null where there is none (not {@link #AVAILABLE}, or the CPU refused it) */
+    static WideWalk walk() {
+        return AVAILABLE ? Loaded.WALK : null;
+    }
+
+    /** @return the walk a render's tree gets when it is built: this JVM's vector walk with {@code -Draytracer.simd=true}, else none */
+    static WideWalk eagerWalk() {
+        return EAGER ? walk() : null;
+    }
+
+    /**
+     * @return one line: the walk a render's tree takes now (the vector one once {@link #COMPILED},
+     *         for trees of {@link #MIN_PRIMITIVES} or more) and, for the scalar one, why
+     */
+    static String describe() {
+        if (!AVAILABLE) return "scalar walk (" + WHY_NOT + ")";
+        if (!COMPILED.get()) return "scalar walk (the vector walk is not compiled yet: a short render)";
+        WideWalk walk = walk();
+        return walk != null ? walk.description() : "scalar walk (" + Loaded.WHY_NOT + ")";
+    }
 }

@@ -20,19 +20,22 @@ interface WideWalk {
      * The closest hit below {@code hit}'s bound among the primitives under the wide root (whose
      * box the caller has tested), by the tree's tie rule.
      *
+     * @param lanes  the tree's packed numbers with its lane leaves transposed ({@link WideTree#lanes})
      * @param stack  room for {@link WideNodes#stackSize()} children, owned by this walk
      * @param stackT their entry distances
      * @return whether a primitive was hit (the record then holds it)
      */
-    boolean closestHit(Bvh tree, float[] node, Hit hit, int[] stack, double[] stackT);
+    boolean closestHit(Bvh tree, float[] node, double[] lanes, Hit hit, int[] stack, double[] stackT);
 
     /**
      * Every hit within {@code maxDistance} below the wide root, to {@code visitor}, in the scalar
      * walk's order (the tree's leaf order).
      *
+     * @param lanes the tree's packed numbers with its lane leaves transposed ({@link WideTree#lanes})
      * @param limit the distance up to which boxes are entered (a little past maxDistance)
      * @param stack room for {@link WideNodes#stackSize()} children, owned by this walk
      * @return false when the visitor stopped the walk
      */
-    boolean visitHits(Bvh tree, float[] node, Hit query, double limit, double maxDistance, HitVisitor visitor, int[] stack);
+    boolean visitHits(Bvh tree, float[] node, double[] lanes, Hit query, double limit, double maxDistance, HitVisitor visitor,
+                      int[] stack);
 }

@@ -44,16 +44,6 @@ final class VectorWalk implements WideWalk {
     private static final DoubleVector INFINITY = DoubleVector.broadcast(DOUBLES, Double.POSITIVE_INFINITY);
     /** Whether this JDK compiles {@code VectorMask.toLong} to one instruction (from JDK 18 on). */
     private static final boolean MASK_TO_BITS = Runtime.version().feature() >= 18;
-    /**
-     * The smallest tree worth the wide walk on this JDK. A vector step costs more than the few
-     * scalar box tests of a shallow tree: the renders of the benchmark (interleaved A/B, one
-     * thread) ran slower with the vector walk on a scene of 72 shapes (glossy: 1.08x on JDK 17,
-     * 1.11x on JDK 25) and faster from 133 shapes on JDK 25 (showcase: 0.75-0.92x); on JDK 17,
-     * whose vector code is slower, from about 10^4 triangles (meshes: 1.5-1.9x faster; the teapot
-     * scene of 1,392 shapes on par, the showcase of 133 mixed).
-     */
-    private static final int MIN_PRIMITIVES = Runtime.version().feature() >= 25 ? 128 : 4096;
-
     /** Primitives a tree must index for this walk to take it. */
     private final int minPrimitives;
 
@@ -64,7 +54,7 @@ final class VectorWalk implements WideWalk {
      *                                       where the Vector API would emulate them, slower than the scalar walk
      */
     public VectorWalk() {
-        minPrimitives = MIN_PRIMITIVES;
+        minPrimitives = Vectorization.MIN_PRIMITIVES;
         int bits = DoubleVector.SPECIES_PREFERRED.vectorBitSize();
         if (bits < DOUBLES.vectorBitSize())
             throw new UnsupportedOperationException(bits + "-bit vectors");
@@ -154,12 +144,11 @@ final class VectorWalk implements WideWalk {
     }
 
     @Override
-    public boolean closestHit(Bvh tree, float[] nd, Hit hit, int[] stack, double[] stackT) {
+    public boolean closestHit(Bvh tree, float[] nd, double[] packed, Hit hit, int[] stack, double[] stackT) {
         double ox = hit.ox, oy = hit.oy, oz = hit.oz;
         double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
         double[] entries = hit.lanes;
         int[] lanes = hit.laneOrder;
-        double[] packed = tree.packed();
         boolean found = false;
         int top = 0, w = 0;
         while (true) {
@@ -221,12 +210,11 @@ final class VectorWalk implements WideWalk {
     }
 
     @Override
-    public boolean visitHits(Bvh tree, float[] nd, Hit query, double limit, double maxDistance, HitVisitor visitor,
-                             int[] stack) {
+    public boolean visitHits(Bvh tree, float[] nd, double[] packed, Hit query, double limit, double maxDistance,
+                             HitVisitor visitor, int[] stack) {
         double ox = query.ox, oy = query.oy, oz = query.oz;
         double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
         double[] entries = query.lanes;
-        double[] packed = tree.packed();
         double bound = Bvh.limit(limit);
         int top = 0, w = 0;
         while (true) {

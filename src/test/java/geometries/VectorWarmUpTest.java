@@ -16,10 +16,12 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 
+import primitives.Point;
+
 /**
- * The warm-up that opens the JVM's gate ({@link Vectorization#COMPILED}): its tree takes every
- * path of the walks, it is not run where the vector code would never be compiled, and it opens
- * the gate in a JVM that compiles it.
+ * The warm-up that finds the vector walk compiled ({@link Vectorization#COMPILED}): its tree
+ * takes every path of the walks, it is not run where the vector code would never be compiled, and
+ * it finds the walk compiled in a JVM that compiles it.
  */
 @DisplayName("the vector walk's warm-up")
 class VectorWarmUpTest {
@@ -61,15 +63,24 @@ class VectorWarmUpTest {
     }
 
     @Test
-    @DisplayName("opens the JVM's gate once the vector walk runs compiled (this test JVM has the module)")
+    @DisplayName("says so once the vector walk runs compiled (this test JVM has the module)")
     void opensTheGate() throws InterruptedException {
-        assumeTrue(Vectorization.WALK != null, "no vector walk in this JVM: " + Bvh.walkDescription());
+        assumeTrue(Vectorization.walk() != null, "no vector walk in this JVM: " + Bvh.walkDescription());
         assumeTrue(VectorWarmUp.optimizingCompiler(), "this JVM does not compile with C2");
         VectorWarmUp.start();
         VectorWarmUp.start(); // once per JVM: a second call starts nothing
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-        while (!Vectorization.COMPILED.isOpen() && System.nanoTime() < deadline) Thread.sleep(20);
-        assertThat(Vectorization.COMPILED.isOpen()).as("the gate, within two minutes").isTrue();
+        while (!Vectorization.COMPILED.get() && System.nanoTime() < deadline) Thread.sleep(20);
+        assertThat(Vectorization.COMPILED.get()).as("compiled, within two minutes").isTrue();
         assertThat(Bvh.walkDescription()).matches("[48]-wide vector walk \\(trees of \\d+ primitives or more\\)");
+
+        // A render's tree, large enough, gets its wide part when a long render says so; a small one never.
+        Bvh large = Bvh.build(new Geometries(BvhTest.gridMesh(60)));
+        Bvh small = Bvh.build(new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(3, 0, 0), 1)));
+        assertThat(large.wideNodes()).as("before a long render").isNull();
+        large.expectLongWalk();
+        small.expectLongWalk();
+        assertThat(large.wideNodes()).as("after").isNotNull();
+        assertThat(small.wideNodes()).as("a tree below the walk's size").isNull();
     }
 }

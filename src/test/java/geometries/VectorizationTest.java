@@ -8,7 +8,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import java.util.regex.Pattern;
 
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
@@ -28,7 +27,7 @@ class VectorizationTest {
     @ParameterizedTest(name = "{0} → {1}")
     @CsvSource(delimiter = '|', value = {
             "''|scalar walk (no jdk.incubator.vector)",
-            "--add-modules jdk.incubator.vector|scalar walk (the [48]-wide vector walk is not compiled yet)",
+            "--add-modules jdk.incubator.vector|scalar walk (the vector walk is not compiled yet: a short render)",
             "--add-modules jdk.incubator.vector -Draytracer.simd=true|-wide vector walk",
             "--add-modules jdk.incubator.vector -Draytracer.simd=false|scalar walk (-Draytracer.simd=false)",
             "-Draytracer.simd=true|scalar walk (no jdk.incubator.vector)"})
@@ -44,6 +43,6 @@ class VectorizationTest {
         assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
         assertThat(p.exitValue()).isZero();
         if (expected.startsWith("-wide")) assertThat(out).matches("[48]" + expected + " \\(trees of \\d+ primitives or more\\)");
-        else assertThat(out).matches(Pattern.quote(expected).replace("[48]", "\\E[48]\\Q"));
+        else assertThat(out).isEqualTo(expected);
     }
 }

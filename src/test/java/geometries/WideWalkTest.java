@@ -43,14 +43,19 @@ class WideWalkTest {
     }
 
     /**
-     * The tree {@link #vector} builds, behind a closed gate: walked by the scalar walk over its
-     * binary nodes, which reads the leaves laid out in lanes one triangle at a time (a render's
-     * tree before its vector walk is compiled, {@link WideGate}).
+     * A tree walked in scalar code that gets its wide part between two rays ({@link Bvh#widen}),
+     * as a render's tree does once its vector walk is compiled: {@link #later} widens it.
      */
-    private static Bvh closedGate(Geometries g) {
-        Bvh tree = Bvh.build(g, 1, 4096, true, VectorWalk.anyCpu(), new WideGate(false));
-        assertThat(tree.wideNodes() != null || tree.nodeCount() <= 1).as("wide nodes behind the gate").isTrue();
-        return tree;
+    private static Bvh widenedLater(Geometries g) {
+        return Bvh.build(g, 1, 4096, true, null);
+    }
+
+    /** Widens {@code tree} at the middle of the rays, {@code i} being the ray's number. */
+    private static void later(Bvh tree, int i, int rays) {
+        if (i != rays / 2) return;
+        assertThat(tree.wideNodes()).as("before").isNull();
+        tree.widen(VectorWalk.anyCpu());
+        assertThat(tree.wideNodes() != null || tree.nodeCount() <= 1).as("wide nodes after").isTrue();
     }
 
     /** The scenes of the tree's own tests, with meshes, lattices and degenerate boxes. */
@@ -90,13 +95,16 @@ class WideWalkTest {
     @MethodSource("scenes")
     @DisplayName("the same closest hit for every ray: geometry, primitive and distance")
     void sameClosestHits(Scene scene) {
-        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries()), c = closedGate(scene.geometries());
+        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries()), c = widenedLater(scene.geometries());
         Hit a = new Hit(), b = new Hit();
         int hits = 0;
-        for (Ray ray : rays(scene, 11)) {
+        List<Ray> rays = rays(scene, 11);
+        for (int i = 0; i < rays.size(); ++i) {
+            Ray ray = rays.get(i);
+            later(c, i, rays.size());
             boolean fa = s.closestHit(a.setRay(ray).reset(Double.POSITIVE_INFINITY));
             for (Bvh wide : List.of(v, c)) {
-                String walk = wide == v ? "vector walk" : "scalar walk of the wide tree";
+                String walk = wide == v ? "vector walk" : "tree widened at ray " + rays.size() / 2;
                 boolean fb = wide.closestHit(b.setRay(ray).reset(Double.POSITIVE_INFINITY));
                 assertThat(fb).as("%s: hit or miss for %s", walk, ray).isEqualTo(fa);
                 if (!fa) continue;
@@ -114,14 +122,17 @@ class WideWalkTest {
     @MethodSource("scenes")
     @DisplayName("the same any-hit visits in the same order, within random distances")
     void sameVisits(Scene scene) {
-        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries()), c = closedGate(scene.geometries());
+        Bvh s = scalar(scene.geometries()), v = vector(scene.geometries()), c = widenedLater(scene.geometries());
         Random rnd = new Random(5);
         int visits = 0;
-        for (Ray ray : rays(scene, 12)) {
+        List<Ray> rays = rays(scene, 12);
+        for (int i = 0; i < rays.size(); ++i) {
+            Ray ray = rays.get(i);
+            later(c, i, rays.size());
             double max = rnd.nextBoolean() ? Double.POSITIVE_INFINITY : 3 * scene.half() * rnd.nextDouble();
             List<Visit> expected = Hits.visited(s, ray, max);
             assertThat(Hits.visited(v, ray, max)).as("visits within %s for %s", max, ray).containsExactlyElementsOf(expected);
-            assertThat(Hits.visited(c, ray, max)).as("scalar walk of the wide tree: visits within %s for %s", max, ray)
+            assertThat(Hits.visited(c, ray, max)).as("tree widened at the middle ray: visits within %s for %s", max, ray)
                     .containsExactlyElementsOf(expected);
             visits += expected.size();
         }

@@ -102,6 +102,7 @@ final class SparkCommand {
             return SparkEntry.BAD_INPUT;
         }
         QuietLog.onExecutors(conf, quiet);
+        ExecutorWalk.fromTheFirstRay(conf);
         String master = conf.get("spark.master");
         if (!runsInThisJvm(master) && !conf.contains("spark.jars")) {
             // Outside spark-submit nothing ships this program's classes to a cluster's executors,
