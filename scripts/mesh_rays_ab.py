@@ -49,7 +49,8 @@ def main() -> int:
     parser.add_argument("--java", default="java")
     parser.add_argument("--time", choices=("cpu", "wall"), default="cpu",
                         help="the tracing thread's CPU time (default: less disturbed by other processes) or wall time")
-    parser.add_argument("--options", default="--add-modules jdk.incubator.vector", help="JVM options of both sides")
+    parser.add_argument("--options", default="--add-modules jdk.incubator.vector -Draytracer.simd=true",
+                        help="JVM options of both sides (default: the vector walk from the first ray)")
     args = parser.parse_args()
     cps = {"A": classpath(args.a.resolve()), "B": classpath(args.b.resolve())}
     options = args.options.split()

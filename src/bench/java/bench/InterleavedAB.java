@@ -133,10 +133,13 @@ public final class InterleavedAB {
             throws IOException, InterruptedException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Xmx8g"));
-        // The children read the vector module when this JVM does: an A/B with and without the
-        // BVH's vector walk is this command run with and without --add-modules jdk.incubator.vector.
+        // The children read the vector module when this JVM does, and take the walk this JVM was
+        // told to (-Draytracer.simd): an A/B with and without the BVH's vector walk is this command
+        // run with --add-modules jdk.incubator.vector -Draytracer.simd=true and without.
         if (ModuleLayer.boot().findModule("jdk.incubator.vector").isPresent())
             command.addAll(List.of("--add-modules", "jdk.incubator.vector"));
+        String simd = System.getProperty("raytracer.simd");
+        if (simd != null) command.add("-Draytracer.simd=" + simd);
         command.addAll(List.of("-cp", System.getProperty("java.class.path"), InterleavedAB.class.getName(),
                 "--a", a, "--b", b, "--pairs", Integer.toString(pairs), "--raw", "--"));
         command.addAll(Arrays.asList(benchArgs));

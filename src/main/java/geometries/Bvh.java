@@ -30,6 +30,12 @@ public final class Bvh extends Intersectable {
      * worth a task (about 0.1 ms of work).
      */
     private static final int FORK_ABOVE = 4096;
+    /**
+     * Whether the walks count their tests into the hit record ({@link Hit#boxTests}), for the
+     * benchmark's counts: {@code -Draytracer.walkCounts=true}. A constant, so that in every other
+     * JVM the compilers drop the counting, and the walk counted is the walk that runs.
+     */
+    static final boolean COUNTING = Boolean.getBoolean("raytracer.walkCounts");
 
     /** The leaves this tree indexes, as collected: what it contributes to a tree built around it. */
     private final Intersectable[] leaves;
@@ -299,6 +305,7 @@ public final class Bvh extends Intersectable {
         if (nodeCount == 0) return found;
         double ox = hit.ox, oy = hit.oy, oz = hit.oz;
         double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
+        if (COUNTING) ++hit.boxTests;
         if (!(entry(0, ox, oy, oz, ix, iy, iz, hit.t) <= limit(hit.t))) return found;
         // A walk already in progress on this record (this one's caller, through a user's shape
         // that walks a tree of its own with the record) owns the record's stack: this one then
@@ -352,6 +359,7 @@ public final class Bvh extends Intersectable {
             } else {
                 int left = n + 1, right = BvhNodes.right(nd, rec);
                 double tMax = limit(hit.t);
+                if (COUNTING) hit.boxTests += 2;
                 double tl = entry(left, ox, oy, oz, ix, iy, iz, tMax);
                 double tr = entry(right, ox, oy, oz, ix, iy, iz, tMax);
                 // One branch where there were four: a missed child's entry is +∞, above the
@@ -384,6 +392,7 @@ public final class Bvh extends Intersectable {
      */
     boolean closestInLeaf(int first, int count, Hit hit) {
         boolean found = false;
+        if (COUNTING) hit.primitiveTests += count;
         for (int k = first, end = first + count; k < end; ++k) {
             byte kd = kind[k];
             if (kd == OWN) {
@@ -400,6 +409,11 @@ public final class Bvh extends Intersectable {
             }
         }
         return found;
+    }
+
+    /** @return the binary node records, as {@link BvhNodes} lays them out (for the benchmark's tree shape; not to be written) */
+    float[] nodes() {
+        return node;
     }
 
     /** @return the wide nodes the vector walk reads, or null when this tree is walked in scalar code (for the tests) */

@@ -65,6 +65,12 @@ public class Hit {
      * compares ({@code Bvh.closestHit}).
      */
     int order = -1;
+    /**
+     * The boxes and the primitives a tree's walk tested for this record, counted only in a JVM
+     * run with {@code -Draytracer.walkCounts=true} ({@link Bvh#COUNTING}): for the benchmark's
+     * counts ({@code geometries.WalkCounts}). Otherwise never written.
+     */
+    long boxTests, primitiveTests;
     /** The vector walk's scratch: the entry distances of a wide node's children, and their order. */
     final double[] lanes = new double[WideNodes.MAX_WIDTH];
     final int[] laneOrder = new int[WideNodes.MAX_WIDTH];
