@@ -1,12 +1,9 @@
 package renderer;
 
 import java.io.PrintStream;
-import java.nio.file.Path;
-import java.util.Locale;
 import java.util.MissingResourceException;
 import java.util.Objects;
 import java.util.function.BiConsumer;
-
 
 import primitives.Color;
 import primitives.CourseClassGuard;
@@ -22,60 +19,36 @@ import scene.Scene;
  * and {@code renderImage()} and {@code writeToImage(...)}. The library's improvements
  * (anti-aliasing, depth of field, threads, progress) are one builder line each.
  *
- * <p>A pinhole (or thin-lens) camera: a facade over what it sees ({@link View}), how a render
- * samples ({@code Sampling}) and runs ({@code Execution}), the tracer that colours each camera
- * ray and the image writer that receives the pixels. Made by {@link Builder#build()}, which
- * checks each setting in the value that owns it. Shallowly immutable: its values do not change,
- * but the tracer stays mutable (a render holds it to the ray budget again and prepares it for
- * the scene as it is then) and the image writer receives each render's pixels. The pixel loop
- * itself lives in {@code RenderLoop}, the sampling strategies in the samplers.
+ * <p>A pinhole (or thin-lens) camera: a facade over its view, sampling and execution (see the
+ * {@linkplain renderer package page}), its tracer and its image writer. Its settings do not change;
+ * a render prepares the tracer for the scene as it is then, and fills the image writer.
  */
 public final class Camera {
-    /**
-     * Render threads per available core at most: rendering is bound by the processor, so more
-     * threads than cores gain nothing, and a few times more stay harmless; a count such as 100,000
-     * would exhaust the native threads of the machine.
-     */
+    /** Render threads per available core at most ({@link #maxThreads()}); far more would exhaust the machine's threads. */
     public static final int MAX_THREADS_PER_CORE = Execution.MAX_THREADS_PER_CORE;
-    /**
-     * The most primary samples of one pixel from the RANDOM grid (columns × rows) or the depth of
-     * field's lens samples: 65,536 (a 256×256 grid), so that the count fits an int and a pixel
-     * ends (ADAPTIVE's depth 6 stays below it, at most 65² lattice points).
-     */
+    /** The most primary samples of a pixel, a RANDOM grid's or a lens's: 65,536 (256×256), so that a pixel ends. */
     public static final int MAX_SAMPLES_PER_PIXEL = Sampling.MAX_SAMPLES_PER_PIXEL;
     /** ADAPTIVE's deepest subdivision when none is set ({@link Builder#setAdaptive}): sub-pixels down to 1/8 of the side. */
     public static final int DEFAULT_ADAPTIVE_DEPTH = Sampling.DEFAULT_ADAPTIVE_DEPTH;
     /** ADAPTIVE's pixel-level corner spread that subdivides when none is set ({@link Builder#setAdaptive}), 0..255 scale. */
     public static final double DEFAULT_ADAPTIVE_THRESHOLD = Sampling.DEFAULT_ADAPTIVE_THRESHOLD;
 
-    private final View view;
-    private final Sampling sampling;
-    private final Execution execution;
-    private final RayTracerBase rayTracer;
+    /** The view, sampling, execution and tracer, held to the ray budget together when built. */
+    private final RenderSetup setup;
     private final ImageWriter imageWriter;
     /** Whether the camera made its writer from a resolution (not given one to share). */
     private final boolean ownWriter;
-    /** Whether a render prints its one-line summary and a write its line. */
-    private final boolean summary;
-    /** Told of each finished render (a test's report, for example); by default nobody. */
-    private final BiConsumer<? super Camera, ? super RenderStats> renderListener;
+    /** Whom its renders and writes tell, and whether they print their lines. */
+    private final CameraOutput output;
 
-    private Camera(View view, Sampling sampling, Execution execution, RayTracerBase rayTracer, ImageWriter imageWriter,
-                   boolean ownWriter, boolean summary, BiConsumer<? super Camera, ? super RenderStats> renderListener) {
-        this.view = view;
-        this.sampling = sampling;
-        this.execution = execution;
-        this.rayTracer = rayTracer;
+    private Camera(RenderSetup setup, ImageWriter imageWriter, boolean ownWriter, CameraOutput output) {
+        this.setup = setup;
         this.imageWriter = imageWriter;
         this.ownWriter = ownWriter;
-        this.summary = summary;
-        this.renderListener = renderListener;
+        this.output = output;
     }
 
-    /**
-     * @return the most render threads this machine allows: {@link #MAX_THREADS_PER_CORE} per
-     *         available core
-     */
+    /** @return the most render threads this machine allows: {@link #MAX_THREADS_PER_CORE} per available core */
     public static int maxThreads() {
         return Execution.maxThreads();
     }
@@ -86,8 +59,7 @@ public final class Camera {
     }
 
     /**
-     * A builder that starts from a built camera's settings (the form some cohorts use to render
-     * a second view); see {@link Builder#Builder(Camera)}.
+     * A builder starting from a built camera's settings, to render a second view: see {@link Builder#Builder(Camera)}.
      *
      * @param camera the camera whose settings the builder starts from
      * @return a new builder holding those settings
@@ -99,29 +71,25 @@ public final class Camera {
 
     /** @return where the camera stands: the rays' common head (the lens centre with depth of field) */
     public Point getLocation() {
-        return view.location();
+        return view().location();
     }
 
     /** @return the unit view direction, through the view plane's centre */
     public Vector getVTo() {
-        return view.frame().to();
+        return view().frame().to();
     }
 
     /** @return the image's unit up direction, orthogonal to {@link #getVTo()} */
     public Vector getVUp() {
-        return view.frame().up();
+        return view().frame().up();
     }
 
     /** @return the image's unit right direction: vTo × vUp */
     public Vector getVRight() {
-        return view.frame().right();
+        return view().frame().right();
     }
 
-    /**
-     * @return the image writer this camera renders into (the one given to the builder, or the one
-     *         it made for {@link Builder#setResolution}): its pixels, size and name, for reading a
-     *         render back, for example to compare it with a reference image
-     */
+    /** @return the image writer this camera renders into: to read a render back, say to compare it with a reference */
     public ImageWriter getImageWriter() {
         return imageWriter;
     }
@@ -138,12 +106,11 @@ public final class Camera {
      * @throws IllegalArgumentException for a non-positive resolution or a pixel outside it
      */
     public Ray constructRay(int nX, int nY, int j, int i) {
-        return view.constructRay(nX, nY, j, i);
+        return view().constructRay(nX, nY, j, i);
     }
 
     /**
-     * The 2025–26 form of {@link #constructRay(int, int, int, int)}: the ray through the centre of
-     * pixel (column j, row i) of this camera's own resolution (its image writer's).
+     * The 2025–26 form of {@link #constructRay(int, int, int, int)}, at this camera's own resolution.
      *
      * @param j the column, 0 at the left
      * @param i the row, 0 at the top
@@ -154,16 +121,16 @@ public final class Camera {
         return constructRay(imageWriter.getNx(), imageWriter.getNy(), j, i);
     }
 
+    RenderSetup setup() {
+        return setup;
+    }
+
     View view() {
-        return view;
+        return setup.view();
     }
 
     Sampling sampling() {
-        return sampling;
-    }
-
-    Execution execution() {
-        return execution;
+        return setup.sampling();
     }
 
     ImageWriter imageWriter() {
@@ -171,16 +138,19 @@ public final class Camera {
     }
 
     RayTracerBase rayTracer() {
-        return rayTracer;
+        return setup.tracer();
+    }
+
+    /** @return the sampling settings in words, for summaries and benchmark tables */
+    String describe() {
+        return setup.describe();
     }
 
     /**
-     * Renders the image into the image writer and returns what it did; prints the one-line
-     * summary unless silenced ({@code render NAME: TIME, WxH [sampling] of scene 'SCENE', figures},
-     * the time and figures being those of {@link RenderStats#toString()}). NAME is the image writer's name or, for a writer named only
-     * when written ({@link Builder#setResolution}), the calling test method's
-     * ({@code SpheresTest.twoSpheres()}). While a JDK Flight Recorder recording runs, the render
-     * is also a {@code raytracer.Render} event.
+     * Renders the image into the image writer and, unless silenced ({@link Builder#setSummary}),
+     * prints one summary line: {@code render NAME: TIME, WxH [sampling] of scene 'SCENE', figures}
+     * (docs/student-guide.md, "What a render prints"). While a JDK Flight Recorder recording runs,
+     * the render is also a {@code raytracer.Render} event.
      *
      * @return the render's time and ray counts, as printed in the summary
      * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
@@ -189,63 +159,23 @@ public final class Camera {
      *                                                    may mix two states and must not be written
      */
     public RenderStats render() {
-        String name = getImageLabel();
-        String scene = getSceneName();
-        RenderEvent event = ImageEvent.recording() ? new RenderEvent() : null; // see RenderEvent
-        RenderStats stats = new RenderLoop(view, sampling, execution, rayTracer, imageWriter).render(name);
-        if (event != null) event.commit(name, scene, imageWriter, sampling.antiAliasing(), stats);
-        renderListener.accept(this, stats);
-        if (summary) execution.output().println("render " + name + ": " + stats.time() + ", " + imageWriter.getNx() + "x"
-                + imageWriter.getNy() + " [" + describe() + "] of scene '" + scene + "', " + stats.figures() + rayTracer.walk());
-        return stats;
+        return output.render(this);
     }
 
     /**
-     * The name the summary and write lines, progress lines, test reports and JFR events give the
-     * image: its writer's name, or for an unnamed writer (named only when written, the 2024–25
-     * flow) the calling test method ({@code SpheresTest.twoSpheres()}), or {@code (unnamed)}
-     * outside a test.
-     *
-     * @return the image's name as this camera's reports show it
-     */
-    String getImageLabel() {
-        return imageWriter.hasName() ? imageWriter.getImageName()
-                : CallingTest.find().orElse(imageWriter.getImageName());
-    }
-
-    /**
-     * @return the name of the scene this camera's tracer traces ({@link Scene#name}), as reports show it
-     */
-    String getSceneName() {
-        return rayTracer.scene.name;
-    }
-
-    /**
-     * Renders the image (see {@link #render()}); the course's spelling, for chaining
-     * {@code renderImage().writeToImage()}.
+     * Renders the image as {@link #render()} does: the course's spelling, for {@code renderImage().writeToImage()}.
      *
      * @return this camera, for chaining
-     * @throws java.util.concurrent.CancellationException when the calling thread is interrupted
-     * @throws java.util.ConcurrentModificationException  when the scene changed during the render
+     * @throws java.util.concurrent.CancellationException as {@link #render()}
+     * @throws java.util.ConcurrentModificationException  as {@link #render()}
      */
     public Camera renderImage() {
         render();
         return this;
     }
 
-    /** @return the sampling settings in words, for summaries and benchmark tables */
-    String describe() {
-        return describe(sampling, view.lens(), rayTracer);
-    }
-
-    /** The words of {@link #describe()}, for a camera or a builder's settings. */
-    private static String describe(Sampling sampling, View.Lens lens, RayTracerBase tracer) {
-        return sampling.describe(lens) + ", " + tracer.describe() + ", seed " + sampling.seed();
-    }
-
     /**
-     * Paints a grid over the image: every pixel whose column or row is a multiple of
-     * {@code interval}.
+     * Paints a grid over the image: every pixel whose column or row is a multiple of {@code interval}.
      *
      * @param interval the grid's spacing in pixels, &gt; 0
      * @param color    the grid lines' colour
@@ -264,116 +194,73 @@ public final class Camera {
 
     /**
      * Writes the image to images/&lt;name&gt;.png, the name the image writer was made with, and
-     * unless silenced prints {@code write NAME: /absolute/path.png in 0.042 s} (NAME as in the
-     * render's summary).
+     * unless silenced prints {@code write NAME: /absolute/path.png in 0.042 s}.
      *
      * @return this camera, for chaining (the course's {@code void} callers ignore it)
      * @throws IllegalStateException when the camera's writer has no name (it was made from
      *                               {@link Builder#setResolution}): use {@link #writeToImage(String)}
      */
     public Camera writeToImage() {
-        return write(imageWriter.getPath());
+        output.write(this, imageWriter.getPath());
+        return this;
     }
 
     /**
-     * Writes the image to images/&lt;imageName&gt;.png (the 2024–25 course's form) and prints the
-     * line of {@link #writeToImage()}.
+     * Writes the image to images/&lt;imageName&gt;.png (the 2024–25 form), with the line of {@link #writeToImage()}.
      *
      * @param imageName the file name without ".png"; may contain sub-folders
      * @return this camera, for chaining (most 2024–25 sources return it; {@code void} callers ignore it)
      * @throws IllegalArgumentException for a blank name
      */
     public Camera writeToImage(String imageName) {
-        return write(ImageWriter.pathOf(imageName));
-    }
-
-    /**
-     * Writes the PNG (a {@code raytracer.ImageWrite} JFR event while a recording runs), tells a
-     * render listener that is also a {@link WriteListener}, and unless silenced prints a line with
-     * the image's name, the file and the time it took, and says so when nothing was drawn on the
-     * image (no render or grid: the PNG is all black).
-     */
-    private Camera write(Path file) {
-        String name = getImageLabel();
-        Path target = file.toAbsolutePath();
-        long start = System.nanoTime();
-        imageWriter.writeToImage(target); // the public method: a subclass of ImageWriter may override it
-        double seconds = (System.nanoTime() - start) / 1e9;
-        if (renderListener instanceof WriteListener listener) listener.written(this, target, seconds);
-        if (summary) execution.output().println(String.format(Locale.ROOT, "write %s: %s in %.3f s", name, target, seconds)
-                + (imageWriter.isBlank() ? " (" + ImageWriter.BLANK + ")" : ""));
+        output.write(this, ImageWriter.pathOf(imageName));
         return this;
     }
 
     /**
-     * Collects camera settings. Most setters validate at once; the view plane's size and distance
-     * and the resolution are checked by {@link #build()} (the 2025–26 course sets them up first
-     * and expects only {@code build()} to throw), still naming the bad value. A builder can be
-     * reused: each build returns an independent camera.
-     * <p>Defaults (the 2024–25 course's): without an image writer or resolution the image is
-     * 1×1; without a tracer, a {@link SimpleRayTracer} on an empty scene.
+     * Collects camera settings: most setters check at once, the view plane and the resolution only
+     * at {@link #build()}, which also gives the 2024–25 course's defaults (docs/student-guide.md,
+     * "Which course year?", says why). A builder can be reused: each build makes an independent camera.
      */
     public static final class Builder {
-        private Point location;
-        private Vector to, up;
-        private Point target;
-        private double vpWidth, vpHeight, vpDistance;
-        private boolean vpSizeSet, vpDistanceSet;
-        /** Degrees the frame is turned about the view direction at build ({@link #rotate}), in [0, 360). */
-        private int roll;
-        /** The resolution for a writer the camera makes itself; used when imageWriter is null. */
-        private int nX = 1, nY = 1;
+        /** The location, direction, roll, view plane, resolution and lens, made into a View by build(). */
+        private final ViewDraft draft;
+        /** The writer given, which cameras built share; null: each camera makes its own of the resolution set. */
         private ImageWriter imageWriter;
         private RayTracerBase rayTracer;
         /** Every mode's parameters, the lens samples and the seed: each setter replaces one part. */
         private Sampling sampling = Sampling.DEFAULT;
-        private View.Lens lens = View.Lens.PINHOLE;
         /** As set: -1 and -2 (all cores) are resolved when a camera is built. */
         private int threads;
         private double debugPrint;
-        private boolean summary = true;
-        private PrintStream output = System.out;
-        private BiConsumer<? super Camera, ? super RenderStats> renderListener = (camera, stats) -> {
-        };
+        /** Whether lines are printed, where, and whom renders are told of: each setter replaces one part. */
+        private CameraOutput output = CameraOutput.standard();
 
         /** The same as {@link Camera#getBuilder()}, for cohorts that write {@code new Camera.Builder()}. */
         public Builder() {
             CourseClassGuard.check();
+            draft = new ViewDraft();
         }
 
         /**
-         * A builder holding a built camera's settings, to change some and build another camera;
-         * the camera is not changed. The two share the tracer, and the image writer when one was
-         * given with {@link #setImageWriter}; a camera that made its own writer from
-         * {@link #setResolution} passes on the resolution, so each camera built makes its own.
-         * The direction is the camera's final frame (to and up); a thread count of -1 or -2 is
-         * passed on as the number of cores it became.
+         * A builder holding a built camera's settings, to change some and build another camera
+         * (the camera is not changed; docs/student-guide.md, "Which course year?", says what the
+         * two share). The direction is the camera's final frame, a thread count of -1 or -2 the
+         * number of cores it became.
          *
          * @param camera the camera whose settings the builder starts from
          * @throws NullPointerException when camera is null, naming it
          */
         public Builder(Camera camera) {
-            this();
+            CourseClassGuard.check();
             Objects.requireNonNull(camera, "camera to copy");
-            View view = camera.view;
-            location = view.location();
-            to = view.frame().to();
-            up = view.frame().up();
-            vpWidth = view.plane().width();
-            vpHeight = view.plane().height();
-            vpDistance = view.plane().distance();
-            vpSizeSet = vpDistanceSet = true;
-            nX = camera.imageWriter.getNx();
-            nY = camera.imageWriter.getNy();
+            draft = new ViewDraft(camera.view());
             imageWriter = camera.ownWriter ? null : camera.imageWriter;
-            rayTracer = camera.rayTracer;
-            sampling = camera.sampling;
-            lens = view.lens();
-            threads = camera.execution.threads();
-            debugPrint = camera.execution.progressStep();
-            summary = camera.summary;
-            output = camera.execution.output();
-            renderListener = camera.renderListener;
+            rayTracer = camera.rayTracer();
+            sampling = camera.sampling();
+            threads = camera.setup.execution().threads();
+            debugPrint = camera.setup.execution().progressStep();
+            output = camera.output;
         }
 
         /**
@@ -381,7 +268,7 @@ public final class Camera {
          * @return this builder
          */
         public Builder setLocation(Point location) {
-            this.location = Objects.requireNonNull(location, "camera location");
+            draft.location(location);
             return this;
         }
 
@@ -394,59 +281,45 @@ public final class Camera {
          * @throws IllegalArgumentException when the two are not orthogonal
          */
         public Builder setDirection(Vector to, Vector up) {
-            View.Frame frame = View.Frame.along(to, up);
-            this.to = frame.to();
-            this.up = frame.up();
-            this.target = null;
+            draft.direction(to, up);
             return this;
         }
 
         /**
-         * Looks at {@code target}; {@code up} need not be orthogonal to the view direction: the
-         * image's up is its part orthogonal to it.
+         * Looks at {@code target}; the image's up is the part of {@code up} orthogonal to the view direction.
          *
          * @param target the point at the image's centre
          * @param up     the up hint, not parallel to the view direction (checked by {@link #build()})
          * @return this builder
          */
         public Builder setDirection(Point target, Vector up) {
-            this.target = Objects.requireNonNull(target, "camera target");
-            this.up = Objects.requireNonNull(up, "camera up").normalize();
-            this.to = null;
+            draft.target(target, up);
             return this;
         }
 
         /**
-         * Looks at {@code target} with +y as the up hint (the image's up is its part orthogonal
-         * to the view direction).
+         * Looks at {@code target} with +y as the up hint.
          *
          * @param target the point at the image's centre
          * @return this builder
-         * @throws IllegalArgumentException from {@link #build()} when the target lies straight
-         *                                  along ±y from the location (no up can be derived;
-         *                                  give one with {@link #setDirection(Point, Vector)})
+         * @throws IllegalArgumentException from {@link #build()} when the target lies along ±y from the
+         *                                  location: give an up with {@link #setDirection(Point, Vector)}
          */
         public Builder setDirection(Point target) {
-            this.target = Objects.requireNonNull(target, "camera target");
-            this.up = null;
-            this.to = null;
+            draft.target(target);
             return this;
         }
 
         /**
-         * Turns the camera about its view direction by {@code degrees} (the 2025–26 course's
-         * camera roll). The sign follows the right-hand rule about the view direction: a positive
-         * angle takes the image's up toward its right, so {@code rotate(90)} makes the old right
-         * the new up; seen from behind the camera it turns clockwise, and the scene turns
-         * counter-clockwise in the image. The turn applies to whichever direction is set, before
-         * or after this call, when {@link #build()} makes the frame; calls add up
-         * ({@code rotate(30).rotate(60)} is {@code rotate(90)}).
+         * Turns the camera about its view direction (the 2025–26 course's roll), by the right-hand
+         * rule: {@code rotate(90)} makes the old right the new up. It applies at {@link #build()},
+         * to whichever direction is set, and calls add up (docs/student-guide.md, "Which course year?").
          *
          * @param degrees the angle in degrees, any int (taken modulo 360)
          * @return this builder
          */
         public Builder rotate(int degrees) {
-            this.roll = Math.floorMod(roll + Math.floorMod(degrees, 360), 360);
+            draft.roll(degrees);
             return this;
         }
 
@@ -458,22 +331,18 @@ public final class Camera {
          * @return this builder
          */
         public Builder setVpSize(double width, double height) {
-            this.vpWidth = width;
-            this.vpHeight = height;
-            this.vpSizeSet = true;
+            draft.size(width, height);
             return this;
         }
 
         /**
-         * The view plane's distance from the location along the view direction; checked by
-         * {@link #build()}.
+         * The view plane's distance from the location along the view direction; checked by {@link #build()}.
          *
          * @param distance a positive finite number of scene units
          * @return this builder
          */
         public Builder setVpDistance(double distance) {
-            this.vpDistance = distance;
-            this.vpDistanceSet = true;
+            draft.distance(distance);
             return this;
         }
 
@@ -499,8 +368,7 @@ public final class Camera {
         }
 
         /**
-         * A course spelling of the bounding-volume switch on the camera: does nothing, the render
-         * always walks the scene's BVH (as {@link Scene#buildBVH()}).
+         * A course spelling of the BVH switch: does nothing, the render always walks the scene's BVH.
          *
          * @return this builder
          */
@@ -509,8 +377,8 @@ public final class Camera {
         }
 
         /**
-         * The course's conservative bounding region (boxes tested before shapes): does nothing,
-         * the render's BVH does that and more (as {@link #enableBVH()}).
+         * The course's conservative bounding region (boxes tested before shapes): does nothing, the
+         * render's BVH does that and more (as {@link #enableBVH()}).
          *
          * @return this builder
          */
@@ -527,23 +395,20 @@ public final class Camera {
          */
         public Builder setImageWriter(ImageWriter imageWriter) {
             this.imageWriter = Objects.requireNonNull(imageWriter, "image writer");
-            this.nX = imageWriter.getNx();
-            this.nY = imageWriter.getNy();
+            draft.resolution(imageWriter.getNx(), imageWriter.getNy());
             return this;
         }
 
         /**
-         * The image size (the 2024–25 form): each built camera makes its own unnamed writer of
-         * this size (replaces an {@link #setImageWriter image writer} given before); name the
-         * file with {@link Camera#writeToImage(String)}. Checked by {@link #build()}.
+         * The image size (the 2024–25 form; replaces an {@link #setImageWriter image writer}), checked by
+         * {@link #build()}: each camera built makes its own writer, named by {@link Camera#writeToImage(String)}.
          *
          * @param nX the number of columns, positive
          * @param nY the number of rows, positive
          * @return this builder
          */
         public Builder setResolution(int nX, int nY) {
-            this.nX = nX;
-            this.nY = nY;
+            draft.resolution(nX, nY);
             this.imageWriter = null;
             return this;
         }
@@ -564,7 +429,6 @@ public final class Camera {
          * @param scene the scene to trace
          * @param type  the kind of tracer
          * @return this builder
-         * @throws NullPointerException when scene or type is null
          */
         public Builder setRayTracer(Scene scene, RayTracerType type) {
             Objects.requireNonNull(scene, "scene");
@@ -572,7 +436,7 @@ public final class Camera {
         }
 
         /**
-         * @param mode how pixels are sampled (default NONE)
+         * @param mode how pixels are sampled (default NONE; {@link AntiAliasing} says what each mode does)
          * @return this builder
          */
         public Builder setAntiAliasing(AntiAliasing mode) {
@@ -581,8 +445,7 @@ public final class Camera {
         }
 
         /**
-         * RANDOM anti-aliasing with a grid of columns × rows jittered samples per pixel (one line
-         * for both settings).
+         * RANDOM anti-aliasing with a grid of columns × rows jittered samples per pixel, in one line.
          *
          * @param mode    must be RANDOM
          * @param columns jittered samples across a pixel, ≥ 1
@@ -592,11 +455,8 @@ public final class Camera {
          *                                  {@link #setAdaptive} for ADAPTIVE) or a grid below 1×1
          */
         public Builder setAntiAliasing(AntiAliasing mode, int columns, int rows) {
-            if (mode != AntiAliasing.RANDOM)
-                throw new IllegalArgumentException("a " + columns + "x" + rows + " grid applies to RANDOM anti-aliasing only, got "
-                        + mode + (mode == AntiAliasing.ADAPTIVE ? " (use setAdaptive(depth, threshold))" : ""));
-            setAntiAliasingGrid(columns, rows);
-            return setAntiAliasing(mode);
+            this.sampling = sampling.withRandomGrid(mode, columns, rows);
+            return this;
         }
 
         /**
@@ -614,14 +474,12 @@ public final class Camera {
         }
 
         /**
-         * ADAPTIVE's settings ({@link AntiAliasing#ADAPTIVE} says how they are used): the deepest
-         * subdivision (default {@value Camera#DEFAULT_ADAPTIVE_DEPTH}) and the threshold (default
-         * {@value Camera#DEFAULT_ADAPTIVE_THRESHOLD}); other modes ignore them.
+         * ADAPTIVE's settings ({@link AntiAliasing#ADAPTIVE} says how they are used), other modes ignore
+         * them: the deepest subdivision (default {@value #DEFAULT_ADAPTIVE_DEPTH}) and the threshold
+         * (default {@value #DEFAULT_ADAPTIVE_THRESHOLD}).
          *
          * @param maxDepth  the deepest subdivision, 1..6
-         * @param threshold the pixel-level corner spread that subdivides, finite and ≥ 0 (0: any
-         *                  difference subdivides; corners that agree exactly, as on a flat
-         *                  background, never do)
+         * @param threshold the pixel-level corner spread that subdivides, finite and ≥ 0 (0: any difference does)
          * @return this builder
          * @throws IllegalArgumentException when either is out of range, naming it
          */
@@ -631,17 +489,16 @@ public final class Camera {
         }
 
         /**
-         * Depth of field with a thin lens: objects at {@code focalDistance} (along the view
-         * direction, scene units) stay sharp, the blur grows with {@code apertureRadius}
-         * (scene units). Aperture 0 is the pinhole camera.
+         * Depth of field with a thin lens: objects at {@code focalDistance} stay sharp, the blur
+         * grows with {@code apertureRadius}; aperture 0 is the pinhole camera.
          *
-         * @param focalDistance  the distance of the sharp plane, positive and finite
-         * @param apertureRadius the lens radius, finite and ≥ 0
+         * @param focalDistance  the distance of the sharp plane along the view direction, in scene units, positive
+         * @param apertureRadius the lens radius in scene units, finite and ≥ 0
          * @return this builder
          * @throws IllegalArgumentException when either is out of range, naming it
          */
         public Builder setDepthOfField(double focalDistance, double apertureRadius) {
-            this.lens = View.Lens.thin(focalDistance, apertureRadius);
+            draft.lens(View.Lens.thin(focalDistance, apertureRadius));
             return this;
         }
 
@@ -651,14 +508,14 @@ public final class Camera {
          * @return this builder
          */
         public Builder setPinhole() {
-            this.lens = View.Lens.PINHOLE;
+            draft.lens(View.Lens.PINHOLE);
             return this;
         }
 
         /**
-         * Lens samples per pixel with depth of field and no anti-aliasing (default 16), stratified
-         * over the lens (16 cover it as a jittered 4×4 grid would); with anti-aliasing, each
-         * anti-aliasing sample takes its own lens point instead.
+         * Lens samples per pixel with depth of field and no anti-aliasing (default 16), stratified over the
+         * lens; with anti-aliasing each sample takes its own lens point (docs/student-guide.md, "The
+         * improvements in detail", compares the modes).
          *
          * @param samples rays per pixel, 1 to {@link #MAX_SAMPLES_PER_PIXEL}
          * @return this builder
@@ -693,9 +550,7 @@ public final class Camera {
 
         /**
          * @param threads 0: render on the calling thread; n &gt; 0: n worker threads, at most
-         *                {@link #maxThreads()}; -2: one per available core; -1 (the course's
-         *                "parallel streams"): the same as -2, the library's one render loop on all
-         *                cores
+         *                {@link #maxThreads()}; -2, or the course's -1 ("parallel streams"): one per core
          * @return this builder
          * @throws IllegalArgumentException for another value, naming it and the limit
          */
@@ -715,64 +570,34 @@ public final class Camera {
         }
 
         /**
-         * @param on whether to print the one-line summary after each render and the line with the
-         *           file and its time after each write (default true)
+         * @param on whether each render prints its summary line and each write its line (default true)
          * @return this builder
          */
         public Builder setSummary(boolean on) {
-            this.summary = on;
+            this.output = output.withSummary(on);
             return this;
         }
 
         /**
          * @param output where progress lines, the summary and the write line go (default System.out)
          * @return this builder
-         * @throws NullPointerException when it is null
          */
         public Builder setOutput(PrintStream output) {
-            this.output = Objects.requireNonNull(output, "output stream");
+            this.output = this.output.withStream(Objects.requireNonNull(output, "output stream"));
             return this;
         }
 
         /**
-         * Someone to tell of each render, after the render loop and before the summary line: for
-         * example {@code renderer.junit.RenderReports.to(testReporter)}, which publishes the
-         * render's figures in a JUnit test's report. It runs on the thread that called
-         * {@link Camera#render()}. A listener that is also a {@link WriteListener} is told of
-         * each {@code writeToImage} of the camera as well, after the PNG is in place.
+         * Someone to tell of each render, after the render loop and before the summary line, on the
+         * thread that called {@link Camera#render()}: {@code renderer.junit.RenderReports.to(testReporter)},
+         * say (docs/student-guide.md, "Asserting images"). A {@link WriteListener} hears of the writes too.
          *
          * @param listener called with the camera and what its render did
          * @return this builder
-         * @throws NullPointerException when it is null
          */
         public Builder setRenderListener(BiConsumer<? super Camera, ? super RenderStats> listener) {
-            this.renderListener = Objects.requireNonNull(listener, "render listener");
+            this.output = output.withListener(Objects.requireNonNull(listener, "render listener"));
             return this;
-        }
-
-        /**
-         * Checks the view settings alone and returns the {@link View} they make, without an image
-         * or a tracer. The checks and messages are {@link #build()}'s, in the same order.
-         *
-         * @return the view of the current settings (the resolution is the image writer's, or the
-         *         one set, 1×1 by default)
-         * @throws MissingResourceException naming the location or direction when it is missing
-         * @throws IllegalArgumentException when the view plane's size or distance is missing,
-         *                                  when it or the resolution is not positive (naming the
-         *                                  value), or when a target is the location or lies along
-         *                                  the up direction from it
-         */
-        View view() {
-            final String missing = "Missing rendering data";
-            final String camera = "Camera";
-            if (location == null) throw new MissingResourceException(missing + ": location", camera, "location");
-            if (to == null && target == null) throw new MissingResourceException(missing + ": direction", camera, "direction");
-            if (!vpSizeSet) throw new IllegalArgumentException(missing + ": view plane size (setVpSize)");
-            View.ViewPlane.requireSize(vpWidth, vpHeight);
-            if (!vpDistanceSet) throw new IllegalArgumentException(missing + ": view plane distance (setVpDistance)");
-            View.ViewPlane plane = new View.ViewPlane(vpWidth, vpHeight, vpDistance, nX, nY);
-            View.Frame frame = (to != null ? View.Frame.of(to, up) : View.Frame.lookingAt(location, target, up)).rolled(roll);
-            return new View(location, frame, plane, lens);
         }
 
         /**
@@ -781,67 +606,37 @@ public final class Camera {
          *
          * @return a new camera, independent of cameras built before
          * @throws MissingResourceException naming the location or direction when it is missing
-         * @throws IllegalArgumentException when the view plane's size or distance is missing, when
-         *                                  it or the resolution is not positive (naming the
-         *                                  value), when the settings contradict each other, or
-         *                                  when a pixel would take more than
-         *                                  {@link RayBudget#MAX_RAYS_PER_PIXEL} rays (camera
-         *                                  samples × (1 + 2 beams) × (1 + shadow samples × the
-         *                                  scene's soft lights + its other lights), naming them)
+         * @throws IllegalArgumentException when the view plane's size or distance is missing, when it or the
+         *                                  resolution is not positive (naming the value), when the settings
+         *                                  contradict each other, or when a pixel would take more than
+         *                                  {@link RayBudget#MAX_RAYS_PER_PIXEL} rays (docs/performance.md, "Limits")
          */
         public Camera build() {
-            View view = view();
-            RayTracerBase tracer = tracer();
-            // Before the image is allocated: a refused budget costs no memory.
-            SamplerPlan plan = withinBudget(view.lens(), tracer);
-            ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(nX, nY);
-            return new Camera(view, sampling, execution(plan), tracer, writer, imageWriter == null, summary, renderListener);
+            RenderSetup setup = setup(); // before the image is allocated: a refused budget costs no memory
+            View.ViewPlane plane = setup.view().plane();
+            ImageWriter writer = imageWriter != null ? imageWriter : new ImageWriter(plane.nX(), plane.nY());
+            return new Camera(setup, writer, imageWriter == null, output);
         }
 
-        /**
-         * Checks the settings as {@link #build()} does and makes a renderer of rectangles of the
-         * image, without allocating the image (see {@link RegionRenderer#of(Builder)}).
-         */
+        /** The view of the settings alone, without an image or a tracer: {@link #build()}'s checks, in its order. */
+        View view() {
+            return draft.view();
+        }
+
+        /** The settings checked as {@link #build()} checks them (the view, then the ray budget), no image allocated. */
+        RenderSetup setup() {
+            return RenderSetup.check(view(), sampling, tracer(), threads, debugPrint, output.stream());
+        }
+
+        /** A renderer of rectangles of the image, checked as {@link #build()} checks (see {@link RegionRenderer#of(Builder)}). */
         RegionRenderer regionRenderer() {
-            View view = view();
-            RayTracerBase tracer = tracer();
-            SamplerPlan plan = withinBudget(view.lens(), tracer);
-            String name = imageWriter != null && imageWriter.hasName() ? imageWriter.getImageName() : "region";
-            return new RegionRenderer(view, sampling, execution(plan), tracer, name);
+            RenderSetup setup = setup();
+            return new RegionRenderer(setup, imageWriter != null && imageWriter.hasName() ? imageWriter.getImageName() : "region");
         }
 
-        /**
-         * Checks the settings as {@link #build()} does, without allocating the image or preparing
-         * the scene (see {@link CameraReports#describe(Builder)}).
-         *
-         * @return the settings in words, as the built camera's summary line will show them
-         */
-        String describeChecked() {
-            View view = view();
-            RayTracerBase tracer = tracer();
-            withinBudget(view.lens(), tracer);
-            return describe(sampling, view.lens(), tracer);
-        }
-
-        /**
-         * Holds the settings to the ray budget as {@link #build()} does, with no view: the budget
-         * depends on the sampling, the lens, the tracer and its scene's lights alone (see
-         * {@link CameraReports#requireRayBudget(Builder)}).
-         */
+        /** Holds the settings to {@link #build()}'s ray budget with no view: it needs the sampling, lens and tracer alone. */
         void requireRayBudget() {
-            withinBudget(lens, tracer());
-        }
-
-        /** The sampling's plan under {@code lens}, its ray budget held with {@code tracer}. */
-        private SamplerPlan withinBudget(View.Lens lens, RayTracerBase tracer) {
-            SamplerPlan plan = sampling.plan(!lens.isPinhole());
-            tracer.requireRayBudget(plan);
-            return plan;
-        }
-
-        /** The execution of a camera with this builder's settings, the tile size its sampler's. */
-        private Execution execution(SamplerPlan sampling) {
-            return new Execution(Execution.resolveThreads(threads), sampling.tileSize(), debugPrint, output);
+            RenderSetup.withinBudget(sampling, draft.lens(), tracer());
         }
 
         /** The tracer given, or a {@link SimpleRayTracer} on an empty scene. */

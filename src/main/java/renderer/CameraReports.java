@@ -1,10 +1,13 @@
 package renderer;
 
+import java.nio.file.Path;
+import java.util.Locale;
+
 /**
  * What reports say of a camera: its image's name, its scene's name and its sampling settings in
- * words. Static, and apart from {@link Camera}, so that a student completing {@code camera.} sees
- * the course's methods only; the JUnit reports ({@code renderer.junit}) and the Spark entry, in
- * other packages, call these.
+ * words, and (package-private) the lines its renders and writes print. Static, and apart from
+ * {@link Camera}, so that a student completing {@code camera.} sees the course's methods only; the
+ * JUnit reports ({@code renderer.junit}) and the Spark entry, in other packages, call these.
  *
  * @hidden internal: the camera's words for reports; a scene test renders and writes the image
  */
@@ -22,7 +25,8 @@ public final class CameraReports {
      * @return the image's name as the camera's reports show it
      */
     public static String imageLabel(Camera camera) {
-        return camera.getImageLabel();
+        ImageWriter image = camera.imageWriter();
+        return image.hasName() ? image.getImageName() : CallingTest.find().orElse(image.getImageName());
     }
 
     /**
@@ -30,7 +34,7 @@ public final class CameraReports {
      * @return the name of the scene the camera's tracer traces ({@code Scene.name})
      */
     public static String sceneName(Camera camera) {
-        return camera.getSceneName();
+        return camera.rayTracer().sceneName();
     }
 
     /**
@@ -39,6 +43,26 @@ public final class CameraReports {
      */
     public static String describe(Camera camera) {
         return camera.describe();
+    }
+
+    /**
+     * The line a render prints unless silenced: {@code render NAME: TIME, WxH [settings] of scene
+     * 'SCENE', figures}, the time and figures those of {@link RenderStats#toString()}, then the
+     * tracer's walk (docs/student-guide.md, "What a render prints").
+     */
+    static String renderLine(Camera camera, String name, String scene, RenderStats stats) {
+        ImageWriter image = camera.imageWriter();
+        return "render " + name + ": " + stats.time() + ", " + image.getNx() + "x" + image.getNy() + " [" + camera.describe()
+                + "] of scene '" + scene + "', " + stats.figures() + camera.rayTracer().walk();
+    }
+
+    /**
+     * The line a write prints unless silenced: {@code write NAME: /absolute/path.png in 0.042 s},
+     * and a note at the end when nothing was drawn on the image (the PNG is all black).
+     */
+    static String writeLine(String name, Path file, double seconds, ImageWriter image) {
+        return String.format(Locale.ROOT, "write %s: %s in %.3f s", name, file, seconds)
+                + (image.isBlank() ? " (" + ImageWriter.BLANK + ")" : "");
     }
 
     /**
@@ -52,7 +76,7 @@ public final class CameraReports {
      * @throws IllegalArgumentException           as {@link Camera.Builder#build()}
      */
     public static String describe(Camera.Builder camera) {
-        return camera.describeChecked();
+        return camera.setup().describe();
     }
 
     /**

@@ -74,6 +74,11 @@ public abstract class RayTracerBase {
         return new SceneStamp.Parts(scene.name, scene.geometries, scene.lights, scene.background, scene.ambientLight);
     }
 
+    /** @return the name of the scene traced ({@code Scene.name}), for reports; read here for the reason above */
+    final String sceneName() {
+        return scene.name;
+    }
+
     /** Makes the next call outside a render prepare again: a setting the preparation depends on changed. */
     final synchronized void forgetPreparation() {
         prepared = null;

@@ -40,8 +40,7 @@ public final class RegionRenderer {
      * @return a new region renderer over the camera
      */
     public static RegionRenderer of(Camera camera) {
-        return new RegionRenderer(camera.view(), camera.sampling(), camera.execution(), camera.rayTracer(),
-                camera.imageWriter().getImageName());
+        return new RegionRenderer(camera.setup(), camera.imageWriter().getImageName());
     }
 
     /**
@@ -63,12 +62,12 @@ public final class RegionRenderer {
      *
      * @param name labels worker threads and messages
      */
-    RegionRenderer(View view, Sampling sampling, Execution execution, RayTracerBase tracer, String name) {
-        this.loop = new RenderLoop(view, sampling, execution, tracer, null);
+    RegionRenderer(RenderSetup setup, String name) {
+        this.loop = setup.loop(null);
         this.name = name;
-        this.nX = view.plane().nX();
-        this.nY = view.plane().nY();
-        this.prepared = tracer.prepareFor(SceneStamp.of(tracer, name));
+        this.nX = setup.view().plane().nX();
+        this.nY = setup.view().plane().nY();
+        this.prepared = setup.tracer().prepareFor(SceneStamp.of(setup.tracer(), name));
     }
 
     /**

@@ -80,6 +80,20 @@ public record Sampling(AntiAliasing antiAliasing, Grid grid, Adaptive adaptive, 
     }
 
     /**
+     * The rule of the course's {@code setAntiAliasing(mode, columns, rows)}: RANDOM with that grid,
+     * the mode checked first.
+     *
+     * @throws IllegalArgumentException for a mode other than RANDOM (naming the grid, and for
+     *                                  ADAPTIVE its own setter), then as {@link Grid#Grid(int, int)}
+     */
+    Sampling withRandomGrid(AntiAliasing mode, int columns, int rows) {
+        if (mode != AntiAliasing.RANDOM)
+            throw new IllegalArgumentException("a " + columns + "x" + rows + " grid applies to RANDOM anti-aliasing only, got "
+                    + mode + (mode == AntiAliasing.ADAPTIVE ? " (use setAdaptive(depth, threshold))" : ""));
+        return withGrid(columns, rows).withAntiAliasing(mode);
+    }
+
+    /**
      * @param depth     ADAPTIVE: the deepest subdivision
      * @param threshold ADAPTIVE: the corner spread that subdivides
      * @return this sampling with those settings

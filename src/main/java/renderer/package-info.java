@@ -37,7 +37,11 @@
  * pixel to one limit. Each limit is a static rule there ({@code Execution.requireThreads},
  * {@code Sampling.Grid}, {@code View.Frame.along}, {@code RayBudget.require}, ...), which the
  * builder, the scene reader and the command line call alike; the three are public for those
- * callers and hidden from the course's Javadoc.</li>
+ * callers and hidden from the course's Javadoc. Around them: a builder keeps its view settings in
+ * a {@code ViewDraft} until {@code build()} makes the {@code View}; {@code RenderSetup} holds the
+ * four values a camera renders with to the budget together; {@code CameraOutput} runs a camera's
+ * render and write and tells of them (its listener, and the lines whose words are
+ * {@code CameraReports}').</li>
  * <li>The loop: {@code RenderLoop(View, Sampling, Execution, tracer, image)} prepares the tracer
  * once per render and holds the {@code PreparedTracer} it returns; it cuts the image into tiles
  * that workers claim; each worker asks the tracer for its {@code TraceContext} (its scratch state,
