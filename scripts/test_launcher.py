@@ -26,11 +26,11 @@ def project(tmp_path: Path, with_jar: bool) -> Path:
 
 def startup(folder: Path, home: Path, suffix: str) -> Path:
     """Where the launcher keeps its start-up archive for the JDK at `home`: named by the checksum
-    of the JDK's release file, as POSIX cksum computes it, and "-vector" when the JDK has the
-    vector module (the launcher adds it by default, and an archive fits only its modules)."""
+    of the JDK's release file, as POSIX cksum computes it, and "-vector" when the launcher adds
+    the vector module by default (JDK 17-24 that have it: an archive fits only its modules)."""
     key = subprocess.run(["cksum"], stdin=(home / "release").open("rb"), capture_output=True, text=True,
                          check=True).stdout.split()[0]
-    if "jdk.incubator.vector" in (home / "release").read_text():
+    if "jdk.incubator.vector" in (home / "release").read_text() and suffix == "jsa":
         key += "-vector"
     return folder / "target" / "startup" / f"raytracer-{key}.{suffix}"
 
@@ -112,7 +112,8 @@ def test_a_render_prints_no_incubator_warning_and_says_its_walk(tmp_path, vector
                env={"RAYTRACER_VECTOR": vector})
     assert done.returncode == 0, done.stderr
     assert "incubator" not in done.stderr
-    if vector != "0":  # the module by default, where the JDK has it: a short render keeps the scalar walk
+    module = vector == "1" or vector == "" and this_jdk()[1] == "jsa"  # by default before JDK 25
+    if module:  # where the JDK has it: a short render keeps the scalar walk
         assert "scalar walk (the vector walk is not compiled yet: a short render)" in done.stdout \
             or "scalar walk (" in done.stdout and "jdk.incubator.vector" not in done.stdout
     else:
@@ -135,21 +136,24 @@ def fake_jdk(tmp_path: Path, version: str, modules: str = "java.base") -> Path:
     return home
 
 
-@pytest.mark.parametrize("asked, modules, vector", [("", "java.base jdk.incubator.vector java.desktop", True),
-                                                    ("", "java.base jdk.incubator.vector", True),
-                                                    ("1", "java.base jdk.incubator.vector", True),
-                                                    ("", "java.base java.desktop", False),
-                                                    ("0", "java.base jdk.incubator.vector", False)])
-def test_the_vector_module_is_added_unless_turned_off_where_the_jdk_has_it_and_its_warning_dropped(tmp_path, asked,
-                                                                                                  modules, vector):
+@pytest.mark.parametrize("version, asked, modules, vector", [
+    ("17.0.12", "", "java.base jdk.incubator.vector java.desktop", True),
+    ("17.0.12", "", "java.base jdk.incubator.vector", True),
+    ("21.0.5", "1", "java.base jdk.incubator.vector", True),
+    ("17.0.12", "", "java.base java.desktop", False),
+    ("17.0.12", "0", "java.base jdk.incubator.vector", False),
+    ("25.0.1", "", "java.base jdk.incubator.vector", False),  # the AOT cache would lose its module graph
+    ("25.0.1", "1", "java.base jdk.incubator.vector", True)])
+def test_the_vector_module_is_added_by_default_before_jdk_25_where_the_jdk_has_it_and_its_warning_dropped(
+        tmp_path, version, asked, modules, vector):
     (tmp_path / "project").mkdir()
     folder = project(tmp_path / "project", with_jar=False)
     (folder / "target").mkdir()
     (folder / "target" / "raytracer.jar").write_bytes(b"")
-    home = fake_jdk(tmp_path, "17.0.12", modules)
-    archive = startup(folder, home, "jsa")
-    if not vector:
-        archive = archive.with_name(archive.name.replace("-vector", ""))
+    home = fake_jdk(tmp_path, version, modules)
+    suffix = "aot" if version.startswith("25") else "jsa"
+    archive = startup(folder, home, suffix)
+    archive = archive.with_name(archive.name.replace("-vector", "").replace(f".{suffix}", ("-vector" if vector else "") + f".{suffix}"))
     archive.parent.mkdir()
     archive.write_bytes(b"")  # as after a start-up archive that could not be made
     done = run(folder, "scene.xml", env={"JAVA_HOME": str(home), "RAYTRACER_VECTOR": asked})
