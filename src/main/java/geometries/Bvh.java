@@ -62,6 +62,8 @@ public final class Bvh extends Intersectable {
     private volatile WideTree wide;
     /** Whether this tree gets {@link #wide} once a long render asks and the vector walk is compiled. */
     private final boolean widens;
+    /** Set when the heap had no room for {@link #wide}: the tree keeps the scalar walk ({@link #widen}). */
+    private volatile boolean noRoom;
 
     /**
      * The tree of {@code geometries} as they are now, for a render: the tree an earlier call
@@ -180,7 +182,7 @@ public final class Bvh extends Intersectable {
      * render would lose.
      */
     void expectLongWalk() {
-        if (!widens || wide != null) return;
+        if (!widens || wide != null || noRoom) return;
         if (Vectorization.COMPILED.get()) widen(Vectorization.walk());
         else VectorWarmUp.start();
     }
@@ -191,7 +193,15 @@ public final class Bvh extends Intersectable {
      * may take it between two rays.
      */
     synchronized void widen(WideWalk walk) {
-        if (wide == null && walk != null && nodeCount > 1) wide = WideTree.of(walk, node, nodeCount, kind, packed);
+        if (wide != null || walk == null || nodeCount <= 1 || noRoom) return;
+        try {
+            wide = WideTree.of(walk, node, nodeCount, kind, packed);
+        } catch (OutOfMemoryError e) {
+            // Not a failure of the render: the wide part (72 bytes a triangle, and the wide nodes)
+            // only speeds it up, and a render near the heap's limit goes on in scalar code, as
+            // it began. Its arrays were never published, so they are garbage at once.
+            noRoom = true;
+        }
     }
 
     /**
