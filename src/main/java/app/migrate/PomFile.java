@@ -57,6 +57,9 @@ final class PomFile {
         return update(bare, plan).text;
     }
 
+    /** The test JVM's options a migrated pom gives Surefire: the library's vector walk may then run. */
+    static final String VECTOR_MODULE = "--add-modules jdk.incubator.vector";
+
     /** The result of an update: the new text, and what changed in words. */
     record Updated(String text, List<String> changes) {
     }
@@ -142,7 +145,13 @@ final class PomFile {
         Element surefire = plugin(plugins, "org.apache.maven.plugins", "maven-surefire-plugin", BuildPlan.SUREFIRE_VERSION, "3.0");
         // Every test class, whatever its name: Surefire's default runs only *Test, Test*, *Tests
         // and *TestCase, and the course's CameraIntersectionIntegration is none of them.
-        list(ensure(surefire, "configuration"), "includes", "include", List.of("**/*.java"));
+        Element surefireConfig = ensure(surefire, "configuration");
+        list(surefireConfig, "includes", "include", List.of("**/*.java"));
+        // The test JVM reads the vector module, as the README's pom gives it: a long render then
+        // takes the vector walk (docs/student-guide.md). A JVM option the project sets already,
+        // as a property or in Surefire's configuration, is left as it is.
+        if (child(properties, "argLine") == null && child(surefireConfig, "argLine") == null)
+            append(properties, "argLine", VECTOR_MODULE);
 
         List<String> extraMain = plan.mainRoots().size() > 1 ? plan.mainRoots().subList(1, plan.mainRoots().size()) : List.of();
         List<String> extraTest = plan.testRoots().size() > 1 ? plan.testRoots().subList(1, plan.testRoots().size()) : List.of();

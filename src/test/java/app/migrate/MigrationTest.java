@@ -27,6 +27,7 @@ import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
 import org.junit.platform.testkit.engine.EngineTestKit;
 
@@ -249,7 +250,8 @@ class MigrationTest {
             migration().migrate(dir, false, false);
             String pom = read("pom.xml");
             assertThat(pom).contains("<sourceDirectory>src</sourceDirectory>", "<testSourceDirectory>src</testSourceDirectory>",
-                    "<exclude>unittests/**</exclude>", "<testInclude>unittests/**</testInclude>");
+                    "<exclude>unittests/**</exclude>", "<testInclude>unittests/**</testInclude>")
+                    .contains("<argLine>" + PomFile.VECTOR_MODULE + "</argLine>"); // the README's test JVM
         }
     }
 
@@ -289,10 +291,31 @@ class MigrationTest {
                     "<version>" + BuildPlan.SUREFIRE_VERSION + "</version>", "<artifactId>raytracer</artifactId>")
                     .doesNotContain("2.12.4", "<sourceDirectory>");
             assertThat(dir.resolve("course-backup/originals/pom.xml")).content().contains("2.12.4");
+            assertThat(pom).contains("<argLine>" + PomFile.VECTOR_MODULE + "</argLine>");
             // what the update changed, as PomFile recorded it: the too-old Surefire raised, the library added
             assertThat(printed()).containsPattern("pom\\.xml: updated \\(.*maven-surefire-plugin 2\\.12\\.4 -> "
                     + BuildPlan.SUREFIRE_VERSION.replace(".", "\\.") + ".*\\)\n")
                     .contains("dependency io.github.raytracer:raytracer:");
+        }
+    }
+
+    @Nested
+    @DisplayName("the test JVM's options")
+    class TestJvmOptions {
+        @ParameterizedTest(name = "{0}")
+        @CsvSource(delimiter = '|', value = {
+                "a property|<properties><argLine>-Xmx2g</argLine></properties>",
+                "Surefire's configuration|<build><plugins><plugin><artifactId>maven-surefire-plugin</artifactId>"
+                        + "<configuration><argLine>-Xmx2g</argLine></configuration></plugin></plugins></build>" })
+        @DisplayName("a project's own argLine is kept, and no vector module is added beside it")
+        void ownArgLineKept(String where, String xml) throws Exception {
+            write(dir, "pom.xml", "<project xmlns=\"http://maven.apache.org/POM/4.0.0\"><modelVersion>4.0.0</modelVersion>"
+                    + "<groupId>me</groupId><artifactId>course</artifactId><version>2</version>" + xml + "</project>\n");
+            write(dir, "src/main/java/primitives/Point.java", CourseProjects.POINT);
+            write(dir, "src/main/java/primitives/Vector.java", CourseProjects.vector("primitives", "0, 0, 1"));
+            write(dir, "src/test/java/primitives/VectorTests.java", CourseProjects.vectorTest("primitives"));
+            migration().migrate(dir, false, false);
+            assertThat(read("pom.xml")).contains("<argLine>-Xmx2g</argLine>").doesNotContain(PomFile.VECTOR_MODULE);
         }
     }
 
