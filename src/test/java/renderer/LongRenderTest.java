@@ -1,0 +1,81 @@
+package renderer;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.locks.LockSupport;
+
+import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
+
+import primitives.Color;
+import primitives.Point;
+import primitives.Ray;
+import primitives.Rgb;
+import primitives.Vector;
+import scene.Scene;
+
+/**
+ * The render loop tells its prepared tracer that the render is long ({@link PreparedTracer#expectLongRender},
+ * where the scene's tree warms its vector walk) once its pace, trusted after
+ * {@link RenderLoop#PACE_SECONDS}, leaves {@link RenderLoop#LONG_RENDER_SECONDS} or more of work;
+ * a short render never does.
+ */
+@DisplayName("a render says when it is long, and a short one never does")
+class LongRenderTest {
+    /** A tracer whose camera samples take {@code nanosPerSample} each until it is told the render is long. */
+    private static final class Paced extends RayTracerBase {
+        final AtomicInteger told = new AtomicInteger();
+        volatile long nanosPerSample;
+
+        Paced(long nanosPerSample) {
+            super(new Scene("paced"));
+            this.nanosPerSample = nanosPerSample;
+        }
+
+        @Override
+        public Color traceRay(Ray ray) {
+            return Color.BLACK;
+        }
+
+        @Override
+        PreparedTracer prepare() {
+            return new PreparedTracer() {
+                @Override
+                public Rgb traceRay(TraceContext ctx) {
+                    long nanos = nanosPerSample;
+                    if (nanos > 0) LockSupport.parkNanos(nanos);
+                    return ctx.cameraColour().set(Color.BLACK);
+                }
+
+                @Override
+                public void expectLongRender() {
+                    told.incrementAndGet();
+                    nanosPerSample = 0; // told: the rest of the render runs at once
+                }
+            };
+        }
+    }
+
+    private static Camera camera(Paced tracer) {
+        return Camera.getBuilder().setLocation(Point.ZERO).setDirection(new Vector(0, 0, -1), new Vector(0, 1, 0))
+                .setVpSize(1, 1).setVpDistance(1).setResolution(100, 100).setRayTracer(tracer).setMultithreading(0)
+                .setSummary(false).build();
+    }
+
+    @Test
+    @DisplayName("10,000 samples of 2 ms each (a 20 s render): told once its pace promises 8 s more")
+    void long_() {
+        Paced tracer = new Paced(2_000_000);
+        camera(tracer).render();
+        assertThat(tracer.told.get()).as("calls once the pace promised 8 s more").isPositive();
+    }
+
+    @Test
+    @DisplayName("the same render at once: never told")
+    void short_() {
+        Paced tracer = new Paced(0);
+        camera(tracer).render();
+        assertThat(tracer.told.get()).isZero();
+    }
+}
