@@ -108,11 +108,13 @@ final class VectorWarmUp implements Runnable {
     private static void round(Bvh tree, Hit hit, long round) {
         SplittableRandom random = new SplittableRandom(round);
         int[] visits = new int[1];
-        HitVisitor count = (geometry, t) -> ++visits[0] < 3; // shadow rays stop early, some go on
+        // As a shadow ray's walk: stops at its third hit (most rays have fewer, so most walks go on).
+        HitVisitor count = (geometry, t) -> ++visits[0] < 3;
         for (int i = 0; i < RAYS_PER_ROUND; ++i) {
             ray(hit, random);
             tree.closestHit(hit.reset(Double.POSITIVE_INFINITY));
             ray(hit, random);
+            visits[0] = 0;
             tree.visitHits(hit, 2 + random.nextDouble(), count);
         }
     }
