@@ -18,7 +18,8 @@ import primitives.Ray;
  * Leaves without a bounding box (planes, tubes, user shapes that define none) are kept in a short
  * list beside the tree and tested for every ray.
  *
- * <p>Immutable after {@link #build}; any number of threads may query it. The build is
+ * <p>Immutable after {@link #build}, but for its wide part, which a long render may add once and
+ * publishes whole ({@link #expectLongWalk}); any number of threads may query it. The build is
  * deterministic: the same scene gives the same tree.
  *
  * @hidden internal: a render builds and keeps the tree itself ({@code setBvh(true)}, the

@@ -4,10 +4,10 @@ package geometries;
  * The leaf layout a tree with wide nodes gives its leaves of triangles, so that the vector walk
  * ({@code VectorWalk}) tests a leaf's triangles in one vector step, a triangle per lane. The
  * numbers are the ones a scalar leaf holds ({@link BvhLeaf#PACKED} doubles per triangle, the
- * kernel's arguments of {@code Triangle.intersect}: first vertex, edge 1, edge 2), in the same
- * {@code packed} array and the same place, only transposed: for a leaf of {@code c} triangles
- * whose first is {@code first}, number {@code r} (0 … 8) of its triangle {@code j} is at
- * {@code first · 9 + r · c + j}. So the leaf takes no byte more, and number {@code r} of all its
+ * kernel's arguments of {@code Triangle.intersect}: first vertex, edge 1, edge 2), in a copy of
+ * the tree's {@code packed} array ({@link WideTree#lanes}) at the same place, only transposed: for
+ * a leaf of {@code c} triangles whose first is {@code first}, number {@code r} (0 … 8) of its
+ * triangle {@code j} is at {@code first · 9 + r · c + j}. So number {@code r} of all its
  * triangles loads as one vector of {@link #LANES} doubles from {@code first · 9 + r · c}; the
  * lanes at {@code j ≥ c} read whatever follows (the next number, the next leaf, or the
  * {@link #PADDING} at the array's end) and are ignored.
@@ -16,8 +16,8 @@ package geometries;
  * of at most {@link #LANES}, which with the builder's leaves of at most four is every leaf of a
  * mesh. A leaf with a sphere, a user's shape or a polygon keeps the scalar layout and test.
  * {@link WideNodes#collapse} marks the lane leaves (a negative count), {@link #arrange} lays them
- * out; both ask {@link #fits}, so the two always agree. A tree without wide nodes (the scalar
- * walk) is never arranged: its leaves are read as {@link Bvh} always read them.
+ * out; both ask {@link #fits}, so the two always agree. The tree's own {@code packed} array is
+ * never arranged: the scalar walk reads it while a render's threads may switch to the copy.
  */
 final class TriangleLanes {
     /** Triangles per vector step: four doubles, a 256-bit vector (AVX2). */
@@ -42,7 +42,7 @@ final class TriangleLanes {
     }
 
     /**
-     * Transposes, in place, every leaf of the binary tree {@code node} ({@code nodes} records)
+     * Transposes, in place in {@code packed} (a tree's copy, {@link WideTree#of}), every leaf of the binary tree {@code node} ({@code nodes} records)
      * that {@link #fits} from the scalar layout (a triangle's nine numbers together) into lanes.
      */
     static void arrange(float[] node, int nodes, byte[] kind, double[] packed) {
