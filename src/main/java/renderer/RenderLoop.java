@@ -24,9 +24,10 @@ import java.util.concurrent.atomic.AtomicReference;
 final class RenderLoop {
     /**
      * A render with at least this many seconds left at its pace is long
-     * ({@link PreparedTracer#expectLongRender}): the vector walk's warm-up costs about 1.1 s of
-     * processor time (its thread and the compiler's), which the vector walk pays back only after
-     * some 5 s of a 2-thread render (BENCHMARKS.md, "The vector walk without asking").
+     * ({@link PreparedTracer#expectLongRender}): the vector walk's warm-up costs 1.1–1.4 s of
+     * processor time (its thread and the compiler's, measured), which the vector walk, about 12 %
+     * faster in a whole render, pays back only after some 5 s of a 2-thread render (an estimate
+     * from those two figures; BENCHMARKS.md, "The vector walk without asking").
      */
     static final double LONG_RENDER_SECONDS = 8;
     /**
