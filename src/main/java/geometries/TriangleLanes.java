@@ -42,16 +42,17 @@ final class TriangleLanes {
     }
 
     /**
-     * Transposes, in place in {@code packed} (a tree's copy, {@link WideTree#of}), every leaf of the binary tree {@code node} ({@code nodes} records)
-     * that {@link #fits} from the scalar layout (a triangle's nine numbers together) into lanes.
+     * Transposes, in place in {@code packed} (a tree's copy, {@link WideTree#of}), every lane leaf
+     * of the wide nodes {@code wide} (a negative count) from the scalar layout (a triangle's nine
+     * numbers together) into lanes.
      */
-    static void arrange(float[] node, int nodes, byte[] kind, double[] packed) {
+    static void arrange(WideNodes wide, double[] packed) {
         double[] leaf = new double[LANES * BvhLeaf.PACKED];
-        for (int n = 0; n < nodes; ++n) {
-            int rec = BvhNodes.at(n), count = BvhNodes.count(node, rec);
+        int shift = Integer.numberOfTrailingZeros(wide.width);
+        for (int item = 0, end = wide.count * wide.width; item < end; ++item) {
+            int count = -WideNodes.count(wide.node, item, shift);
             if (count <= 0) continue;
-            int first = BvhNodes.first(node, rec);
-            if (!fits(kind, first, count)) continue;
+            int first = WideNodes.link(wide.node, item, shift);
             int at = first * BvhLeaf.PACKED;
             System.arraycopy(packed, at, leaf, 0, count * BvhLeaf.PACKED);
             for (int j = 0; j < count; ++j)

@@ -105,6 +105,9 @@ final class WideNodes {
         // At most one wide node per inner binary node: the count bounds the records.
         float[] out = new float[at(nodes / 2 + 1, width)];
         int[] open = new int[width];
+        // Per binary node: its subtree's first primitive, and how many when it is a lane leaf (else 0).
+        int[] first = new int[nodes], lanes = new int[nodes];
+        laneLeaves(binary, nodes, kind, first, lanes);
         // Depth-first, an explicit stack of (binary node, wide node to write, its depth).
         int[] stack = new int[3 * (nodes + 1)];
         int top = 0, made = 1, deepest = 1;
@@ -114,7 +117,7 @@ final class WideNodes {
         while (top > 0) {
             int level = stack[--top], w = stack[--top], b = stack[--top];
             deepest = Math.max(deepest, level);
-            int children = open(binary, b, open);
+            int children = open(binary, b, open, lanes);
             int at = at(w, width);
             for (int j = 0; j < width; ++j) {
                 if (j >= children) {
@@ -127,11 +130,12 @@ final class WideNodes {
                     out[bound(at, MAX_X + axis, width) + j] = BvhNodes.max(binary, rec, axis);
                 }
                 int count = BvhNodes.count(binary, rec);
-                if (count > 0) {
-                    int first = BvhNodes.first(binary, rec);
-                    boolean lanes = kind != null && TriangleLanes.fits(kind, first, count);
-                    out[at + LINK * width + j] = Float.intBitsToFloat(first);
-                    out[at + COUNT * width + j] = Float.intBitsToFloat(lanes ? -count : count);
+                if (lanes[c] > 0) {
+                    out[at + LINK * width + j] = Float.intBitsToFloat(first[c]);
+                    out[at + COUNT * width + j] = Float.intBitsToFloat(-lanes[c]);
+                } else if (count > 0) {
+                    out[at + LINK * width + j] = Float.intBitsToFloat(BvhNodes.first(binary, rec));
+                    out[at + COUNT * width + j] = Float.intBitsToFloat(count);
                 } else {
                     int child = made++;
                     out[at + LINK * width + j] = Float.intBitsToFloat(child);
@@ -151,7 +155,7 @@ final class WideNodes {
      *
      * @return how many children {@code out} holds (2 … out.length)
      */
-    private static int open(float[] binary, int b, int[] out) {
+    private static int open(float[] binary, int b, int[] out, int[] lanes) {
         int rec = BvhNodes.at(b);
         out[0] = b + 1;
         out[1] = BvhNodes.right(binary, rec);
@@ -161,7 +165,7 @@ final class WideNodes {
             double bestArea = -1;
             for (int j = 0; j < n; ++j) {
                 int r = BvhNodes.at(out[j]);
-                if (BvhNodes.count(binary, r) > 0) continue;
+                if (BvhNodes.count(binary, r) > 0 || lanes[out[j]] > 0) continue;
                 double area = halfArea(binary, r);
                 if (area > bestArea) {
                     bestArea = area;
@@ -176,6 +180,33 @@ final class WideNodes {
             ++n;
         }
         return n;
+    }
+
+    /**
+     * Which binary nodes become lane leaves: those whose whole subtree holds at most
+     * {@link TriangleLanes#LANES} primitives, all of which {@link TriangleLanes#fits} (none with
+     * {@code kind} null). A subtree's primitives are contiguous in leaf order (the build partitions
+     * in place and lays the nodes out depth first), so such a node's leaves are one lane leaf of
+     * the same primitives in the same order.
+     *
+     * @param first out: per binary node, its subtree's first primitive
+     * @param lanes out: per binary node, its subtree's primitive count when it is a lane leaf, else 0
+     */
+    private static void laneLeaves(float[] binary, int nodes, byte[] kind, int[] first, int[] lanes) {
+        int[] end = new int[nodes];
+        // Children come after their parent: a backward pass sees them first.
+        for (int n = nodes - 1; n >= 0; --n) {
+            int rec = BvhNodes.at(n), count = BvhNodes.count(binary, rec);
+            if (count > 0) {
+                first[n] = BvhNodes.first(binary, rec);
+                end[n] = first[n] + count;
+            } else {
+                first[n] = first[n + 1];
+                end[n] = end[BvhNodes.right(binary, rec)];
+            }
+            int size = end[n] - first[n];
+            if (kind != null && size <= TriangleLanes.LANES && TriangleLanes.fits(kind, first[n], size)) lanes[n] = size;
+        }
     }
 
     /** @return half the surface area of the binary record at {@code rec}'s box */

@@ -16,9 +16,10 @@ package geometries;
 record WideTree(WideWalk walk, WideNodes nodes, double[] lanes) {
     /** @return the wide part of the binary tree {@code node} ({@code nodes} records) over {@code kind} and {@code packed} */
     static WideTree of(WideWalk walk, float[] node, int nodes, byte[] kind, double[] packed) {
+        WideNodes wide = WideNodes.collapse(node, nodes, walk.width(), kind);
         double[] lanes = packed.clone();
-        if (lanes.length > 0) TriangleLanes.arrange(node, nodes, kind, lanes);
-        return new WideTree(walk, WideNodes.collapse(node, nodes, walk.width(), kind), lanes);
+        if (lanes.length > 0) TriangleLanes.arrange(wide, lanes);
+        return new WideTree(walk, wide, lanes);
     }
 
     /** @return the bytes it adds to the tree: the wide nodes and the copy of the packed numbers (padding excluded) */
