@@ -95,11 +95,11 @@ final class WideNodes {
     /**
      * Collapses the binary tree {@code binary} of {@code nodes} records (root at 0, not a leaf)
      * into nodes of {@code width} children (a power of two, 2 … {@link #MAX_WIDTH}); the binary
-     * root's box stays the walks' first test. A leaf that {@link TriangleLanes#fits} by the
-     * primitives' {@code kind} gets a negative count: the tree lays it out in lanes
-     * ({@link TriangleLanes#arrange}); with {@code kind} null none does.
+     * root's box stays the walks' first test. A subtree of triangles that {@link TriangleLanes#fits}
+     * in {@code leafLanes} becomes one leaf with a negative count, which the tree lays out in lanes
+     * ({@link TriangleLanes#arrange}), and is not opened; with {@code kind} null none does.
      */
-    static WideNodes collapse(float[] binary, int nodes, int width, byte[] kind) {
+    static WideNodes collapse(float[] binary, int nodes, int width, byte[] kind, int leafLanes) {
         if (width < 2 || width > MAX_WIDTH || Integer.bitCount(width) != 1)
             throw new IllegalArgumentException("a wide node holds 2, 4 or 8 children, not " + width);
         // At most one wide node per inner binary node: the count bounds the records.
@@ -107,7 +107,7 @@ final class WideNodes {
         int[] open = new int[width];
         // Per binary node: its subtree's first primitive, and how many when it is a lane leaf (else 0).
         int[] first = new int[nodes], lanes = new int[nodes];
-        laneLeaves(binary, nodes, kind, first, lanes);
+        laneLeaves(binary, nodes, kind, leafLanes, first, lanes);
         // Depth-first, an explicit stack of (binary node, wide node to write, its depth).
         int[] stack = new int[3 * (nodes + 1)];
         int top = 0, made = 1, deepest = 1;
@@ -183,16 +183,17 @@ final class WideNodes {
     }
 
     /**
-     * Which binary nodes become lane leaves: those whose whole subtree holds at most
-     * {@link TriangleLanes#LANES} primitives, all of which {@link TriangleLanes#fits} (none with
-     * {@code kind} null). A subtree's primitives are contiguous in leaf order (the build partitions
-     * in place and lays the nodes out depth first), so such a node's leaves are one lane leaf of
-     * the same primitives in the same order.
+     * Which binary nodes become lane leaves: those whose whole subtree {@link TriangleLanes#fits}
+     * in {@code leafLanes} (none with {@code kind} null). A subtree's primitives are contiguous in
+     * leaf order (the build partitions in place and lays the nodes out depth first), so such a
+     * node's leaves become one lane leaf of the same primitives in the same order. Why whole
+     * subtrees: a leaf test of four or eight triangles costs what one of a single triangle costs,
+     * and the builder's leaves hold two on average, so the wide walk tests fewer nodes and leaves.
      *
      * @param first out: per binary node, its subtree's first primitive
      * @param lanes out: per binary node, its subtree's primitive count when it is a lane leaf, else 0
      */
-    private static void laneLeaves(float[] binary, int nodes, byte[] kind, int[] first, int[] lanes) {
+    private static void laneLeaves(float[] binary, int nodes, byte[] kind, int leafLanes, int[] first, int[] lanes) {
         int[] end = new int[nodes];
         // Children come after their parent: a backward pass sees them first.
         for (int n = nodes - 1; n >= 0; --n) {
@@ -205,7 +206,7 @@ final class WideNodes {
                 end[n] = end[BvhNodes.right(binary, rec)];
             }
             int size = end[n] - first[n];
-            if (kind != null && size <= TriangleLanes.LANES && TriangleLanes.fits(kind, first[n], size)) lanes[n] = size;
+            if (kind != null && TriangleLanes.fits(kind, first[n], size, leafLanes)) lanes[n] = size;
         }
     }
 

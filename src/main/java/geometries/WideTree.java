@@ -16,7 +16,7 @@ package geometries;
 record WideTree(WideWalk walk, WideNodes nodes, double[] lanes) {
     /** @return the wide part of the binary tree {@code node} ({@code nodes} records) over {@code kind} and {@code packed} */
     static WideTree of(WideWalk walk, float[] node, int nodes, byte[] kind, double[] packed) {
-        WideNodes wide = WideNodes.collapse(node, nodes, walk.width(), kind);
+        WideNodes wide = WideNodes.collapse(node, nodes, walk.width(), kind, walk.leafLanes());
         double[] lanes = packed.clone();
         if (lanes.length > 0) TriangleLanes.arrange(wide, lanes);
         return new WideTree(walk, wide, lanes);

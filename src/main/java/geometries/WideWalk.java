@@ -10,6 +10,9 @@ interface WideWalk {
     /** @return children per wide node, as this walk reads them */
     int width();
 
+    /** @return the most triangles a lane leaf holds ({@link TriangleLanes}): what the leaf test takes in one vector step, 4 or 8 */
+    int leafLanes();
+
     /** @return how many primitives a tree must index to be walked this way (smaller ones keep the scalar walk) */
     int minPrimitives();
 

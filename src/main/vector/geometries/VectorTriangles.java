@@ -18,19 +18,21 @@ import jdk.incubator.vector.VectorSpecies;
  * hit (or the visitor) one by one in leaf order, by the tree's own scalar rule, so the winner,
  * its distance and the tie rule are the scalar loop's ({@code VectorTrianglesTest}, ray by ray).
  *
- * <p>Four lanes whatever the node width (leaves hold at most four primitives): 256-bit vectors,
- * which every CPU the vector walk runs on has.
+ * <p>Eight lanes (512-bit vectors) where the walk's nodes are eight wide (JDK 25 on AVX-512, see
+ * {@link VectorWalk}), else four (256-bit vectors, which every CPU the vector walk runs on has;
+ * JDK 17 builds 512-bit masks as objects). A lane leaf holds as many ({@link TriangleLanes}).
  */
 final class VectorTriangles {
-    private static final VectorSpecies<Double> LANES = DoubleVector.SPECIES_256;
+    static final VectorSpecies<Double> LANES = VectorWalk.WIDE ? DoubleVector.SPECIES_512 : DoubleVector.SPECIES_256;
     /** {@code primitives.Util}'s zero tolerance, 2^-40: {@code isZero(x)} is {@code |x| < ZERO}. */
     static final double ZERO = 0x1p-40;
     /** Lane j holds j: the lanes at or past a leaf's count are not its triangles. */
-    private static final DoubleVector LANE_INDEX = DoubleVector.fromArray(LANES, new double[] { 0, 1, 2, 3 }, 0);
+    private static final DoubleVector LANE_INDEX = DoubleVector.fromArray(LANES, new double[] { 0, 1, 2, 3, 4, 5, 6, 7 }, 0);
     private static final DoubleVector NAN = DoubleVector.broadcast(LANES, Double.NaN);
 
     static {
-        if (LANES.length() != TriangleLanes.LANES) throw new AssertionError("lanes " + LANES.length());
+        if (LANES.length() > TriangleLanes.MAX_LANES || LANES.length() > WideNodes.MAX_WIDTH)
+            throw new AssertionError("lanes " + LANES.length());
     }
 
     private VectorTriangles() {
@@ -88,7 +90,7 @@ final class VectorTriangles {
      * The closest-hit test of the lane leaf of {@code count} triangles from {@code first}: each
      * distance offered to {@code hit} in leaf order by the tree's rule ({@link Bvh#offerTriangle}).
      *
-     * @param scratch room for {@link TriangleLanes#LANES} distances
+     * @param scratch room for {@link TriangleLanes#MAX_LANES} distances
      * @return whether a triangle of the leaf now holds the hit
      */
     static boolean closest(Bvh tree, double[] s, int first, int count, Hit hit, double[] scratch) {
@@ -102,7 +104,7 @@ final class VectorTriangles {
      * The any-hit visit of the lane leaf: each hit within {@code maxDistance} to {@code visitor}
      * in leaf order ({@link Bvh#visitTriangle}).
      *
-     * @param scratch room for {@link TriangleLanes#LANES} distances
+     * @param scratch room for {@link TriangleLanes#MAX_LANES} distances
      * @return false when the visitor stopped the walk
      */
     static boolean visit(Bvh tree, double[] s, int first, int count, Hit query, double maxDistance, HitVisitor visitor,
@@ -113,9 +115,14 @@ final class VectorTriangles {
         // Read out before any visitor runs: one may query a tree with this record, whose walk
         // writes the same scratch.
         double t0 = scratch[0], t1 = scratch[1], t2 = scratch[2], t3 = scratch[3];
+        double t4 = scratch[4], t5 = scratch[5], t6 = scratch[6], t7 = scratch[7];
         return tree.visitTriangle(first, t0, maxDistance, visitor)
                 && (count < 2 || tree.visitTriangle(first + 1, t1, maxDistance, visitor))
                 && (count < 3 || tree.visitTriangle(first + 2, t2, maxDistance, visitor))
-                && (count < 4 || tree.visitTriangle(first + 3, t3, maxDistance, visitor));
+                && (count < 4 || tree.visitTriangle(first + 3, t3, maxDistance, visitor))
+                && (count < 5 || tree.visitTriangle(first + 4, t4, maxDistance, visitor))
+                && (count < 6 || tree.visitTriangle(first + 5, t5, maxDistance, visitor))
+                && (count < 7 || tree.visitTriangle(first + 6, t6, maxDistance, visitor))
+                && (count < 8 || tree.visitTriangle(first + 7, t7, maxDistance, visitor));
     }
 }

@@ -31,9 +31,10 @@ import jdk.incubator.vector.VectorSpecies;
  * on the order of the walk ({@link Bvh}'s tie rule), so both walks return the same hit.
  */
 final class VectorWalk implements WideWalk {
+    /** Whether this JVM takes eight lanes of doubles (512 bits) in a step: JDK 25 or later on a CPU that has them. */
+    static final boolean WIDE = Runtime.version().feature() >= 25 && DoubleVector.SPECIES_PREFERRED.vectorBitSize() >= 512;
     /** The children's bounds as doubles: one vector per bound, a lane per child. Constant to the compiler. */
-    private static final VectorSpecies<Double> DOUBLES = Runtime.version().feature() >= 25
-            && DoubleVector.SPECIES_PREFERRED.vectorBitSize() >= 512 ? DoubleVector.SPECIES_512 : DoubleVector.SPECIES_256;
+    private static final VectorSpecies<Double> DOUBLES = WIDE ? DoubleVector.SPECIES_512 : DoubleVector.SPECIES_256;
     /** The same bounds as stored, floats: half the vector. */
     private static final VectorSpecies<Float> FLOATS = DOUBLES == DoubleVector.SPECIES_512 ? FloatVector.SPECIES_256
             : FloatVector.SPECIES_128;
@@ -73,6 +74,11 @@ final class VectorWalk implements WideWalk {
     @Override
     public int width() {
         return WIDTH;
+    }
+
+    @Override
+    public int leafLanes() {
+        return VectorTriangles.LANES.length();
     }
 
     @Override

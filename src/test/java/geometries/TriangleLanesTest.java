@@ -5,6 +5,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.api.Nested;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import primitives.Point;
 
@@ -19,20 +21,21 @@ class TriangleLanesTest {
     @Nested
     @DisplayName("which leaves")
     class Which {
-        @Test
-        @DisplayName("one to four triangles fit")
-        void upToFourTriangles() {
-            byte[] kind = { T, T, T, T, T };
-            for (int count = 1; count <= 4; ++count) assertThat(TriangleLanes.fits(kind, 0, count)).as("%d", count).isTrue();
+        @ParameterizedTest(name = "{0} lanes")
+        @ValueSource(ints = { 4, 8 })
+        @DisplayName("one triangle up to as many as the lanes fit")
+        void upToTheLanes(int lanes) {
+            byte[] kind = { T, T, T, T, T, T, T, T, T };
+            for (int count = 1; count <= lanes; ++count) assertThat(TriangleLanes.fits(kind, 0, count, lanes)).as("%d", count).isTrue();
+            assertThat(TriangleLanes.fits(kind, 0, lanes + 1, lanes)).as("one more").isFalse();
         }
 
         @Test
-        @DisplayName("five triangles, or any sphere or shape of its own among them, do not")
-        void notMoreNorOthers() {
-            assertThat(TriangleLanes.fits(new byte[] { T, T, T, T, T }, 0, 5)).isFalse();
-            assertThat(TriangleLanes.fits(new byte[] { T, S }, 0, 2)).isFalse();
-            assertThat(TriangleLanes.fits(new byte[] { O, T }, 0, 2)).isFalse();
-            assertThat(TriangleLanes.fits(new byte[] { O, T, T }, 1, 2)).as("only the leaf's own primitives count").isTrue();
+        @DisplayName("any sphere or shape of its own among them does not")
+        void notOthers() {
+            assertThat(TriangleLanes.fits(new byte[] { T, S }, 0, 2, 4)).isFalse();
+            assertThat(TriangleLanes.fits(new byte[] { O, T }, 0, 2, 4)).isFalse();
+            assertThat(TriangleLanes.fits(new byte[] { O, T, T }, 1, 2, 4)).as("only the leaf's own primitives count").isTrue();
         }
     }
 
@@ -47,37 +50,27 @@ class TriangleLanesTest {
             return packed;
         }
 
-        @Test
-        @DisplayName("a lane leaf holds number r of its triangle j at first·9 + r·count + j, in its own place; other leaves are untouched")
-        void transposedInPlace() {
-            // Leaves: [0, 3) triangles, [3, 5) a triangle and a sphere, [5, 9) triangles, [9, 10) a triangle.
-            byte[] kind = { T, T, T, T, S, T, T, T, T, T };
-            float[] node = BvhNodes.allocate(4);
-            BvhNodes.writeLeaf(node, BvhNodes.at(0), 0, 3);
-            BvhNodes.writeLeaf(node, BvhNodes.at(1), 3, 2);
-            BvhNodes.writeLeaf(node, BvhNodes.at(2), 5, 4);
-            BvhNodes.writeLeaf(node, BvhNodes.at(3), 9, 1);
-            double[] packed = numbered(kind.length), before = packed.clone();
-            TriangleLanes.arrange(node, 4, kind, packed);
-            int[][] lanes = { { 0, 3 }, { 5, 4 }, { 9, 1 } };
-            for (int[] leaf : lanes) {
-                int first = leaf[0], count = leaf[1];
-                for (int j = 0; j < count; ++j)
-                    for (int r = 0; r < BvhLeaf.PACKED; ++r)
-                        assertThat(packed[TriangleLanes.row(first, count, r) + j]).as("leaf from %d: triangle %d, number %d", first, j, r)
-                                .isEqualTo(100 * (first + j) + r);
-            }
-            for (int i = 3 * BvhLeaf.PACKED; i < 5 * BvhLeaf.PACKED; ++i)
-                assertThat(packed[i]).as("the mixed leaf's number %d", i).isEqualTo(before[i]);
+        @ParameterizedTest(name = "{0} triangles")
+        @ValueSource(ints = { 2, 3, 4, 5, 8 })
+        @DisplayName("a lane leaf holds number r of its triangle j at first·9 + r·count + j, in its own place; the rest is untouched")
+        void transposedInPlace(int count) {
+            int first = 2;
+            double[] packed = numbered(first + count + 1), before = packed.clone();
+            TriangleLanes.arrange(packed, first, count, new double[TriangleLanes.MAX_LANES * BvhLeaf.PACKED]);
+            for (int j = 0; j < count; ++j)
+                for (int r = 0; r < BvhLeaf.PACKED; ++r)
+                    assertThat(packed[TriangleLanes.row(first, count, r) + j]).as("triangle %d, number %d", j, r)
+                            .isEqualTo(100 * (first + j) + r);
+            for (int i = 0; i < packed.length; ++i)
+                if (i < first * BvhLeaf.PACKED || i >= (first + count) * BvhLeaf.PACKED)
+                    assertThat(packed[i]).as("number %d, outside the leaf", i).isEqualTo(before[i]);
         }
 
         @Test
         @DisplayName("a leaf of one triangle is the same numbers in the same places")
         void oneTriangleUnchanged() {
             double[] packed = numbered(1), before = packed.clone();
-            float[] node = BvhNodes.allocate(1);
-            BvhNodes.writeLeaf(node, BvhNodes.at(0), 0, 1);
-            TriangleLanes.arrange(node, 1, new byte[] { T }, packed);
+            TriangleLanes.arrange(packed, 0, 1, new double[TriangleLanes.MAX_LANES * BvhLeaf.PACKED]);
             assertThat(packed).containsExactly(before);
         }
     }
@@ -109,6 +102,58 @@ class TriangleLanesTest {
             Bvh scalar = Bvh.build(g, 1, 4096, true, null), vector = Bvh.build(g, 1, 4096, true, VectorWalk.anyCpu());
             assertThat(vector.indexBytes() - scalar.indexBytes())
                     .isEqualTo(vector.wideNodes().bytes() + scalar.primitiveTotal() * (long) BvhLeaf.PACKED * Double.BYTES);
+        }
+
+        @ParameterizedTest(name = "{0} lanes")
+        @ValueSource(ints = { 4, 8 })
+        @DisplayName("a lane leaf is a whole subtree of at most that many triangles: each triangle in exactly one, larger than the builder's leaves")
+        void wholeSubtrees(int lanes) {
+            Bvh tree = Bvh.build(new Geometries(BvhTest.gridMesh(20)), 1, 4096, true, new Lanes(lanes));
+            WideNodes wide = tree.wideNodes();
+            int shift = Integer.numberOfTrailingZeros(wide.width);
+            int[] seen = new int[tree.primitiveTotal()];
+            int leaves = 0, triangles = 0, largest = 0;
+            for (int item = 0; item < wide.count * wide.width; ++item) {
+                int count = -WideNodes.count(wide.node, item, shift), first = WideNodes.link(wide.node, item, shift);
+                if (count <= 0) continue;
+                ++leaves;
+                triangles += count;
+                largest = Math.max(largest, count);
+                for (int j = 0; j < count; ++j) ++seen[first + j];
+            }
+            assertThat(seen).as("every triangle in exactly one lane leaf").containsOnly(1);
+            assertThat(largest).as("the largest lane leaf").isLessThanOrEqualTo(lanes);
+            // The builder's leaves hold about two triangles (BENCHMARKS.md): whole subtrees hold more.
+            assertThat((double) triangles / leaves).as("triangles per lane leaf").isGreaterThan(lanes / 2.0);
+        }
+    }
+
+    /** A wide walk that only says its widths: for the layout, never walked. */
+    private record Lanes(int leafLanes) implements WideWalk {
+        @Override
+        public int width() {
+            return 4;
+        }
+
+        @Override
+        public int minPrimitives() {
+            return 0;
+        }
+
+        @Override
+        public String description() {
+            return "lanes " + leafLanes;
+        }
+
+        @Override
+        public boolean closestHit(Bvh tree, float[] node, double[] lanes, Hit hit, int[] stack, double[] stackT) {
+            throw new UnsupportedOperationException();
+        }
+
+        @Override
+        public boolean visitHits(Bvh tree, float[] node, double[] lanes, Hit query, double limit, double maxDistance,
+                                 HitVisitor visitor, int[] stack) {
+            throw new UnsupportedOperationException();
         }
     }
 }

@@ -28,9 +28,11 @@ import primitives.Vector;
  * geometry and triangle, the same distance bits). The test JVM reads {@code jdk.incubator.vector}
  * (the pom's Surefire options); vectors the CPU lacks are emulated, with the same answers.
  */
-@DisplayName("four triangles in one vector step: the scalar test's answers, bit for bit")
+@DisplayName("four or eight triangles in one vector step: the scalar test's answers, bit for bit")
 class VectorTrianglesTest {
     private static final double ZERO = VectorTriangles.ZERO;
+    /** Triangles in one step on this machine and JDK. */
+    private static final int LANES = VectorTriangles.LANES.length();
 
     /** Doubles at and around every edge the kernel's tolerance tests have. */
     static Stream<Double> edges() {
@@ -73,7 +75,7 @@ class VectorTrianglesTest {
     class LaneByLane {
         private static final int LEAVES = 20_000;
 
-        /** A leaf of 1–4 triangles near the origin, packed as a tree packs them, then laid out in lanes. */
+        /** A leaf of 1 to LANES triangles near the origin, packed as a tree packs them, then laid out in lanes. */
         private static double[] leaf(Random rnd, int count, int first) {
             double[] packed = new double[(first + count) * BvhLeaf.PACKED + TriangleLanes.PADDING];
             for (int j = 0; j < count; ++j) {
@@ -125,16 +127,16 @@ class VectorTrianglesTest {
         }
 
         @Test
-        @DisplayName("random leaves of 1–4 triangles, rays through vertices, edges, insides and planes: the same bits, NaN for NaN")
+        @DisplayName("random leaves of one triangle up to the lanes, rays through vertices, edges, insides and planes: the same bits, NaN for NaN")
         void sameDistances() {
             Random rnd = new Random(50);
-            double[] out = new double[TriangleLanes.LANES];
+            double[] out = new double[TriangleLanes.MAX_LANES];
             int written = 0, hits = 0;
             for (int n = 0; n < LEAVES; ++n) {
-                int count = 1 + rnd.nextInt(TriangleLanes.LANES), first = rnd.nextInt(3);
+                int count = 1 + rnd.nextInt(LANES), first = rnd.nextInt(3);
                 double[] packed = leaf(rnd, count, first);
                 double[] scalar = packed.clone();
-                TriangleLanes.arrange(leafNode(first, count), 1, triangles(first + count), packed);
+                TriangleLanes.arrange(packed, first, count, new double[TriangleLanes.MAX_LANES * BvhLeaf.PACKED]);
                 Hit ray = rayAt(rnd, scalar, first + rnd.nextInt(count));
                 double[] expected = new double[count];
                 boolean any = false;
@@ -165,11 +167,11 @@ class VectorTrianglesTest {
         @DisplayName("a bound below every hit writes nothing")
         void boundRulesOut() {
             Random rnd = new Random(51);
-            double[] out = new double[TriangleLanes.LANES];
+            double[] out = new double[TriangleLanes.MAX_LANES];
             for (int n = 0; n < 2000; ++n) {
-                int count = 1 + rnd.nextInt(TriangleLanes.LANES);
+                int count = 1 + rnd.nextInt(LANES);
                 double[] packed = leaf(rnd, count, 0), scalar = packed.clone();
-                TriangleLanes.arrange(leafNode(0, count), 1, triangles(count), packed);
+                TriangleLanes.arrange(packed, 0, count, new double[TriangleLanes.MAX_LANES * BvhLeaf.PACKED]);
                 Hit ray = rayAt(rnd, scalar, rnd.nextInt(count));
                 double least = Double.POSITIVE_INFINITY;
                 for (int j = 0; j < count; ++j) {
@@ -180,19 +182,6 @@ class VectorTrianglesTest {
                 assertThat(VectorTriangles.distances(packed, 0, count, ray, Math.nextDown(least), out)).isFalse();
                 assertThat(VectorTriangles.distances(packed, 0, count, ray, least, out)).as("a tie at the bound may win").isTrue();
             }
-        }
-
-        /** A binary node array of one leaf of {@code count} primitives from {@code first}. */
-        private static float[] leafNode(int first, int count) {
-            float[] node = BvhNodes.allocate(1);
-            BvhNodes.writeLeaf(node, BvhNodes.at(0), first, count);
-            return node;
-        }
-
-        private static byte[] triangles(int n) {
-            byte[] kind = new byte[n];
-            java.util.Arrays.fill(kind, BvhLeaf.TRIANGLE);
-            return kind;
         }
     }
 
