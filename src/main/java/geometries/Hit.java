@@ -71,9 +71,8 @@ public class Hit {
      * counts ({@code geometries.WalkCounts}). Otherwise never written.
      */
     long boxTests, primitiveTests;
-    /** The vector walk's scratch: the entry distances of a wide node's children, and their order. */
+    /** The vector walk's scratch: the entry distances of a wide node's children, or a lane leaf's hit distances. */
     final double[] lanes = new double[WideNodes.MAX_WIDTH];
-    final int[] laneOrder = new int[WideNodes.MAX_WIDTH];
 
     /**
      * Clears the record and sets the query's upper bound on the distance; the ray stays.

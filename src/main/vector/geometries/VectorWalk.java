@@ -154,7 +154,6 @@ final class VectorWalk implements WideWalk {
         double ox = hit.ox, oy = hit.oy, oz = hit.oz;
         double ix = BoundingBox.inverse(hit.dx), iy = BoundingBox.inverse(hit.dy), iz = BoundingBox.inverse(hit.dz);
         double[] entries = hit.lanes;
-        int[] lanes = hit.laneOrder;
         boolean found = false;
         int top = 0, w = 0;
         while (true) {
@@ -174,24 +173,25 @@ final class VectorWalk implements WideWalk {
                 stackT[top++] = entries[far];
                 item = w * WIDTH + (bFirst ? b : a);
             } else {
-                // Three or more children hit, nearest first (equal entries in lane order): an
-                // insertion sort of at most eight. The nearest is visited now, the others pushed far first.
-                int hits = 0;
-                for (long left = bits; left != 0; left &= left - 1) {
+                // Three or more: the nearest now (the first in lane order of equal entries), the
+                // others pushed in lane order, unsorted. Which hit wins does not depend on the
+                // order (the tie rule), and the stack's entries still prune them; a sort of up to
+                // eight cost more than the boxes it saved (BENCHMARKS.md, issue 50, item 4).
+                int near = Long.numberOfTrailingZeros(bits);
+                double nearest = entries[near];
+                for (long left = rest; left != 0; left &= left - 1) {
                     int j = Long.numberOfTrailingZeros(left);
-                    double e = entries[j];
-                    int i = hits++;
-                    while (i > 0 && entries[lanes[i - 1]] > e) {
-                        lanes[i] = lanes[i - 1];
-                        --i;
+                    if (entries[j] < nearest) {
+                        nearest = entries[j];
+                        near = j;
                     }
-                    lanes[i] = j;
                 }
-                for (int i = hits - 1; i > 0; --i) {
-                    stack[top] = w * WIDTH + lanes[i];
-                    stackT[top++] = entries[lanes[i]];
+                for (long left = bits & ~(1L << near); left != 0; left &= left - 1) {
+                    int j = Long.numberOfTrailingZeros(left);
+                    stack[top] = w * WIDTH + j;
+                    stackT[top++] = entries[j];
                 }
-                item = w * WIDTH + lanes[0];
+                item = w * WIDTH + near;
             }
             while (true) {
                 if (item < 0) {
