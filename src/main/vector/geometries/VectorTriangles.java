@@ -29,6 +29,8 @@ final class VectorTriangles {
     /** Lane j holds j: the lanes at or past a leaf's count are not its triangles. */
     private static final DoubleVector LANE_INDEX = DoubleVector.fromArray(LANES, new double[] { 0, 1, 2, 3, 4, 5, 6, 7 }, 0);
     private static final DoubleVector NAN = DoubleVector.broadcast(LANES, Double.NaN);
+    /** Whether this JDK compiles {@code VectorMask.toLong} to one instruction (from JDK 18 on). */
+    private static final boolean MASK_TO_BITS = Runtime.version().feature() >= 18;
 
     static {
         if (LANES.length() > TriangleLanes.MAX_LANES || LANES.length() > WideNodes.MAX_WIDTH)
@@ -45,10 +47,11 @@ final class VectorTriangles {
      *
      * @param bound the distance no hit is taken beyond (the current hit's, for a closest hit: a
      *              tie at it may still win; +∞ for no bound)
-     * @return whether {@code out} was written: some triangle is hit at {@code t} with
-     *         {@code alignZero(t) > 0} and {@code t <= bound}
+     * @return the triangles hit at {@code t} with {@code alignZero(t) > 0} and {@code t <= bound},
+     *         a bit per lane ({@code out} then written); 0 for none ({@code out} untouched). On
+     *         JDK 17, every lane of the leaf when one is (no mask-to-bits instruction there)
      */
-    static boolean distances(double[] s, int first, int count, Hit ray, double bound, double[] out) {
+    static long distances(double[] s, int first, int count, Hit ray, double bound, double[] out) {
         // Number r of the leaf's triangles: row r, a lane per triangle.
         DoubleVector ax = row(s, first, count, 0), ay = row(s, first, count, 1), az = row(s, first, count, 2);
         DoubleVector e1x = row(s, first, count, 3), e1y = row(s, first, count, 4), e1z = row(s, first, count, 5);
@@ -76,9 +79,15 @@ final class VectorTriangles {
         // A hit the caller may take: alignZero(t) > 0 (t >= 2^-40) and t <= bound, in a lane of the leaf.
         VectorMask<Double> may = t.compare(VectorOperators.GE, ZERO).and(t.compare(VectorOperators.LE, bound))
                 .and(LANE_INDEX.compare(VectorOperators.LT, (double) count));
-        if (!may.anyTrue()) return false;
+        if (MASK_TO_BITS) {
+            long bits = may.toLong();
+            if (bits != 0) t.intoArray(out, 0);
+            return bits;
+        }
+        // JDK 17 compiles no mask-to-bits instruction: every lane of the leaf, which the caller's rule sorts out.
+        if (!may.anyTrue()) return 0;
         t.intoArray(out, 0);
-        return true;
+        return (1L << count) - 1;
     }
 
     /** @return number {@code r} of the lane leaf's triangles, a lane each (lanes past the count: whatever follows) */
@@ -94,9 +103,11 @@ final class VectorTriangles {
      * @return whether a triangle of the leaf now holds the hit
      */
     static boolean closest(Bvh tree, double[] s, int first, int count, Hit hit, double[] scratch) {
-        if (!distances(s, first, count, hit, hit.t, scratch)) return false;
         boolean found = false;
-        for (int j = 0; j < count; ++j) found |= tree.offerTriangle(first + j, scratch[j], hit);
+        for (long may = distances(s, first, count, hit, hit.t, scratch); may != 0; may &= may - 1) {
+            int j = Long.numberOfTrailingZeros(may);
+            found |= tree.offerTriangle(first + j, scratch[j], hit);
+        }
         return found;
     }
 
@@ -111,7 +122,7 @@ final class VectorTriangles {
                          double[] scratch) {
         // No bound here: within(t, max) is asked lane by lane; the vector step rules out the
         // leaves where no triangle is hit in front of the ray, most of them.
-        if (!distances(s, first, count, query, Double.POSITIVE_INFINITY, scratch)) return true;
+        if (distances(s, first, count, query, Double.POSITIVE_INFINITY, scratch) == 0) return true;
         // Read out before any visitor runs: one may query a tree with this record, whose walk
         // writes the same scratch.
         double t0 = scratch[0], t1 = scratch[1], t2 = scratch[2], t3 = scratch[3];
