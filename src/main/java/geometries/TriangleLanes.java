@@ -55,10 +55,9 @@ final class TriangleLanes {
      */
     static void arrange(WideNodes wide, double[] packed) {
         double[] scratch = new double[MAX_LANES * BvhLeaf.PACKED];
-        int shift = Integer.numberOfTrailingZeros(wide.width);
-        for (int item = 0, end = wide.count * wide.width; item < end; ++item) {
-            int count = -WideNodes.count(wide.node, item, shift);
-            if (count > 0) arrange(packed, WideNodes.link(wide.node, item, shift), count, scratch);
+        for (int c = 0, end = wide.count * wide.width; c < end; ++c) {
+            int slot = wide.slot(c), count = -WideNodes.count(wide.node, slot, wide.width);
+            if (count > 0) arrange(packed, WideNodes.link(wide.node, slot, wide.width), count, scratch);
         }
     }
 

@@ -26,7 +26,7 @@ import java.util.Arrays;
  * leaf in the scalar layout, negative for a leaf of triangles laid out in lanes
  * ({@link TriangleLanes}), 0 for an inner child or an empty slot.</li>
  * </ul>
- * A child is addressed as {@code w · width + lane}, the walks' stack entries.
+ * A child is addressed by its slot ({@link #slot}), the walks' stack entries.
  */
 final class WideNodes {
     /** The widest node: the walks' scratch arrays hold this many children. */
@@ -64,22 +64,30 @@ final class WideNodes {
     }
 
     /**
-     * @param item  a child, {@code w · width + lane}
-     * @param shift log2 of the width
-     * @return the child's link: an inner child's wide node, a leaf's first primitive
+     * @return where child {@code lane} of wide node {@code w} is in a node array of
+     *         {@code width}-wide records: its slot, the walks' stack entry, which {@link #link}
+     *         and {@link #count} read (the offset of its min x)
      */
-    static int link(float[] nd, int item, int shift) {
-        int width = 1 << shift;
-        return Float.floatToRawIntBits(nd[BASE + (item >>> shift) * 8 * width + LINK * width + (item & (width - 1))]);
+    static int slot(int w, int lane, int width) {
+        return at(w, width) + lane;
+    }
+
+    /** @return the link of the child at {@code slot}: an inner child's wide node, a leaf's first primitive */
+    static int link(float[] nd, int slot, int width) {
+        return Float.floatToRawIntBits(nd[slot + LINK * width]);
     }
 
     /**
-     * @return child {@code item}'s primitive count (as {@link #link}): &gt; 0 for a leaf in the
-     *         scalar layout, −count for a leaf of triangles in lanes, 0 for an inner child
+     * @return the primitive count of the child at {@code slot} (as {@link #link}): &gt; 0 for a
+     *         leaf in the scalar layout, −count for a leaf of triangles in lanes, 0 for an inner child
      */
-    static int count(float[] nd, int item, int shift) {
-        int width = 1 << shift;
-        return Float.floatToRawIntBits(nd[BASE + (item >>> shift) * 8 * width + COUNT * width + (item & (width - 1))]);
+    static int count(float[] nd, int slot, int width) {
+        return Float.floatToRawIntBits(nd[slot + COUNT * width]);
+    }
+
+    /** @return the slot of child {@code c} of all the nodes' children, in node order ({@code c = w · width + lane}) */
+    int slot(int c) {
+        return slot(c / width, c % width, width);
     }
 
     /** @return the most children a walk's stack holds: (width − 1) per wide level, and the one being visited */

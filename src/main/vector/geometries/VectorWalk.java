@@ -40,7 +40,6 @@ final class VectorWalk implements WideWalk {
             : FloatVector.SPECIES_128;
     /** Children per wide node. */
     private static final int WIDTH = DOUBLES.length();
-    private static final int SHIFT = Integer.numberOfTrailingZeros(WIDTH);
     private static final DoubleVector ZERO = DoubleVector.zero(DOUBLES);
     private static final DoubleVector INFINITY = DoubleVector.broadcast(DOUBLES, Double.POSITIVE_INFINITY);
     /** Whether this JDK compiles {@code VectorMask.toLong} to one instruction (from JDK 18 on). */
@@ -91,18 +90,19 @@ final class VectorWalk implements WideWalk {
         return WIDTH + "-wide vector walk (trees of " + minPrimitives + " primitives or more)";
     }
 
-    /** The bound {@code at} of the four children, widened to doubles. */
+    /** The bound {@code at} of a node's children, widened to doubles. */
     private static DoubleVector bound(float[] nd, int at) {
         return (DoubleVector) FloatVector.fromArray(FLOATS, nd, at).convertShape(VectorOperators.F2D, DOUBLES, 0);
     }
 
     /**
-     * The slab test of wide node {@code w}'s four children against the segment [0, limit]
-     * ({@code limit} finite): the entry distances into {@code entries}.
+     * The slab test of the children of the wide node whose record is at {@code at} against the
+     * segment [0, limit] ({@code limit} finite): the entry distances into {@code entries} (when
+     * two or more are hit).
      *
      * @return the children hit, one bit per lane
      */
-    private static long test(float[] nd, int w, double rx, double ry, double rz, double rix, double riy, double riz,
+    private static long test(float[] nd, int at, double rx, double ry, double rz, double rix, double riy, double riz,
                              double limit, double[] entries) {
         // The ray comes in as doubles and is broadcast here, per node (one instruction each):
         // vectors passed between methods that the compiler does not inline are boxed, 0.5 kB a ray.
@@ -110,7 +110,6 @@ final class VectorWalk implements WideWalk {
                 oz = DoubleVector.broadcast(DOUBLES, rz);
         DoubleVector ix = DoubleVector.broadcast(DOUBLES, rix), iy = DoubleVector.broadcast(DOUBLES, riy),
                 iz = DoubleVector.broadcast(DOUBLES, riz);
-        int at = WideNodes.at(w, WIDTH);
         // The three axes written out: split into per-axis methods, the walk ran 1.5-2.1x slower
         // (measured; the compiler stopped inlining them part of the time, and vectors crossing
         // a call that is not inlined are boxed).
@@ -157,21 +156,22 @@ final class VectorWalk implements WideWalk {
         boolean found = false;
         int top = 0, w = 0;
         while (true) {
-            long bits = test(nd, w, ox, oy, oz, ix, iy, iz, Bvh.limit(hit.t), entries);
+            int at = WideNodes.at(w, WIDTH);
+            long bits = test(nd, at, ox, oy, oz, ix, iy, iz, Bvh.limit(hit.t), entries);
             int item = -1;
             long rest = bits & (bits - 1); // the children hit but the first
             if (rest == 0) {
                 // None or one child hit: nothing to order.
-                if (bits != 0) item = w * WIDTH + Long.numberOfTrailingZeros(bits);
+                if (bits != 0) item = at + Long.numberOfTrailingZeros(bits);
             } else if ((rest & (rest - 1)) == 0) {
                 // Two, the commonest case of several: one comparison instead of the sort (the
                 // nearer first, the first in lane order of equal entries, as the sort orders them).
                 int a = Long.numberOfTrailingZeros(bits), b = Long.numberOfTrailingZeros(rest);
                 boolean bFirst = entries[b] < entries[a];
                 int far = bFirst ? a : b;
-                stack[top] = w * WIDTH + far;
+                stack[top] = at + far;
                 stackT[top++] = entries[far];
-                item = w * WIDTH + (bFirst ? b : a);
+                item = at + (bFirst ? b : a);
             } else {
                 // Three or more: the nearest now (the first in lane order of equal entries), the
                 // others pushed in lane order, unsorted. Which hit wins does not depend on the
@@ -188,10 +188,10 @@ final class VectorWalk implements WideWalk {
                 }
                 for (long left = bits & ~(1L << near); left != 0; left &= left - 1) {
                     int j = Long.numberOfTrailingZeros(left);
-                    stack[top] = w * WIDTH + j;
+                    stack[top] = at + j;
                     stackT[top++] = entries[j];
                 }
-                item = w * WIDTH + near;
+                item = at + near;
             }
             while (true) {
                 if (item < 0) {
@@ -201,7 +201,7 @@ final class VectorWalk implements WideWalk {
                     } while (!(stackT[top] <= Bvh.limit(hit.t)));
                     item = stack[top];
                 }
-                int count = WideNodes.count(nd, item, SHIFT), link = WideNodes.link(nd, item, SHIFT);
+                int count = WideNodes.count(nd, item, WIDTH), link = WideNodes.link(nd, item, WIDTH);
                 if (count == 0) {
                     w = link;
                     break;
@@ -224,14 +224,15 @@ final class VectorWalk implements WideWalk {
         double bound = Bvh.limit(limit);
         int top = 0, w = 0;
         while (true) {
-            long bits = test(nd, w, ox, oy, oz, ix, iy, iz, bound, entries);
+            int at = WideNodes.at(w, WIDTH);
+            long bits = test(nd, at, ox, oy, oz, ix, iy, iz, bound, entries);
             // In lane order, as the scalar walk meets them: pushed last first.
             for (long rest = Long.reverse(bits); rest != 0; rest &= rest - 1)
-                stack[top++] = w * WIDTH + 63 - Long.numberOfTrailingZeros(rest);
+                stack[top++] = at + 63 - Long.numberOfTrailingZeros(rest);
             while (true) {
                 if (top == 0) return true;
                 int item = stack[--top];
-                int count = WideNodes.count(nd, item, SHIFT), link = WideNodes.link(nd, item, SHIFT);
+                int count = WideNodes.count(nd, item, WIDTH), link = WideNodes.link(nd, item, WIDTH);
                 if (count == 0) {
                     w = link;
                     break;

@@ -85,9 +85,9 @@ class TriangleLanesTest {
             for (int i = 0; i < 40; ++i) g.add(new Sphere(new Point(i * 0.3, 1.5, 6), 0.2));
             Bvh tree = Bvh.build(g, 1, 4096, true, VectorWalk.anyCpu());
             WideNodes wide = tree.wideNodes();
-            int shift = Integer.numberOfTrailingZeros(wide.width), lanes = 0, scalar = 0;
+            int lanes = 0, scalar = 0;
             for (int item = 0; item < wide.count * wide.width; ++item) {
-                int count = WideNodes.count(wide.node, item, shift);
+                int count = WideNodes.count(wide.node, wide.slot(item), wide.width);
                 if (count < 0) ++lanes;
                 if (count > 0) ++scalar;
             }
@@ -110,11 +110,10 @@ class TriangleLanesTest {
         void wholeSubtrees(int lanes) {
             Bvh tree = Bvh.build(new Geometries(BvhTest.gridMesh(20)), 1, 4096, true, new Lanes(lanes));
             WideNodes wide = tree.wideNodes();
-            int shift = Integer.numberOfTrailingZeros(wide.width);
             int[] seen = new int[tree.primitiveTotal()];
             int leaves = 0, triangles = 0, largest = 0;
             for (int item = 0; item < wide.count * wide.width; ++item) {
-                int count = -WideNodes.count(wide.node, item, shift), first = WideNodes.link(wide.node, item, shift);
+                int count = -WideNodes.count(wide.node, wide.slot(item), wide.width), first = WideNodes.link(wide.node, wide.slot(item), wide.width);
                 if (count <= 0) continue;
                 ++leaves;
                 triangles += count;

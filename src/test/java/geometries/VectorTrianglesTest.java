@@ -282,9 +282,9 @@ class VectorTrianglesTest {
         void leavesInLanes() {
             Bvh vector = Bvh.build(new Geometries(BenchmarkMeshes.displacedSphere(70, 72)), 1, 4096, true, VectorWalk.anyCpu());
             WideNodes wide = vector.wideNodes();
-            int lanes = 0, scalar = 0, shift = Integer.numberOfTrailingZeros(wide.width);
+            int lanes = 0, scalar = 0;
             for (int item = 0; item < wide.count * wide.width; ++item) {
-                int count = WideNodes.count(wide.node, item, shift);
+                int count = WideNodes.count(wide.node, wide.slot(item), wide.width);
                 if (count < 0) ++lanes;
                 if (count > 0) ++scalar;
             }
