@@ -7,7 +7,8 @@ import java.util.Arrays;
  * and the collapse that makes them from the binary tree ({@link BvhNodes}). Each wide node holds
  * up to {@link #width} children (as many as doubles fill one of the CPU's vectors: 4 with AVX2,
  * 8 with AVX-512), taken from the binary tree by opening, while there is room, the child of
- * largest surface area that is an inner node (as Embree's and pbrt's wide trees are made); the
+ * largest surface area that is an inner node and not a lane leaf (a whole subtree of a few
+ * triangles, {@link TriangleLanes}), as Embree's and pbrt's wide trees are made; the
  * children's boxes are the binary nodes' float boxes unchanged, so that a box test of the vector
  * walk computes, lane by lane, the same doubles as the scalar walk's test of that node. Children
  * keep the binary tree's left-to-right order: an any-hit walk that visits them in slot order
