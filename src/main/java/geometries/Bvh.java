@@ -172,7 +172,8 @@ public final class Bvh extends Intersectable {
         // faster in scalar code (WideWalk.minPrimitives).
         if (walk != null && nodeCount > 1 && prim.length >= walk.minPrimitives())
             wide = WideTree.of(walk, node, nodeCount, kind, packed);
-        widens = later && wide == null && nodeCount > 1 && Vectorization.AVAILABLE && prim.length >= Vectorization.MIN_PRIMITIVES;
+        widens = later && wide == null && nodeCount > 1 && Vectorization.AVAILABLE && Vectorization.SWITCHES
+                && prim.length >= Vectorization.MIN_PRIMITIVES;
     }
 
     /**

@@ -9,7 +9,8 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * ({@code --add-modules jdk.incubator.vector}) and the CPU's vectors hold four doubles (AVX2 and
  * later); the scalar walk of binary nodes otherwise. A render's tree takes the vector walk only
  * in a render with seconds of work left, once the walk runs compiled ({@link #COMPILED},
- * {@link Bvh#expectLongWalk}): a short render never loads a vector class. Nothing is required
+ * {@link Bvh#expectLongWalk}), and only from JDK 25 on ({@link #SWITCHES}): a short render never
+ * loads a vector class. Nothing is required
  * of anyone: {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true}
  * gives every tree the vector walk from its first ray (a JVM that renders for long: a benchmark,
  * a Spark executor). Both walks return the same hits, so the choice changes speed only, never an
@@ -34,6 +35,17 @@ final class Vectorization {
      * scene of 1,392 shapes on par, the showcase of 133 mixed).
      */
     static final int MIN_PRIMITIVES = Runtime.version().feature() >= 25 ? 128 : 4096;
+    /**
+     * Whether a render's tree takes the vector walk by itself, once it is compiled and the render
+     * has seconds left ({@link Bvh#expectLongWalk}): from JDK 25 on. On JDK 17 a tree switched in
+     * the middle of a render walked about 30 % slower than the scalar walk (a mesh of 10<sup>5</sup>
+     * triangles, 144 samples a pixel: 15-17 s against 12.3 s), although the same walk from the
+     * first ray is about 18 % faster (10.1 s): the code the compiler makes for a walk that changes
+     * under a running render is worse there (BENCHMARKS.md, issue 50, item 2, second pass). JDK 18
+     * to 24 are not measured, so they keep the scalar walk too; {@code -Draytracer.simd=true} gives
+     * any of them the vector walk from the first ray.
+     */
+    static final boolean SWITCHES = Runtime.version().feature() >= 25;
     /**
      * Whether the vector walk runs compiled in this JVM: set by {@link VectorWarmUp} (from the
      * start with {@code -Draytracer.simd=true}), never unset. The one piece of state a JVM's
@@ -90,7 +102,9 @@ final class Vectorization {
      */
     static String describe() {
         if (!AVAILABLE) return "scalar walk (" + WHY_NOT + ")";
-        if (!COMPILED.get()) return "scalar walk (the vector walk is not compiled yet: a short render)";
+        if (!COMPILED.get())
+            return SWITCHES ? "scalar walk (the vector walk is not compiled yet: a short render)"
+                    : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk only with -D" + PROPERTY + "=true)";
         WideWalk walk = walk();
         return walk != null ? walk.description() : "scalar walk (" + Loaded.WHY_NOT + ")";
     }
