@@ -181,7 +181,7 @@ public final class Bvh extends Intersectable {
      * enough for the vector walk gets its wide part when the walk runs compiled in this JVM
      * ({@link Vectorization#COMPILED}), and until then the walk is warmed ({@link VectorWarmUp}),
      * once per JVM. Not before: the warm-up costs about a second of processor time, which a short
-     * render would lose.
+     * render would lose. Only from JDK 25 on ({@link Vectorization#SWITCHES}); before, nothing.
      */
     void expectLongWalk() {
         if (!widens || wide != null || noRoom) return;
@@ -210,7 +210,8 @@ public final class Bvh extends Intersectable {
      * One line for a render's summary: which walk this JVM's trees take now, the vector walk of
      * wide nodes or the scalar one, and for the scalar one why ({@code jdk.incubator.vector} not
      * readable, {@code -Draytracer.simd=false}, a CPU without 256-bit vectors, or a vector walk
-     * not compiled yet: only a render with seconds of work left has it compiled).
+     * not compiled yet: only a render with seconds of work left has it compiled, from JDK 25 on;
+     * before, only {@code -Draytracer.simd=true} gives it).
      *
      * @return the walk, in words
      */
