@@ -52,10 +52,16 @@ final class VectorTriangles {
      *         JDK 17, every lane of the leaf when one is (no mask-to-bits instruction there)
      */
     static long distances(double[] s, int first, int count, Hit ray, double bound, double[] out) {
-        // Number r of the leaf's triangles: row r, a lane per triangle.
-        DoubleVector ax = row(s, first, count, 0), ay = row(s, first, count, 1), az = row(s, first, count, 2);
-        DoubleVector e1x = row(s, first, count, 3), e1y = row(s, first, count, 4), e1z = row(s, first, count, 5);
-        DoubleVector e2x = row(s, first, count, 6), e2y = row(s, first, count, 7), e2z = row(s, first, count, 8);
+        // Number r of the leaf's triangles: row r, a lane per triangle (lanes past the count read
+        // whatever follows). Loaded here, not in a helper: a method that returns a vector may be
+        // left out of line by the compiler (JDK 17), and the vector is then an object.
+        int row = TriangleLanes.row(first, count, 0);
+        DoubleVector ax = DoubleVector.fromArray(LANES, s, row), ay = DoubleVector.fromArray(LANES, s, row + count),
+                az = DoubleVector.fromArray(LANES, s, row + 2 * count);
+        DoubleVector e1x = DoubleVector.fromArray(LANES, s, row + 3 * count),
+                e1y = DoubleVector.fromArray(LANES, s, row + 4 * count), e1z = DoubleVector.fromArray(LANES, s, row + 5 * count);
+        DoubleVector e2x = DoubleVector.fromArray(LANES, s, row + 6 * count),
+                e2y = DoubleVector.fromArray(LANES, s, row + 7 * count), e2z = DoubleVector.fromArray(LANES, s, row + 8 * count);
         double dx = ray.dx, dy = ray.dy, dz = ray.dz;
         // Triangle.intersect, lane by lane, in its order. Products are commutative in IEEE
         // arithmetic (dy·e2z is e2z·dy to the bit); only the grouping of sums matters, kept.
@@ -88,11 +94,6 @@ final class VectorTriangles {
         if (!may.anyTrue()) return 0;
         t.intoArray(out, 0);
         return (1L << count) - 1;
-    }
-
-    /** @return number {@code r} of the lane leaf's triangles, a lane each (lanes past the count: whatever follows) */
-    private static DoubleVector row(double[] s, int first, int count, int r) {
-        return DoubleVector.fromArray(LANES, s, TriangleLanes.row(first, count, r));
     }
 
     /**

@@ -101,11 +101,6 @@ final class VectorWalk implements WideWalk {
         return WIDTH + "-wide vector walk (trees of " + minPrimitives + " primitives or more)";
     }
 
-    /** The bound {@code at} of a node's children, widened to doubles. */
-    private static DoubleVector bound(float[] nd, int at) {
-        return (DoubleVector) FloatVector.fromArray(FLOATS, nd, at).convertShape(VectorOperators.F2D, DOUBLES, 0);
-    }
-
     /**
      * The slab test of the children of the wide node whose record is at {@code at} against the
      * segment [0, limit] ({@code limit} finite): the entry distances into {@code entries} (when
@@ -121,24 +116,34 @@ final class VectorWalk implements WideWalk {
                 oz = DoubleVector.broadcast(DOUBLES, rz);
         DoubleVector ix = DoubleVector.broadcast(DOUBLES, rix), iy = DoubleVector.broadcast(DOUBLES, riy),
                 iz = DoubleVector.broadcast(DOUBLES, riz);
-        // The three axes written out: split into per-axis methods, the walk ran 1.5-2.1x slower
-        // (measured; the compiler stopped inlining them part of the time, and vectors crossing
-        // a call that is not inlined are boxed).
+        // The three axes written out, and the float bounds widened in place: split into per-axis
+        // methods, the walk ran 1.5-2.1x slower (measured; the compiler stopped inlining them
+        // part of the time, and vectors crossing a call that is not inlined are boxed). So no
+        // method of ours takes or returns a vector: even a one-line helper was left out of line on
+        // JDK 17 once its quick-tier code had grown large, and then every vector it returned was
+        // an object (220 bytes a ray, WideWalkTest).
         DoubleVector t0 = ZERO, t1 = DoubleVector.broadcast(DOUBLES, limit);
-        DoubleVector a = bound(nd, WideNodes.bound(at, MIN_X, WIDTH)).sub(ox).mul(ix), b = bound(nd, WideNodes.bound(at, MAX_X, WIDTH)).sub(ox).mul(ix);
+        DoubleVector a = ((DoubleVector) FloatVector.fromArray(FLOATS, nd, WideNodes.bound(at, MIN_X, WIDTH))
+                .convertShape(VectorOperators.F2D, DOUBLES, 0)).sub(ox).mul(ix);
+        DoubleVector b = ((DoubleVector) FloatVector.fromArray(FLOATS, nd, WideNodes.bound(at, MAX_X, WIDTH))
+                .convertShape(VectorOperators.F2D, DOUBLES, 0)).sub(ox).mul(ix);
         VectorMask<Double> swap = a.compare(VectorOperators.GT, b);
         DoubleVector near = a.blend(b, swap), far = b.blend(a, swap);
         t0 = t0.blend(near, near.compare(VectorOperators.GT, t0));
         t1 = t1.blend(far, far.compare(VectorOperators.LT, t1));
-        a = bound(nd, WideNodes.bound(at, MIN_Y, WIDTH)).sub(oy).mul(iy);
-        b = bound(nd, WideNodes.bound(at, MAX_Y, WIDTH)).sub(oy).mul(iy);
+        a = ((DoubleVector) FloatVector.fromArray(FLOATS, nd, WideNodes.bound(at, MIN_Y, WIDTH))
+                .convertShape(VectorOperators.F2D, DOUBLES, 0)).sub(oy).mul(iy);
+        b = ((DoubleVector) FloatVector.fromArray(FLOATS, nd, WideNodes.bound(at, MAX_Y, WIDTH))
+                .convertShape(VectorOperators.F2D, DOUBLES, 0)).sub(oy).mul(iy);
         swap = a.compare(VectorOperators.GT, b);
         near = a.blend(b, swap);
         far = b.blend(a, swap);
         t0 = t0.blend(near, near.compare(VectorOperators.GT, t0));
         t1 = t1.blend(far, far.compare(VectorOperators.LT, t1));
-        a = bound(nd, WideNodes.bound(at, MIN_Z, WIDTH)).sub(oz).mul(iz);
-        b = bound(nd, WideNodes.bound(at, MAX_Z, WIDTH)).sub(oz).mul(iz);
+        a = ((DoubleVector) FloatVector.fromArray(FLOATS, nd, WideNodes.bound(at, MIN_Z, WIDTH))
+                .convertShape(VectorOperators.F2D, DOUBLES, 0)).sub(oz).mul(iz);
+        b = ((DoubleVector) FloatVector.fromArray(FLOATS, nd, WideNodes.bound(at, MAX_Z, WIDTH))
+                .convertShape(VectorOperators.F2D, DOUBLES, 0)).sub(oz).mul(iz);
         swap = a.compare(VectorOperators.GT, b);
         near = a.blend(b, swap);
         far = b.blend(a, swap);
