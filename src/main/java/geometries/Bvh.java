@@ -61,7 +61,11 @@ public final class Bvh extends Intersectable {
      * later, while a long render walks the tree ({@link #expectLongWalk}); then published whole.
      */
     private volatile WideTree wide;
-    /** Whether this tree gets {@link #wide} once a long render asks and the vector walk is compiled. */
+    /**
+     * Whether this tree may get {@link #wide} later: once a long render asks and the vector walk is
+     * compiled ({@link #expectLongWalk}, from JDK 25), or at the start of a long render
+     * ({@link #expectCameraRays}, before).
+     */
     private final boolean widens;
     /** Set when the heap had no room for {@link #wide}: the tree keeps the scalar walk ({@link #widen}). */
     private volatile boolean noRoom;
@@ -172,7 +176,7 @@ public final class Bvh extends Intersectable {
         // faster in scalar code (WideWalk.minPrimitives).
         if (walk != null && nodeCount > 1 && prim.length >= walk.minPrimitives())
             wide = WideTree.of(walk, node, nodeCount, kind, packed);
-        widens = later && wide == null && nodeCount > 1 && Vectorization.AVAILABLE && Vectorization.SWITCHES
+        widens = later && wide == null && nodeCount > 1 && Vectorization.AVAILABLE
                 && prim.length >= Vectorization.MIN_PRIMITIVES;
     }
 
@@ -184,9 +188,22 @@ public final class Bvh extends Intersectable {
      * render would lose. Only from JDK 25 on ({@link Vectorization#SWITCHES}); before, nothing.
      */
     void expectLongWalk() {
-        if (!widens || wide != null || noRoom) return;
+        if (!widens || !Vectorization.SWITCHES || wide != null || noRoom) return;
         if (Vectorization.COMPILED.get()) widen(Vectorization.walk());
         else VectorWarmUp.start();
+    }
+
+    /**
+     * A render of about {@code cameraRays} camera rays is about to start, before any of its rays
+     * is traced: where trees do not switch walks in the middle of a render (before JDK 25,
+     * {@link Vectorization#SWITCHES}), a tree large enough for the vector walk gets its wide part
+     * now when the render is long ({@link Vectorization#FIRST_RAY_CAMERA_RAYS}), and the render
+     * takes the vector walk from its first ray. A tree that already has it keeps it.
+     */
+    void expectCameraRays(long cameraRays) {
+        if (!widens || Vectorization.SWITCHES || wide != null || noRoom
+                || cameraRays < Vectorization.FIRST_RAY_CAMERA_RAYS) return;
+        widen(Vectorization.walk());
     }
 
     /**
@@ -217,6 +234,12 @@ public final class Bvh extends Intersectable {
      */
     public static String walkDescription() {
         return Vectorization.describe();
+    }
+
+    /** @return as {@link #walkDescription()}, for this tree: its vector walk's words once it has its wide part */
+    String describeWalk() {
+        WideTree w = wide;
+        return w != null ? w.walk().description() : Vectorization.describe();
     }
 
     /**

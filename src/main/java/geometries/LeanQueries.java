@@ -18,6 +18,27 @@ public final class LeanQueries {
     }
 
     /**
+     * Told, before any of its rays is traced, that a render of about {@code cameraRays} camera rays
+     * starts: on a JDK where trees do not switch walks during a render, a tree of {@code world}
+     * large enough for the vector walk takes it from the first ray when the render is long
+     * ({@link Bvh#expectCameraRays}); otherwise nothing.
+     *
+     * @param world      the render's geometry, a tree or not
+     * @param cameraRays the camera rays the render traces at least (pixels times the fewest a pixel takes)
+     */
+    public static void expectCameraRays(Intersectable world, long cameraRays) {
+        if (world instanceof Bvh tree) tree.expectCameraRays(cameraRays);
+    }
+
+    /**
+     * @param world the render's geometry, a tree or not
+     * @return the words of the walk {@code world} takes now, when it is a tree ({@link Bvh#walkDescription()})
+     */
+    public static String walkDescription(Intersectable world) {
+        return world instanceof Bvh tree ? tree.describeWalk() : Bvh.walkDescription();
+    }
+
+    /**
      * Told that a render will walk {@code world} for seconds more: when it is a tree with wide
      * nodes whose vector walk this JVM has not compiled yet, that walk is warmed on a thread of
      * its own ({@link Bvh#expectLongWalk}); otherwise nothing.

@@ -8,9 +8,10 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * the {@code VectorWalk} of wide nodes where the incubating Vector API is readable
  * ({@code --add-modules jdk.incubator.vector}) and the CPU's vectors hold four doubles (AVX2 and
  * later); the scalar walk of binary nodes otherwise. A render's tree takes the vector walk only
- * in a render with seconds of work left, once the walk runs compiled ({@link #COMPILED},
- * {@link Bvh#expectLongWalk}), and only from JDK 25 on ({@link #SWITCHES}): a short render never
- * loads a vector class. Nothing is required
+ * in a long render: from JDK 25 on ({@link #SWITCHES}) once the render has seconds of work left
+ * and the walk runs compiled ({@link #COMPILED}, {@link Bvh#expectLongWalk}); before, from the
+ * first ray of a render of {@link #FIRST_RAY_CAMERA_RAYS} camera rays or more
+ * ({@link Bvh#expectCameraRays}). A short render never loads a vector class. Nothing is required
  * of anyone: {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true}
  * gives every tree the vector walk from its first ray (a JVM that renders for long: a benchmark,
  * a Spark executor). Both walks return the same hits, so the choice changes speed only, never an
@@ -38,14 +39,26 @@ final class Vectorization {
     /**
      * Whether a render's tree takes the vector walk by itself, once it is compiled and the render
      * has seconds left ({@link Bvh#expectLongWalk}): from JDK 25 on. On JDK 17 a tree switched in
-     * the middle of a render walked about 30 % slower than the scalar walk (a mesh of 10<sup>5</sup>
-     * triangles, 144 samples a pixel: 15-17 s against 12.3 s), although the same walk from the
-     * first ray is about 18 % faster (10.1 s): the code the compiler makes for a walk that changes
-     * under a running render is worse there (BENCHMARKS.md, issue 50, item 2, second pass). JDK 18
-     * to 24 are not measured, so they keep the scalar walk too; {@code -Draytracer.simd=true} gives
-     * any of them the vector walk from the first ray.
+     * the middle of a render walked about 1.5× slower per ray than the same tree on the vector walk
+     * from the render's first ray (a mesh of 10<sup>5</sup> triangles, 144 samples a pixel: 15-21 s
+     * against 10.1 s, the scalar walk 12.3 s), for reasons not found: not the compiled code, where
+     * the data lies, the threads or the records (BENCHMARKS.md, issue 50, night session). JDK 18 to
+     * 24 are not measured, so they do as JDK 17: a long render takes the vector walk from its first
+     * ray ({@link #FIRST_RAY_CAMERA_RAYS}), and {@code -Draytracer.simd=true} gives it to any render.
      */
     static final boolean SWITCHES = Runtime.version().feature() >= 25;
+    /**
+     * Where a render's tree does not switch ({@link #SWITCHES} false): the camera rays from which a
+     * render takes the vector walk from its first ray ({@link Bvh#expectCameraRays}), decided before
+     * any ray of it is traced. Measured on JDK 17 (the 99,224-triangle mesh at 600×600, 2 threads,
+     * whole renders against the scalar walk): 5.8·10<sup>6</sup> camera rays (16 a pixel) took as
+     * long either way, 2.3·10<sup>7</sup> (64) 0.87 of the time, 5.2·10<sup>7</sup> (144) 0.84; one
+     * a pixel took 1.5×, the vector code run interpreted while it is compiled (about 0.6 s). A tree
+     * that changes walk in the middle of a render walks 1.5× slower on JDK 17, for reasons not
+     * found, though one that starts a render with the vector walk does not (BENCHMARKS.md, issue 50,
+     * night session); hence a rule from the render's size, not its pace.
+     */
+    static final long FIRST_RAY_CAMERA_RAYS = 20_000_000L;
     /**
      * Whether the vector walk runs compiled in this JVM: set by {@link VectorWarmUp} (from the
      * start with {@code -Draytracer.simd=true}), never unset. The one piece of state a JVM's
@@ -104,7 +117,8 @@ final class Vectorization {
         if (!AVAILABLE) return "scalar walk (" + WHY_NOT + ")";
         if (!COMPILED.get())
             return SWITCHES ? "scalar walk (the vector walk is not compiled yet: a short render)"
-                    : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk only with -D" + PROPERTY + "=true)";
+                    : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk in renders of "
+                    + FIRST_RAY_CAMERA_RAYS + " camera rays or more; any with -D" + PROPERTY + "=true)";
         WideWalk walk = walk();
         return walk != null ? walk.description() : "scalar walk (" + Loaded.WHY_NOT + ")";
     }

@@ -117,6 +117,15 @@ final class LatticeSampler extends PixelSampler {
         }
 
         /**
+         * @return one for ADAPTIVE (a smooth region traces its lattice's corners only, each shared
+         *         by four pixels), two for CORNERS (the centre, and one corner's share)
+         */
+        @Override
+        public long leastSamplesPerPixel() {
+            return adaptive ? 1 : 2;
+        }
+
+        /**
          * The tile side, in pixels: 64, fewer for lattices above 4 points per pixel side so that the
          * per-tile cache stays at most 257² points (2.1 MB). Large tiles matter: the points on a tile's
          * border are traced again by the neighbouring tile, about 2/side of the one-ray-per-pixel base.

@@ -62,6 +62,12 @@ final class NoiseAdaptiveSampler extends PixelSampler {
             return 1L << (2 * depth);
         }
 
+        /** @return {@link #FIRST} (or 4^depth, when fewer): a smooth pixel stops at its first test */
+        @Override
+        public long leastSamplesPerPixel() {
+            return Math.min(FIRST, maxSamplesPerPixel());
+        }
+
         /** @return 16, as the other samplers that sample each pixel on its own */
         @Override
         public int tileSize() {

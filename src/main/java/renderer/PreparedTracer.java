@@ -26,4 +26,14 @@ interface PreparedTracer {
      */
     default void expectLongRender() {
     }
+
+    /**
+     * Told, before any worker starts, how many camera rays the render traces at least: a render
+     * long from the start may take the faster walk from its first ray (the scene's tree,
+     * {@link LeanQueries#expectCameraRays}). By default nothing.
+     *
+     * @param cameraRays pixels times the fewest camera rays a pixel takes
+     */
+    default void expectCameraRays(long cameraRays) {
+    }
 }

@@ -157,10 +157,14 @@ public class RayTracerBasic extends RayTracerBase {
                 SceneStamp.lightsForBudget(sceneParts()));
     }
 
-    /** @return which walk the BVH takes on this JVM (vector or scalar, {@link Bvh#walkDescription()}), after a comma; "" without the BVH */
+    /**
+     * @return which walk the BVH takes (vector or scalar, {@link Bvh#walkDescription()}), after a
+     *         comma: the last prepared tree's, once a render prepared one; "" without the BVH
+     */
     @Override
     String walk() {
-        return useBvh ? ", " + Bvh.walkDescription() : "";
+        WhittedShader prepared = shader;
+        return useBvh ? ", " + (prepared != null ? prepared.walk() : Bvh.walkDescription()) : "";
     }
 
     @Override

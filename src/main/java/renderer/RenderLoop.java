@@ -151,6 +151,7 @@ final class RenderLoop {
             // The clock of the render starts here, after the preparation (timed on its own).
             Progress progress = new Progress("render " + name, pixels, execution.progressStep(), execution.output());
             int threads = execution.threads();
+            prepared.expectCameraRays(pixels * sampling.leastSamplesPerPixel());
             if (threads == 0) {
                 worker(progress).run();
             } else {

@@ -19,6 +19,15 @@ interface SamplerPlan {
      */
     long maxSamplesPerPixel();
 
+    /**
+     * @return the fewest camera rays a pixel takes, as far as a render's size is estimated before it
+     *         starts ({@link PreparedTracer#expectCameraRays}): {@link #maxSamplesPerPixel()}, but
+     *         for modes whose pixels take fewer where the image is smooth
+     */
+    default long leastSamplesPerPixel() {
+        return maxSamplesPerPixel();
+    }
+
     /** @return the side, in pixels, of the render loop's square tiles that suits this sampler */
     int tileSize();
 

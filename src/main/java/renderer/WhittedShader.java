@@ -85,6 +85,17 @@ final class WhittedShader implements PreparedTracer {
         this.shadowSamples = shadowSamples;
     }
 
+    /** The scene's tree may take its vector walk from the first ray ({@link LeanQueries#expectCameraRays}). */
+    @Override
+    public void expectCameraRays(long cameraRays) {
+        LeanQueries.expectCameraRays(world, cameraRays);
+    }
+
+    /** @return the words of the walk the scene's tree takes now ({@link LeanQueries#walkDescription}) */
+    String walk() {
+        return LeanQueries.walkDescription(world);
+    }
+
     /** The scene's tree warms its vector walk ({@link LeanQueries#expectLongWalk}). */
     @Override
     public void expectLongRender() {

@@ -9,8 +9,14 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
+
+import org.junit.jupiter.api.DisplayName;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.ValueSource;
+
+import primitives.Point;
 
 /**
  * Which walk a JVM gets, decided once per JVM (so each case is a JVM of its own): the vector walk
@@ -22,6 +28,24 @@ class VectorizationTest {
     /** Prints this JVM's walk, for the cases below. */
     public static void main(String[] args) {
         System.out.println(Bvh.walkDescription());
+    }
+
+    @ParameterizedTest(name = "{0} camera rays")
+    @ValueSource(longs = { 1, Vectorization.FIRST_RAY_CAMERA_RAYS - 1, Vectorization.FIRST_RAY_CAMERA_RAYS })
+    @DisplayName("before JDK 25 a render long from the start gives a large tree the vector walk from its first ray;"
+            + " from JDK 25 the render switches instead, and a small tree never widens")
+    void firstRayRule(long cameraRays) {
+        assumeTrue(Vectorization.walk() != null, "no vector walk in this JVM: " + Bvh.walkDescription());
+        Bvh large = Bvh.build(new Geometries(BvhTest.gridMesh(60)));
+        Bvh small = Bvh.build(new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(3, 0, 0), 1)));
+        assertThat(large.primitiveTotal()).isGreaterThanOrEqualTo(Vectorization.MIN_PRIMITIVES);
+        large.expectCameraRays(cameraRays);
+        small.expectCameraRays(cameraRays);
+        boolean wide = !Vectorization.SWITCHES && cameraRays >= Vectorization.FIRST_RAY_CAMERA_RAYS;
+        assertThat(large.wideNodes() != null).as("the large tree widened").isEqualTo(wide);
+        assertThat(small.wideNodes()).as("a tree below the walk's size").isNull();
+        if (wide) assertThat(large.describeWalk()).matches("[48]-wide vector walk \\(trees of \\d+ primitives or more\\)");
+        else assertThat(large.describeWalk()).isEqualTo(Bvh.walkDescription());
     }
 
     @ParameterizedTest(name = "{0} → {1}")
@@ -45,7 +69,8 @@ class VectorizationTest {
         if (expected.equals("AUTO"))
             // From JDK 25 a render switches by itself; before, only -Draytracer.simd=true gives the vector walk.
             expected = Runtime.version().feature() >= 25 ? "scalar walk (the vector walk is not compiled yet: a short render)"
-                    : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk only with -Draytracer.simd=true)";
+                    : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk in renders of 20000000 camera"
+                    + " rays or more; any with -Draytracer.simd=true)";
         if (expected.startsWith("-wide")) assertThat(out).matches("[48]" + expected + " \\(trees of \\d+ primitives or more\\)");
         else assertThat(out).isEqualTo(expected);
     }
