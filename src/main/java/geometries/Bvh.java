@@ -62,9 +62,9 @@ public final class Bvh extends Intersectable {
      */
     private volatile WideTree wide;
     /**
-     * Whether this tree may get {@link #wide} later: once a long render asks and the vector walk is
-     * compiled ({@link #expectLongWalk}, from JDK 25), or at the start of a long render
-     * ({@link #expectCameraRays}, before).
+     * Whether this tree may get {@link #wide} later: at the start of a long render
+     * ({@link #expectCameraRays}), or once a render's pace says it is long and the vector walk is
+     * compiled ({@link #expectLongWalk}, from JDK 25).
      */
     private final boolean widens;
     /** Set when the heap had no room for {@link #wide}: the tree keeps the scalar walk ({@link #widen}). */
@@ -195,13 +195,13 @@ public final class Bvh extends Intersectable {
 
     /**
      * A render of about {@code cameraRays} camera rays is about to start, before any of its rays
-     * is traced: where trees do not switch walks in the middle of a render (before JDK 25,
-     * {@link Vectorization#SWITCHES}), a tree large enough for the vector walk gets its wide part
-     * now when the render is long ({@link Vectorization#FIRST_RAY_CAMERA_RAYS}), and the render
-     * takes the vector walk from its first ray. A tree that already has it keeps it.
+     * is traced: a tree of {@link Vectorization#FIRST_RAY_MIN_PRIMITIVES} or more gets its wide part
+     * now when the render is long ({@link Vectorization#FIRST_RAY_CAMERA_RAYS}), and the render takes
+     * the vector walk from its first ray. A tree that already has it keeps it; a render too short
+     * for this rule may still switch at its pace from JDK 25 on ({@link #expectLongWalk}).
      */
     void expectCameraRays(long cameraRays) {
-        if (!widens || Vectorization.SWITCHES || wide != null || noRoom
+        if (!widens || wide != null || noRoom || prim.length < Vectorization.FIRST_RAY_MIN_PRIMITIVES
                 || cameraRays < Vectorization.FIRST_RAY_CAMERA_RAYS) return;
         widen(Vectorization.walk());
     }

@@ -48,17 +48,25 @@ final class Vectorization {
      */
     static final boolean SWITCHES = Runtime.version().feature() >= 25;
     /**
-     * Where a render's tree does not switch ({@link #SWITCHES} false): the camera rays from which a
-     * render takes the vector walk from its first ray ({@link Bvh#expectCameraRays}), decided before
-     * any ray of it is traced. Measured on JDK 17 (the 99,224-triangle mesh at 600×600, 2 threads,
-     * whole renders against the scalar walk): 5.8·10<sup>6</sup> camera rays (16 a pixel) took as
-     * long either way, 2.3·10<sup>7</sup> (64) 0.87 of the time, 5.2·10<sup>7</sup> (144) 0.84; one
-     * a pixel took 1.5×, the vector code run interpreted while it is compiled (about 0.6 s). A tree
-     * that changes walk in the middle of a render walks 1.5× slower on JDK 17, for reasons not
-     * found, though one that starts a render with the vector walk does not (BENCHMARKS.md, issue 50,
-     * night session); hence a rule from the render's size, not its pace.
+     * The camera rays from which a render takes the vector walk from its first ray, on a tree of
+     * {@link #FIRST_RAY_MIN_PRIMITIVES} or more ({@link Bvh#expectCameraRays}), decided before any
+     * ray of it is traced, on every JDK. Measured on the 99,224-triangle mesh at 600×600, 2 threads,
+     * whole renders against the scalar walk: on JDK 17, 5.8·10<sup>6</sup> camera rays (16 a pixel)
+     * took as long either way, 2.3·10<sup>7</sup> (64) 0.87 of the time, 5.2·10<sup>7</sup> (144)
+     * 0.84, and one a pixel 1.5× (the vector code runs interpreted until compiled, about 0.6 s); on
+     * JDK 25, in pairs, 0.97 and 0.94, where switching at the render's pace gave 1.03 (64 a pixel,
+     * too short to switch) and 0.92–0.94. On JDK 17 a tree that changes
+     * walk during a render walks 1.5× slower, for reasons not found (BENCHMARKS.md, issue 50, night
+     * session): there this rule is the only way in.
      */
     static final long FIRST_RAY_CAMERA_RAYS = 20_000_000L;
+    /**
+     * The smallest tree that takes the vector walk from a long render's first ray: JDK 17's
+     * {@link #MIN_PRIMITIVES}, on every JDK. The 137-primitive Sunflow scene at 64 samples a pixel
+     * (2.3·10<sup>7</sup> camera rays) took 9.9–14.2 s with the vector walk from its first ray on
+     * JDK 25, against 9.2 s scalar: a shallow tree of spheres and large triangles gains nothing.
+     */
+    static final int FIRST_RAY_MIN_PRIMITIVES = 4096;
     /**
      * Whether the vector walk runs compiled in this JVM: set by {@link VectorWarmUp} (from the
      * start with {@code -Draytracer.simd=true}), never unset. The one piece of state a JVM's
@@ -118,7 +126,8 @@ final class Vectorization {
         if (!COMPILED.get())
             return SWITCHES ? "scalar walk (the vector walk is not compiled yet: a short render)"
                     : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk in renders of "
-                    + FIRST_RAY_CAMERA_RAYS + " camera rays or more; any with -D" + PROPERTY + "=true)";
+                    + FIRST_RAY_CAMERA_RAYS + " camera rays or more on trees of " + FIRST_RAY_MIN_PRIMITIVES
+                    + " primitives or more; any with -D" + PROPERTY + "=true)";
         WideWalk walk = walk();
         return walk != null ? walk.description() : "scalar walk (" + Loaded.WHY_NOT + ")";
     }

@@ -32,17 +32,21 @@ class VectorizationTest {
 
     @ParameterizedTest(name = "{0} camera rays")
     @ValueSource(longs = { 1, Vectorization.FIRST_RAY_CAMERA_RAYS - 1, Vectorization.FIRST_RAY_CAMERA_RAYS })
-    @DisplayName("before JDK 25 a render long from the start gives a large tree the vector walk from its first ray;"
-            + " from JDK 25 the render switches instead, and a small tree never widens")
+    @DisplayName("a render long from the start gives a tree of 4096 primitives or more the vector walk from its"
+            + " first ray; smaller trees keep the scalar walk")
     void firstRayRule(long cameraRays) {
         assumeTrue(Vectorization.walk() != null, "no vector walk in this JVM: " + Bvh.walkDescription());
         Bvh large = Bvh.build(new Geometries(BvhTest.gridMesh(60)));
+        Bvh medium = Bvh.build(new Geometries(BvhTest.gridMesh(20)));
         Bvh small = Bvh.build(new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(3, 0, 0), 1)));
-        assertThat(large.primitiveTotal()).isGreaterThanOrEqualTo(Vectorization.MIN_PRIMITIVES);
+        assertThat(large.primitiveTotal()).isGreaterThanOrEqualTo(Vectorization.FIRST_RAY_MIN_PRIMITIVES);
+        assertThat(medium.primitiveTotal()).isLessThan(Vectorization.FIRST_RAY_MIN_PRIMITIVES); // from JDK 25 above MIN_PRIMITIVES
         large.expectCameraRays(cameraRays);
+        medium.expectCameraRays(cameraRays);
         small.expectCameraRays(cameraRays);
-        boolean wide = !Vectorization.SWITCHES && cameraRays >= Vectorization.FIRST_RAY_CAMERA_RAYS;
+        boolean wide = cameraRays >= Vectorization.FIRST_RAY_CAMERA_RAYS;
         assertThat(large.wideNodes() != null).as("the large tree widened").isEqualTo(wide);
+        assertThat(medium.wideNodes()).as("a tree below the rule's size").isNull();
         assertThat(small.wideNodes()).as("a tree below the walk's size").isNull();
         if (wide) assertThat(large.describeWalk()).matches("[48]-wide vector walk \\(trees of \\d+ primitives or more\\)");
         else assertThat(large.describeWalk()).isEqualTo(Bvh.walkDescription());
@@ -70,7 +74,7 @@ class VectorizationTest {
             // From JDK 25 a render switches by itself; before, only -Draytracer.simd=true gives the vector walk.
             expected = Runtime.version().feature() >= 25 ? "scalar walk (the vector walk is not compiled yet: a short render)"
                     : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk in renders of 20000000 camera"
-                    + " rays or more; any with -Draytracer.simd=true)";
+                    + " rays or more on trees of 4096 primitives or more; any with -Draytracer.simd=true)";
         if (expected.startsWith("-wide")) assertThat(out).matches("[48]" + expected + " \\(trees of \\d+ primitives or more\\)");
         else assertThat(out).isEqualTo(expected);
     }
