@@ -195,14 +195,13 @@ public final class Bvh extends Intersectable {
 
     /**
      * A render of about {@code cameraRays} camera rays is about to start, before any of its rays
-     * is traced: a tree of {@link Vectorization#FIRST_RAY_MIN_PRIMITIVES} or more gets its wide part
+     * is traced: a tree of {@link Vectorization#MIN_PRIMITIVES} or more gets its wide part
      * now when the render is long ({@link Vectorization#FIRST_RAY_CAMERA_RAYS}), and the render takes
      * the vector walk from its first ray. A tree that already has it keeps it; a render too short
      * for this rule may still switch at its pace from JDK 25 on ({@link #expectLongWalk}).
      */
     void expectCameraRays(long cameraRays) {
-        if (!widens || wide != null || noRoom || prim.length < Vectorization.FIRST_RAY_MIN_PRIMITIVES
-                || cameraRays < Vectorization.FIRST_RAY_CAMERA_RAYS) return;
+        if (!widens || wide != null || noRoom || cameraRays < Vectorization.FIRST_RAY_CAMERA_RAYS) return;
         widen(Vectorization.walk());
     }
 

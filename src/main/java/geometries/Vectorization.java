@@ -28,14 +28,16 @@ final class Vectorization {
     /** Why the scalar walk when not {@link #AVAILABLE}; null when it is. */
     private static final String WHY_NOT;
     /**
-     * The smallest tree worth the wide walk on this JDK. A vector step costs more than the few
-     * scalar box tests of a shallow tree: the renders of the benchmark (interleaved A/B, one
-     * thread) ran slower with the vector walk on a scene of 72 shapes (glossy: 1.08x on JDK 17,
-     * 1.11x on JDK 25) and faster from 133 shapes on JDK 25 (showcase: 0.75-0.92x); on JDK 17,
-     * whose vector code is slower, from about 10^4 triangles (meshes: 1.5-1.9x faster; the teapot
-     * scene of 1,392 shapes on par, the showcase of 133 mixed).
+     * The smallest tree worth the wide walk, on every JDK. A vector step costs more than the few
+     * scalar box tests of a shallow tree. On JDK 17 the meshes of 10^4 triangles and more ran
+     * 1.5-1.9x faster, the teapot scene of 1,392 shapes on par. On JDK 25 this was 128 until
+     * whole renders with the module said otherwise (BENCHMARKS.md, issue 50, night session; vector
+     * walk from the first ray against scalar, 2 threads): the showcase (133 shapes) at 64 samples
+     * a pixel 11.9 s against 8.9-9.3 s, the teapot (992 triangles) at 25 samples 3.4-4.0 s against
+     * 2.2-2.4 s, the 137-primitive scene at 64 samples 9.9-14.2 s against 9.2 s; where most rays
+     * miss or hit a few large shapes, the scalar walk's early exits win.
      */
-    static final int MIN_PRIMITIVES = Runtime.version().feature() >= 25 ? 128 : 4096;
+    static final int MIN_PRIMITIVES = 4096;
     /**
      * Whether a render's tree takes the vector walk by itself, once it is compiled and the render
      * has seconds left ({@link Bvh#expectLongWalk}): from JDK 25 on. On JDK 17 a tree switched in
@@ -49,7 +51,7 @@ final class Vectorization {
     static final boolean SWITCHES = Runtime.version().feature() >= 25;
     /**
      * The camera rays from which a render takes the vector walk from its first ray, on a tree of
-     * {@link #FIRST_RAY_MIN_PRIMITIVES} or more ({@link Bvh#expectCameraRays}), decided before any
+     * {@link #MIN_PRIMITIVES} or more ({@link Bvh#expectCameraRays}), decided before any
      * ray of it is traced, on every JDK. Measured on the 99,224-triangle mesh at 600×600, 2 threads,
      * whole renders against the scalar walk: on JDK 17, 5.8·10<sup>6</sup> camera rays (16 a pixel)
      * took as long either way, 2.3·10<sup>7</sup> (64) 0.87 of the time, 5.2·10<sup>7</sup> (144)
@@ -60,13 +62,6 @@ final class Vectorization {
      * session): there this rule is the only way in.
      */
     static final long FIRST_RAY_CAMERA_RAYS = 20_000_000L;
-    /**
-     * The smallest tree that takes the vector walk from a long render's first ray: JDK 17's
-     * {@link #MIN_PRIMITIVES}, on every JDK. The 137-primitive Sunflow scene at 64 samples a pixel
-     * (2.3·10<sup>7</sup> camera rays) took 9.9–14.2 s with the vector walk from its first ray on
-     * JDK 25, against 9.2 s scalar: a shallow tree of spheres and large triangles gains nothing.
-     */
-    static final int FIRST_RAY_MIN_PRIMITIVES = 4096;
     /**
      * Whether the vector walk runs compiled in this JVM: set by {@link VectorWarmUp} (from the
      * start with {@code -Draytracer.simd=true}), never unset. The one piece of state a JVM's
@@ -126,7 +121,7 @@ final class Vectorization {
         if (!COMPILED.get())
             return SWITCHES ? "scalar walk (the vector walk is not compiled yet: a short render)"
                     : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk in renders of "
-                    + FIRST_RAY_CAMERA_RAYS + " camera rays or more on trees of " + FIRST_RAY_MIN_PRIMITIVES
+                    + FIRST_RAY_CAMERA_RAYS + " camera rays or more on trees of " + MIN_PRIMITIVES
                     + " primitives or more; any with -D" + PROPERTY + "=true)";
         WideWalk walk = walk();
         return walk != null ? walk.description() : "scalar walk (" + Loaded.WHY_NOT + ")";

@@ -104,6 +104,25 @@ final class RenderLoop {
         return new RegionRenderer.Pixels(rgb, stats);
     }
 
+    /**
+     * @return the first number from ⌈0.618 · count⌉ up that is coprime with {@code count} (1 for a
+     *         count of 1 or 2), so that k ↦ k · stride mod count visits every tile once
+     */
+    static int spreadingStride(int count) {
+        int stride = Math.max(1, (int) Math.ceil(0.6180339887498949 * count));
+        while (gcd(stride, count) != 1) ++stride;
+        return stride;
+    }
+
+    private static int gcd(int a, int b) {
+        while (b != 0) {
+            int r = a % b;
+            a = b;
+            b = r;
+        }
+        return a;
+    }
+
     /** Columns [x0, x1) and rows [y0, y1). */
     private record Rect(int x0, int y0, int x1, int y1) {
         int width() {
@@ -128,6 +147,15 @@ final class RenderLoop {
         private final int tilesX;
         private final int tileCount;
         private final AtomicInteger nextTile = new AtomicInteger();
+        /**
+         * The order tiles are claimed in: the k-th claim renders tile (k · stride) mod tileCount, a
+         * stride coprime with the count near 0.618 of it, so that the claims spread over the whole
+         * image from the start. In row order the first seconds of an outdoor scene are its sky: the
+         * pace then promised 4 s left of a 21 s render (BENCHMARKS.md, issue 50, night session), for
+         * the ETA of the progress lines and for the long-render check alike. Which tile a claim
+         * gets never changes its pixels.
+         */
+        private final int stride;
         private final AtomicBoolean cancelled = new AtomicBoolean();
         /** The first exception a worker failed with; the others then stop and it is rethrown. */
         private final AtomicReference<Throwable> failure = new AtomicReference<>();
@@ -144,6 +172,7 @@ final class RenderLoop {
             this.out = out;
             this.tilesX = (rect.x1 - rect.x0 + tile - 1) / tile;
             this.tileCount = tilesX * ((rect.y1 - rect.y0 + tile - 1) / tile);
+            this.stride = spreadingStride(tileCount);
         }
 
         RenderStats run(double prepareSeconds) {
@@ -192,7 +221,8 @@ final class RenderLoop {
          *
          * @return the number of pixels rendered
          */
-        private long renderTile(int t, PixelSampler sampler, TraceContext ctx, int[] tilePixels) {
+        private long renderTile(int claim, PixelSampler sampler, TraceContext ctx, int[] tilePixels) {
+            int t = (int) ((long) claim * stride % tileCount);
             int tx0 = rect.x0 + (t % tilesX) * tile, ty0 = rect.y0 + (t / tilesX) * tile;
             int tx1 = Math.min(rect.x1, tx0 + tile), ty1 = Math.min(rect.y1, ty0 + tile);
             sampler.beginTile(tx0, ty0, tx1, ty1);

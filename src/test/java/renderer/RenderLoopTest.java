@@ -3,9 +3,11 @@ package renderer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.util.BitSet;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.ValueSource;
@@ -94,5 +96,24 @@ class RenderLoopTest {
         // descheduled between its throw and the record while three others traced 27 tiles), so
         // the bound is half the image, which workers that ignored the failure would pass.
         assertThat(tracer.calls.get()).as("rays traced").isLessThan(size * size / 2);
+    }
+
+    @ParameterizedTest(name = "{0} tiles")
+    @ValueSource(ints = { 1, 2, 3, 4, 6, 36, 100, 1444, 1445 })
+    @DisplayName("tiles are claimed in a spread order that renders every tile exactly once")
+    void everyTileOnce(int count) {
+        int stride = RenderLoop.spreadingStride(count);
+        BitSet seen = new BitSet(count);
+        for (int k = 0; k < count; ++k) seen.set((int) ((long) k * stride % count));
+        assertThat(seen.cardinality()).isEqualTo(count);
+    }
+
+    @Test
+    @DisplayName("the first tenth of the claims reaches every tenth of a 38×38-tile image's rows (600×600 in 16-pixel tiles)")
+    void firstClaimsSpread() {
+        int side = 38, count = side * side, stride = RenderLoop.spreadingStride(count);
+        BitSet bands = new BitSet(10);
+        for (int k = 0; k < count / 10; ++k) bands.set((int) ((long) k * stride % count) / side * 10 / side);
+        assertThat(bands.cardinality()).isEqualTo(10);
     }
 }
