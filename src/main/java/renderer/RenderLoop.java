@@ -214,10 +214,10 @@ final class RenderLoop {
         }
 
         /**
-         * Samples every pixel of tile {@code t} into {@code tilePixels} (row after row), then
-         * writes them out. A method of its own so that the JIT compiles it as an ordinary call,
-         * the same code for every render, instead of replacing the worker's long loop on the
-         * stack (OSR) again in each render's new worker.
+         * Samples every pixel of the tile the {@code claim}-th claim gets ({@link #stride}) into
+         * {@code tilePixels} (row after row), then writes them out. A method of its own so that
+         * the JIT compiles it as an ordinary call, the same code for every render, instead of
+         * replacing the worker's long loop on the stack (OSR) again in each render's new worker.
          *
          * @return the number of pixels rendered
          */
