@@ -226,8 +226,9 @@ public final class Bvh extends Intersectable {
      * One line for a render's summary: which walk this JVM's trees take now, the vector walk of
      * wide nodes or the scalar one, and for the scalar one why ({@code jdk.incubator.vector} not
      * readable, {@code -Draytracer.simd=false}, a CPU without 256-bit vectors, or a vector walk
-     * not compiled yet: only a render with seconds of work left has it compiled, from JDK 25 on;
-     * before, only {@code -Draytracer.simd=true} gives it).
+     * not compiled yet: a long render takes it from its first ray, and from JDK 25 on a render with
+     * seconds of work left has it compiled; {@code -Draytracer.simd=true} gives it to any render).
+     * A render's summary names its own tree's walk ({@link #describeWalk}) instead.
      *
      * @return the walk, in words
      */

@@ -8,10 +8,10 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * the {@code VectorWalk} of wide nodes where the incubating Vector API is readable
  * ({@code --add-modules jdk.incubator.vector}) and the CPU's vectors hold four doubles (AVX2 and
  * later); the scalar walk of binary nodes otherwise. A render's tree takes the vector walk only
- * in a long render: from JDK 25 on ({@link #SWITCHES}) once the render has seconds of work left
- * and the walk runs compiled ({@link #COMPILED}, {@link Bvh#expectLongWalk}); before, from the
- * first ray of a render of {@link #FIRST_RAY_CAMERA_RAYS} camera rays or more
- * ({@link Bvh#expectCameraRays}). A short render never loads a vector class. Nothing is required
+ * in a long render: from the first ray of a render of {@link #FIRST_RAY_CAMERA_RAYS} camera rays
+ * or more ({@link Bvh#expectCameraRays}), on every JDK; and from JDK 25 on ({@link #SWITCHES})
+ * also once a render has seconds of work left and the walk runs compiled ({@link #COMPILED},
+ * {@link Bvh#expectLongWalk}). A short render never loads a vector class. Nothing is required
  * of anyone: {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true}
  * gives every tree the vector walk from its first ray (a JVM that renders for long: a benchmark,
  * a Spark executor). Both walks return the same hits, so the choice changes speed only, never an
