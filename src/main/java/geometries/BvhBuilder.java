@@ -518,7 +518,7 @@ final class BvhBuilder {
         int mid = -1;
         if (bestBin >= 0 && (bestCost < n || n > MAX_LEAF))
             mid = partition(start, end, bestAxis, lowOf[bestAxis], BvhBinner.BINS / extentOf[bestAxis], bestBin,
-                    binner.levels(level + 1), binner.place(level + 1, 0));
+                    binner.bestBoxes, binner.levels(level + 1), binner.place(level + 1, 0));
         // All centroids coincide: split the range in half to bound the leaf size.
         if (mid < 0 && n > MAX_LEAF) {
             mid = start + n / 2;
@@ -543,20 +543,22 @@ final class BvhBuilder {
      * Stable partition of slots [start, end): the primitives whose centroid falls in a bin
      * up to {@code lastLeftBin} along {@code axis} first, each moved with its bounds and
      * centroid. The right part goes through the scratch buffers' slots [start, end). The same
-     * pass gathers both parts' box and centroid bounds into {@code children} at the next
-     * level's places, so that no child reads its range again for them.
+     * pass gathers both parts' centroid bounds into {@code children} at the next level's places,
+     * beside the parts' boxes, which the search already found ({@code boxes}: the left part's,
+     * then the right part's), so that no child reads its range again for them.
      *
      * @return the first slot of the right part
      */
-    private int partition(int start, int end, int axis, double lo, double scale, int lastLeftBin,
+    private int partition(int start, int end, int axis, double lo, double scale, int lastLeftBin, double[] boxes,
                           double[] children, int at) {
         double[] bounds = this.bounds, centroid = this.centroid, sBounds = scratchBounds, sCentroid = scratchCentroid;
-        // The two parts' bounds are grown in locals, not in an array: in memory, each
-        // primitive's twelve updates waited for the previous primitive's stores.
-        double lx0 = Double.POSITIVE_INFINITY, ly0 = lx0, lz0 = lx0, lcx0 = lx0, lcy0 = lx0, lcz0 = lx0;
-        double lx1 = Double.NEGATIVE_INFINITY, ly1 = lx1, lz1 = lx1, lcx1 = lx1, lcy1 = lx1, lcz1 = lx1;
-        double rx0 = lx0, ry0 = lx0, rz0 = lx0, rcx0 = lx0, rcy0 = lx0, rcz0 = lx0;
-        double rx1 = lx1, ry1 = lx1, rz1 = lx1, rcx1 = lx1, rcy1 = lx1, rcz1 = lx1;
+        // The two parts' boxes are the search's (its sweeps found them); their centroids' bounds
+        // are grown here, in locals, not in an array: in memory, each primitive's updates waited
+        // for the previous primitive's stores.
+        double lcx0 = Double.POSITIVE_INFINITY, lcy0 = lcx0, lcz0 = lcx0;
+        double lcx1 = Double.NEGATIVE_INFINITY, lcy1 = lcx1, lcz1 = lcx1;
+        double rcx0 = lcx0, rcy0 = lcx0, rcz0 = lcx0;
+        double rcx1 = lcx1, rcy1 = lcx1, rcz1 = lcx1;
         int l = start, r = start;
         for (int i = start; i < end; ++i) {
             int o = i * BOX_SIZE, c = i * 3; // b0 … b2 the box's low corner, b3 … b5 its high one (BuildBoxes)
@@ -564,8 +566,6 @@ final class BvhBuilder {
             double b3 = bounds[o + 3], b4 = bounds[o + 4], b5 = bounds[o + 5];
             double c0 = centroid[c], c1 = centroid[c + 1], c2 = centroid[c + 2];
             if (BvhBinner.binOf(centroid[c + axis], lo, scale) <= lastLeftBin) {
-                lx0 = Math.min(b0, lx0); ly0 = Math.min(b1, ly0); lz0 = Math.min(b2, lz0);
-                lx1 = Math.max(b3, lx1); ly1 = Math.max(b4, ly1); lz1 = Math.max(b5, lz1);
                 lcx0 = Math.min(c0, lcx0); lcy0 = Math.min(c1, lcy0); lcz0 = Math.min(c2, lcz0);
                 lcx1 = Math.max(c0, lcx1); lcy1 = Math.max(c1, lcy1); lcz1 = Math.max(c2, lcz1);
                 if (l != i) {
@@ -577,8 +577,6 @@ final class BvhBuilder {
                 }
                 ++l;
             } else {
-                rx0 = Math.min(b0, rx0); ry0 = Math.min(b1, ry0); rz0 = Math.min(b2, rz0);
-                rx1 = Math.max(b3, rx1); ry1 = Math.max(b4, ry1); rz1 = Math.max(b5, rz1);
                 rcx0 = Math.min(c0, rcx0); rcy0 = Math.min(c1, rcy0); rcz0 = Math.min(c2, rcz0);
                 rcx1 = Math.max(c0, rcx1); rcy1 = Math.max(c1, rcy1); rcz1 = Math.max(c2, rcz1);
                 int ro = r * 6, rc = r * 3;
@@ -589,9 +587,9 @@ final class BvhBuilder {
             }
         }
         int left = at, right = at + BOUNDS;
-        BuildBoxes.set(children, left + BOX, lx0, ly0, lz0, lx1, ly1, lz1);
+        System.arraycopy(boxes, 0, children, left + BOX, BOX_SIZE);
         BuildBoxes.set(children, left + CENTROIDS, lcx0, lcy0, lcz0, lcx1, lcy1, lcz1);
-        BuildBoxes.set(children, right + BOX, rx0, ry0, rz0, rx1, ry1, rz1);
+        System.arraycopy(boxes, BOX_SIZE, children, right + BOX, BOX_SIZE);
         BuildBoxes.set(children, right + CENTROIDS, rcx0, rcy0, rcz0, rcx1, rcy1, rcz1);
         int rightCount = r - start;
         System.arraycopy(scratchOrder, start, order, l, rightCount);
