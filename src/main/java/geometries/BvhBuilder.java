@@ -308,10 +308,31 @@ final class BvhBuilder {
         centroid[i * 3 + 2] = (minZ + maxZ) / 2;
     }
 
-    /** Sets the bounds at {@code at} of {@code out} to those of slots [from, to). */
+    /**
+     * Sets the bounds at {@code at} of {@code out} to those of slots [from, to), grown in locals:
+     * in the array, each slot's twelve updates waited for the previous slot's stores.
+     */
     private void unite(double[] out, int at, int from, int to) {
-        BuildBoxes.emptyBounds(out, at);
-        for (int i = from; i < to; ++i) growBounds(out, at, i);
+        double[] bounds = this.bounds, centroid = this.centroid;
+        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0, cx0 = x0, cy0 = x0, cz0 = x0;
+        double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1, cx1 = x1, cy1 = x1, cz1 = x1;
+        for (int i = from; i < to; ++i) {
+            int o = i * BOX_SIZE, c = i * 3;
+            x0 = Math.min(bounds[o], x0);
+            y0 = Math.min(bounds[o + 1], y0);
+            z0 = Math.min(bounds[o + 2], z0);
+            x1 = Math.max(bounds[o + 3], x1);
+            y1 = Math.max(bounds[o + 4], y1);
+            z1 = Math.max(bounds[o + 5], z1);
+            cx0 = Math.min(centroid[c], cx0);
+            cy0 = Math.min(centroid[c + 1], cy0);
+            cz0 = Math.min(centroid[c + 2], cz0);
+            cx1 = Math.max(centroid[c], cx1);
+            cy1 = Math.max(centroid[c + 1], cy1);
+            cz1 = Math.max(centroid[c + 2], cz1);
+        }
+        BuildBoxes.set(out, at + BOX, x0, y0, z0, x1, y1, z1);
+        BuildBoxes.set(out, at + CENTROIDS, cx0, cy0, cz0, cx1, cy1, cz1);
     }
 
     /** Sets {@code out} to the union of the bounds in {@code parts}, {@link #BOUNDS} doubles each. */
