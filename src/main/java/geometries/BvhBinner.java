@@ -195,38 +195,42 @@ final class BvhBinner {
         // on every searched axis: such a run is united in locals and added to its bins once, in
         // place of three read-modify-writes of six bounds per slot, each waiting for the last
         // slot's stores to the same bin. A minimum is the same whatever the order it is taken in,
-        // so the bins hold the same boxes to the bit. The run's box grows only when a bound is
-        // beyond it, a branch that is mostly not taken; Math.min there keeps −0.0 before +0.0.
+        // so the bins hold the same boxes to the bit. A run starts as its first slot's box (most
+        // runs in small nodes are one slot long) and grows only when a bound is beyond it, a
+        // branch that is mostly not taken; Math.min there keeps −0.0 before +0.0.
         int px = -1, py = -1, pz = -1, run = 0;
-        double x0 = Double.POSITIVE_INFINITY, y0 = x0, z0 = x0;
-        double x1 = Double.NEGATIVE_INFINITY, y1 = x1, z1 = x1;
+        double x0 = 0, y0 = 0, z0 = 0, x1 = 0, y1 = 0, z1 = 0;
         for (int i = start; i < end; ++i) {
-            int c = i * 3;
+            int c = i * 3, o = i * BuildBoxes.BOX_SIZE;
             int bx = sx ? binOf(centroid[c], lx, kx) : 0;
             int by = sy ? binOf(centroid[c + 1], ly, ky) : 0;
             int bz = sz ? binOf(centroid[c + 2], lz, kz) : 0;
-            if (bx != px || by != py || bz != pz) {
-                if (run > 0) {
-                    if (sx) mx |= add(px, 0, run, x0, y0, z0, x1, y1, z1);
-                    if (sy) my |= add(py, BINS, run, x0, y0, z0, x1, y1, z1);
-                    if (sz) mz |= add(pz, 2 * BINS, run, x0, y0, z0, x1, y1, z1);
-                }
-                px = bx;
-                py = by;
-                pz = bz;
-                run = 0;
-                x0 = Double.POSITIVE_INFINITY; y0 = x0; z0 = x0;
-                x1 = Double.NEGATIVE_INFINITY; y1 = x1; z1 = x1;
+            if (bx == px && by == py && bz == pz) {
+                ++run;
+                double v;
+                if ((v = bounds[o]) <= x0) x0 = Math.min(v, x0);
+                if ((v = bounds[o + 1]) <= y0) y0 = Math.min(v, y0);
+                if ((v = bounds[o + 2]) <= z0) z0 = Math.min(v, z0);
+                if ((v = bounds[o + 3]) >= x1) x1 = Math.max(v, x1);
+                if ((v = bounds[o + 4]) >= y1) y1 = Math.max(v, y1);
+                if ((v = bounds[o + 5]) >= z1) z1 = Math.max(v, z1);
+                continue;
             }
-            ++run;
-            int o = i * BuildBoxes.BOX_SIZE;
-            double v;
-            if ((v = bounds[o]) <= x0) x0 = Math.min(v, x0);
-            if ((v = bounds[o + 1]) <= y0) y0 = Math.min(v, y0);
-            if ((v = bounds[o + 2]) <= z0) z0 = Math.min(v, z0);
-            if ((v = bounds[o + 3]) >= x1) x1 = Math.max(v, x1);
-            if ((v = bounds[o + 4]) >= y1) y1 = Math.max(v, y1);
-            if ((v = bounds[o + 5]) >= z1) z1 = Math.max(v, z1);
+            if (run > 0) {
+                if (sx) mx |= add(px, 0, run, x0, y0, z0, x1, y1, z1);
+                if (sy) my |= add(py, BINS, run, x0, y0, z0, x1, y1, z1);
+                if (sz) mz |= add(pz, 2 * BINS, run, x0, y0, z0, x1, y1, z1);
+            }
+            px = bx;
+            py = by;
+            pz = bz;
+            run = 1;
+            x0 = bounds[o];
+            y0 = bounds[o + 1];
+            z0 = bounds[o + 2];
+            x1 = bounds[o + 3];
+            y1 = bounds[o + 4];
+            z1 = bounds[o + 5];
         }
         if (run > 0) {
             if (sx) mx |= add(px, 0, run, x0, y0, z0, x1, y1, z1);
