@@ -36,7 +36,11 @@ final class BvhBinner {
      * boxes, the very doubles the partition would find growing them primitive by primitive.
      */
     final double[] bestBoxes = new double[2 * BuildBoxes.BOX_SIZE];
-    /** Per axis, the bins {@link #bin} filled, as bits; the search empties them again. */
+    /**
+     * Per axis, the bins {@link #bin} filled, as bits; the search clears them again. Only these
+     * bins' counts and boxes mean anything: a bin's first run of a node writes them, so a bin
+     * left over from an earlier node is never read and never needs emptying.
+     */
     private final int[] occupied = new int[3];
     /** The cheapest split a search found: its cost, last left bin (−1 for none) and axis. */
     double bestCost;
@@ -47,10 +51,6 @@ final class BvhBinner {
      * split there ({@link BuildBoxes#BOUNDS} doubles each, left then right); grown on demand.
      */
     double[] levels = new double[16 * 2 * BuildBoxes.BOUNDS];
-
-    BvhBinner() {
-        for (int k = 0; k < 3 * BINS; ++k) BuildBoxes.empty(binBox, k * BuildBoxes.BOX_SIZE);
-    }
 
     /**
      * The binned SAH over the searched axes of slots [start, end): fills the bins in one pass,
@@ -84,11 +84,6 @@ final class BvhBinner {
                     System.arraycopy(leftUnion, k * BuildBoxes.BOX_SIZE, bestBoxes, 0, BuildBoxes.BOX_SIZE);
                     System.arraycopy(rightUnion, next * BuildBoxes.BOX_SIZE, bestBoxes, BuildBoxes.BOX_SIZE, BuildBoxes.BOX_SIZE);
                 }
-            }
-            for (int m = mask; m != 0; m &= m - 1) {
-                int k = base + Integer.numberOfTrailingZeros(m);
-                binCount[k] = 0;
-                BuildBoxes.empty(binBox, k * BuildBoxes.BOX_SIZE);
             }
         }
     }
@@ -182,7 +177,7 @@ final class BvhBinner {
     }
 
     /**
-     * Fills the searched axes' bins, which are empty, from slots [start, end), in one pass
+     * Fills the searched axes' bins, none occupied, from slots [start, end), in one pass
      * over the range (each slot's bounds are read once for all axes).
      */
     private void bin(double[] bounds, double[] centroid, int start, int end, double[] lowOf, double[] extentOf) {
@@ -217,9 +212,9 @@ final class BvhBinner {
                 continue;
             }
             if (run > 0) {
-                if (sx) mx |= add(px, 0, run, x0, y0, z0, x1, y1, z1);
-                if (sy) my |= add(py, BINS, run, x0, y0, z0, x1, y1, z1);
-                if (sz) mz |= add(pz, 2 * BINS, run, x0, y0, z0, x1, y1, z1);
+                if (sx) mx |= add(px, 0, mx, run, x0, y0, z0, x1, y1, z1);
+                if (sy) my |= add(py, BINS, my, run, x0, y0, z0, x1, y1, z1);
+                if (sz) mz |= add(pz, 2 * BINS, mz, run, x0, y0, z0, x1, y1, z1);
             }
             px = bx;
             py = by;
@@ -233,9 +228,9 @@ final class BvhBinner {
             z1 = bounds[o + 5];
         }
         if (run > 0) {
-            if (sx) mx |= add(px, 0, run, x0, y0, z0, x1, y1, z1);
-            if (sy) my |= add(py, BINS, run, x0, y0, z0, x1, y1, z1);
-            if (sz) mz |= add(pz, 2 * BINS, run, x0, y0, z0, x1, y1, z1);
+            if (sx) mx |= add(px, 0, mx, run, x0, y0, z0, x1, y1, z1);
+            if (sy) my |= add(py, BINS, my, run, x0, y0, z0, x1, y1, z1);
+            if (sz) mz |= add(pz, 2 * BINS, mz, run, x0, y0, z0, x1, y1, z1);
         }
         occupied[0] = mx;
         occupied[1] = my;
@@ -244,14 +239,25 @@ final class BvhBinner {
 
     /**
      * Adds a run of {@code run} slots whose box is (x0, y0, z0)–(x1, y1, z1) to bin {@code k} of
-     * the axis whose bins start at {@code base}.
+     * the axis whose bins start at {@code base} and of which {@code occupied} (bits) hold slots
+     * already: the first run sets the bin, the next ones grow it.
      *
      * @return k's bit
      */
-    private int add(int k, int base, int run, double x0, double y0, double z0, double x1, double y1, double z1) {
-        binCount[base + k] += run;
+    private int add(int k, int base, int occupied, int run, double x0, double y0, double z0, double x1, double y1, double z1) {
         int o = (base + k) * BuildBoxes.BOX_SIZE;
         double[] b = binBox;
+        if ((occupied & 1 << k) == 0) {
+            binCount[base + k] = run;
+            b[o] = x0;
+            b[o + 1] = y0;
+            b[o + 2] = z0;
+            b[o + 3] = x1;
+            b[o + 4] = y1;
+            b[o + 5] = z1;
+            return 1 << k;
+        }
+        binCount[base + k] += run;
         b[o] = Math.min(x0, b[o]);
         b[o + 1] = Math.min(y0, b[o + 1]);
         b[o + 2] = Math.min(z0, b[o + 2]);
