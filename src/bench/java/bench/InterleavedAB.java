@@ -36,7 +36,9 @@ import java.util.Map;
  *      -- --only glossy --match "beam 10, 1 thread" --runs 3 --warmup 2
  * java -cp target/bench/classes bench.InterleavedAB --a OLD_CP --b NEW_CP --processes 30 --pairs 2 -- …
  * </pre>
- * Everything after {@code --} goes to both sides' {@code RenderBenchmark}. With
+ * Everything after {@code --} goes to both sides' {@code RenderBenchmark}; with {@code --only build}
+ * the rows are the BVH builds on 1 and on 2 threads (that group reports medians only, so its
+ * "fastest" columns repeat them). With
  * {@code --processes N}, N fresh JVMs one after the other, each of {@code --pairs} pairs, and the
  * figures are medians over the processes: the compiled code itself varies between processes
  * (and between the two loaders of one), by as much as the few per cent asked about, so one
@@ -187,8 +189,20 @@ public final class InterleavedAB {
             System.setErr(err);
         }
         Map<String, double[]> medians = new LinkedHashMap<>();
+        boolean builds = false; // whether the table being read is the build group's
         for (String line : report.toString(StandardCharsets.UTF_8).split("\n")) {
             String[] cells = line.split("\\|");
+            if (cells.length > 2 && cells[2].trim().equals("primitives")) builds = true;
+            else if (cells.length > 2 && cells[1].trim().equals("scene")) builds = false;
+            if (builds) {
+                // | scene | primitives | runs | 1 thread s (median) | 2 threads s (median) | …: the
+                // group gives medians only, which stand for the fastest too.
+                if (cells.length < 6 || !cells[4].trim().matches("[0-9.]+")) continue;
+                double one = Double.parseDouble(cells[4].trim()), two = Double.parseDouble(cells[5].trim());
+                medians.put(cells[1].trim() + ", build, 1 t", new double[] {one, one});
+                medians.put(cells[1].trim() + ", build, 2 t", new double[] {two, two});
+                continue;
+            }
             // | scene | resolution | settings | threads | runs | median s | …: cells[0] is empty.
             if (cells.length < 8 || !cells[6].trim().matches("[0-9.]+")) continue;
             String key = cells[1].trim() + ", " + cells[3].trim() + ", " + cells[4].trim() + " t";
