@@ -4,8 +4,6 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
@@ -25,9 +23,31 @@ import primitives.Point;
  */
 @DisplayName("the vector walk's warm-up")
 class VectorWarmUpTest {
-    /** Prints whether this JVM compiles with the optimizing compiler, for the case below. */
-    public static void main(String[] args) {
-        System.out.println(VectorWarmUp.optimizingCompiler());
+    /**
+     * Without arguments, prints whether this JVM compiles with the optimizing compiler; with
+     * {@code gate}, starts the warm-up, waits for it (up to two minutes) and prints what the case
+     * {@link #opensTheGate} checks, one fact a line.
+     */
+    public static void main(String[] args) throws InterruptedException {
+        if (args.length == 0) {
+            System.out.println(VectorWarmUp.optimizingCompiler());
+            return;
+        }
+        VectorWarmUp.start();
+        VectorWarmUp.start(); // once per JVM: a second call starts nothing
+        long deadline = System.nanoTime() + TimeUnit.MINUTES.toNanos(2);
+        while (!Vectorization.COMPILED.get() && System.nanoTime() < deadline) Thread.sleep(20);
+        System.out.println("compiled: " + Vectorization.COMPILED.get());
+        System.out.println("walk: " + Bvh.walkDescription());
+        // A render's tree, large enough, gets its wide part when a long render says so (from JDK
+        // 25 on, Vectorization.SWITCHES; before, never); a small one never.
+        Bvh large = Bvh.build(new Geometries(BvhTest.gridMesh(60)));
+        Bvh small = Bvh.build(new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(3, 0, 0), 1)));
+        System.out.println("large tree wide before a long render: " + (large.wideNodes() != null));
+        large.expectLongWalk();
+        small.expectLongWalk();
+        System.out.println("large tree wide after: " + (large.wideNodes() != null));
+        System.out.println("small tree wide after: " + (small.wideNodes() != null));
     }
 
     @ParameterizedTest(name = "at least {0} primitives")
@@ -50,39 +70,21 @@ class VectorWarmUpTest {
             "-XX:-TieredCompilation|true" })
     @DisplayName("runs only in a JVM whose optimizing compiler compiles vector code")
     void optimizingCompilerOnly(String option, boolean expected) throws IOException, InterruptedException {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xshare:off", "-cp", System.getProperty("java.class.path")));
-        if (!option.isEmpty()) command.add(option);
-        command.add(VectorWarmUpTest.class.getName());
-        Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
-        p.getOutputStream().close();
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
-        assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
-        assertThat(p.exitValue()).as(out).isZero();
+        String out = FreshJvm.run(VectorWarmUpTest.class, option.isEmpty() ? List.of() : List.of(option));
         assertThat(out).isEqualTo(String.valueOf(expected));
     }
 
     @Test
-    @DisplayName("says so once the vector walk runs compiled (this test JVM has the module)")
-    void opensTheGate() throws InterruptedException {
-        assumeTrue(Vectorization.walk() != null, "no vector walk in this JVM: " + Bvh.walkDescription());
+    @DisplayName("says so once the vector walk runs compiled, in a fresh JVM with the module")
+    void opensTheGate() throws IOException, InterruptedException {
+        assumeTrue(Vectorization.walk() != null, "no vector walk on this CPU or JVM: " + Bvh.walkDescription());
         assumeTrue(VectorWarmUp.optimizingCompiler(), "this JVM does not compile with C2");
-        VectorWarmUp.start();
-        VectorWarmUp.start(); // once per JVM: a second call starts nothing
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-        while (!Vectorization.COMPILED.get() && System.nanoTime() < deadline) Thread.sleep(20);
-        assertThat(Vectorization.COMPILED.get()).as("compiled, within two minutes").isTrue();
-        assertThat(Bvh.walkDescription()).matches("[48]-wide vector walk \\(trees of \\d+ primitives or more\\)");
-
-        // A render's tree, large enough, gets its wide part when a long render says so (from JDK
-        // 25 on, Vectorization.SWITCHES; before, never); a small one never.
-        Bvh large = Bvh.build(new Geometries(BvhTest.gridMesh(60)));
-        Bvh small = Bvh.build(new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(3, 0, 0), 1)));
-        assertThat(large.wideNodes()).as("before a long render").isNull();
-        large.expectLongWalk();
-        small.expectLongWalk();
-        if (Runtime.version().feature() >= 25) assertThat(large.wideNodes()).as("after").isNotNull();
-        else assertThat(large.wideNodes()).as("after, on JDK %d", Runtime.version().feature()).isNull();
-        assertThat(small.wideNodes()).as("a tree below the walk's size").isNull();
+        // In a JVM of its own (FreshJvm says why); COMPILED is once per JVM as well.
+        List<String> facts = FreshJvm.run(VectorWarmUpTest.class, FreshJvm.withVectorModule(), "gate").lines().toList();
+        assertThat(facts).hasSize(5);
+        assertThat(facts.get(0)).isEqualTo("compiled: true");
+        assertThat(facts.get(1)).matches("walk: [48]-wide vector walk \\(trees of \\d+ primitives or more\\)");
+        assertThat(facts.subList(2, 5)).containsExactly("large tree wide before a long render: false",
+                "large tree wide after: " + Vectorization.SWITCHES, "small tree wide after: false");
     }
 }

@@ -3,11 +3,8 @@ package geometries;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.TimeUnit;
 
 import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
@@ -56,16 +53,9 @@ class VectorizationTest {
             "--add-modules jdk.incubator.vector -Draytracer.simd=false|scalar walk (-Draytracer.simd=false)",
             "-Draytracer.simd=true|scalar walk (no jdk.incubator.vector)"})
     void walkOfTheJvm(String options, String expected) throws IOException, InterruptedException {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Xshare:off", "-cp", System.getProperty("java.class.path")));
-        for (String o : options.split(" ")) if (!o.isEmpty()) command.add(o);
-        command.add(VectorizationTest.class.getName());
-        Process p = new ProcessBuilder(command).redirectErrorStream(false).start();
-        p.getOutputStream().close();
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8).strip();
-        p.getErrorStream().readAllBytes();
-        assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
-        assertThat(p.exitValue()).isZero();
+        List<String> jvmOptions = new ArrayList<>();
+        for (String o : options.split(" ")) if (!o.isEmpty()) jvmOptions.add(o);
+        String out = FreshJvm.run(VectorizationTest.class, jvmOptions);
         if (expected.equals("AUTO"))
             // From JDK 25 a render switches by itself; before, only -Draytracer.simd=true gives the vector walk.
             expected = Runtime.version().feature() >= 25 ? "scalar walk (the vector walk is not compiled yet: a short render)"
