@@ -3,8 +3,11 @@ package geometries;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.Comparator;
+import java.util.List;
 import java.util.concurrent.ForkJoinPool;
-import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicIntegerArray;
 
 import org.junit.jupiter.api.AfterAll;
@@ -26,17 +29,23 @@ class RangesTest {
     }
 
     @ParameterizedTest(name = "n {0}, grain {1}, in a pool {2}")
-    @CsvSource({ "0, 4, true", "1, 4, true", "4, 4, true", "5, 4, true", "1000, 7, true", "1000, 1, true", "1000, 7, false" })
-    @DisplayName("every index of [0, n) is visited exactly once; in a pool in chunks of at most the grain, else at once")
+    @CsvSource({ "0, 4, true", "1, 4, true", "4, 4, true", "5, 4, true", "1000, 7, true", "1000, 1, true", "0, 4, false",
+            "5, 4, false", "1000, 7, false" })
+    @DisplayName("every index of [0, n) is visited exactly once, in the chunks [k·grain, min(n, (k + 1)·grain)) with or"
+            + " without a pool, and in order without one")
     void everyIndexOnce(int n, int grain, boolean parallel) {
         AtomicIntegerArray visits = new AtomicIntegerArray(n);
-        AtomicInteger largest = new AtomicInteger();
+        List<int[]> chunks = Collections.synchronizedList(new ArrayList<>());
         Ranges.run(pool(parallel), n, grain, (from, to) -> {
-            largest.accumulateAndGet(to - from, Math::max);
+            chunks.add(new int[] { from, to });
             for (int i = from; i < to; ++i) visits.incrementAndGet(i);
         });
         for (int i = 0; i < n; ++i) assertThat(visits.get(i)).as("visits of %d", i).isEqualTo(1);
-        assertThat(largest.get()).isEqualTo(parallel ? Math.min(n, grain) : n);
+        List<int[]> expected = new ArrayList<>();
+        for (int from = 0; from < n; from += grain) expected.add(new int[] { from, Math.min(n, from + grain) });
+        List<int[]> seen = new ArrayList<>(chunks);
+        if (parallel) seen.sort(Comparator.comparingInt(c -> c[0]));
+        assertThat(seen).as("the chunks%s", parallel ? ", sorted" : ", in the order run").containsExactlyElementsOf(expected);
     }
 
     @ParameterizedTest(name = "in a pool {0}")
