@@ -38,7 +38,11 @@ final class Ranges {
      */
     static void run(ForkJoinPool pool, int n, int grain, Body body) {
         if (pool == null || n <= grain) {
-            for (int from = 0; from < n; from += grain) body.run(from, Math.min(n, from + grain));
+            for (int from = 0; from < n;) {
+                int to = n - from > grain ? from + grain : n; // never past n, whatever n and grain
+                body.run(from, to);
+                from = to;
+            }
             return;
         }
         RuntimeException[] failures = new RuntimeException[(n + grain - 1) / grain];

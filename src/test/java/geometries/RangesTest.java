@@ -12,6 +12,7 @@ import java.util.concurrent.atomic.AtomicIntegerArray;
 
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.DisplayName;
+import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
@@ -46,6 +47,15 @@ class RangesTest {
         List<int[]> seen = new ArrayList<>(chunks);
         if (parallel) seen.sort(Comparator.comparingInt(c -> c[0]));
         assertThat(seen).as("the chunks%s", parallel ? ", sorted" : ", in the order run").containsExactlyElementsOf(expected);
+    }
+
+    @Test
+    @DisplayName("on one thread, a range near the int limit ends in two chunks (a chunk's end never overflows)")
+    void noOverflowNearTheLimit() {
+        List<int[]> chunks = new ArrayList<>();
+        Ranges.run(null, Integer.MAX_VALUE, Integer.MAX_VALUE - 100, (from, to) -> chunks.add(new int[] { from, to }));
+        assertThat(chunks).containsExactly(new int[] { 0, Integer.MAX_VALUE - 100 },
+                new int[] { Integer.MAX_VALUE - 100, Integer.MAX_VALUE });
     }
 
     @ParameterizedTest(name = "in a pool {0}")
