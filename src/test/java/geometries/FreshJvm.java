@@ -13,9 +13,10 @@ import java.util.concurrent.TimeUnit;
  * Runs a test class's {@code main} in a JVM of its own, on this test JVM's JDK and class path.
  *
  * <p>Why: what the JIT compiler does is a property of a JVM's history. In the suite's JVM, after
- * thousands of tests, the vector walk's leaf tests stayed in the profiled tier for two minutes
- * (seen in CI and here; most likely behind the optimizing compiler's queue), so a check of "the
- * vector walk once compiled" made there passed or failed by chance. A user's render runs in
+ * thousands of tests, the vector walk, though compiled by C2, stayed slow and allocating for
+ * minutes, and its leaf tests stayed in the profiled tier (seen in CI and here; the compile queue
+ * was nearly idle meanwhile, the cause is not known), so a check of "the vector walk once compiled"
+ * made there passed or failed by chance. A user's render runs in
  * a JVM whose queue is short; a fresh JVM is that case. And a JVM's walk is decided once per JVM
  * ({@link Vectorization}), so options such as {@code -Draytracer.simd} need a JVM of their own.
  */
