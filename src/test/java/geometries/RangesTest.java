@@ -53,7 +53,11 @@ class RangesTest {
     @DisplayName("on one thread, a range near the int limit ends in two chunks (a chunk's end never overflows)")
     void noOverflowNearTheLimit() {
         List<int[]> chunks = new ArrayList<>();
-        Ranges.run(null, Integer.MAX_VALUE, Integer.MAX_VALUE - 100, (from, to) -> chunks.add(new int[] { from, to }));
+        Ranges.run(null, Integer.MAX_VALUE, Integer.MAX_VALUE - 100, (from, to) -> {
+            // An end that overflowed would be below its start (and the loop would never end): fail at once.
+            assertThat(to).as("the end of the chunk from %d", from).isGreaterThan(from);
+            chunks.add(new int[] { from, to });
+        });
         assertThat(chunks).containsExactly(new int[] { 0, Integer.MAX_VALUE - 100 },
                 new int[] { Integer.MAX_VALUE - 100, Integer.MAX_VALUE });
     }
