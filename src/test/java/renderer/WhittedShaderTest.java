@@ -1,6 +1,7 @@
 package renderer;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.offset;
 import static renderer.RayTracerBasic.MAX_CALC_COLOR_LEVEL;
 import static renderer.RayTracerBasic.MIN_CALC_COLOR_K;
 
@@ -10,12 +11,18 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
+import java.util.ArrayList;
+import java.util.List;
+
+import geometries.Geometry;
 import geometries.Plane;
 import lighting.AmbientLight;
 import lighting.LightSource;
+import lighting.PointLight;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point;
+import primitives.Ray;
 import primitives.Rgb;
 import primitives.Vector;
 import scene.Scene;
@@ -104,6 +111,57 @@ class WhittedShaderTest {
         void none() {
             shade(floor(new Material().setKd(0.5).setKs(0.5)), 16);
             assertThat(ctx.secondaryRays).isZero();
+        }
+    }
+
+    @Nested
+    @DisplayName("the Phong term of a light")
+    class Phong {
+        /** A floor z = 0 as a user could write it, whose normal is (0, 0, 4): not of unit length. */
+        private static final class LongNormalFloor extends Geometry {
+            private final Plane inner = new Plane(Point.ZERO, new Vector(0, 0, 1));
+
+            @Override
+            protected List<Intersection> calcIntersectionsHelper(Ray ray, double maxDistance) {
+                List<Intersection> found = inner.calcIntersections(ray, maxDistance);
+                if (found == null) return null;
+                List<Intersection> mine = new ArrayList<>();
+                for (Intersection i : found) mine.add(new Intersection(this, i.point));
+                return mine;
+            }
+
+            @Override
+            public Vector getNormal(Point point) {
+                return new Vector(0, 0, 4);
+            }
+        }
+
+        private double[] lit(Geometry floor, Material material) {
+            Scene scene = new Scene("lit floor");
+            scene.geometries.add(floor.setEmission(EMISSION).setMaterial(material));
+            scene.lights.add(new PointLight(new Color(100, 200, 300), new Point(3, 4, 12)));
+            Rgb seen = shade(scene, 1);
+            return new double[] { seen.r(), seen.g(), seen.b() };
+        }
+
+        @ParameterizedTest(name = "shininess {0}")
+        @ValueSource(ints = { 1, 20, 1_000_000 })
+        @DisplayName("without kS the shininess changes nothing, to the bit: emission plus kD·|n·l| times the light")
+        void noSpecularTerm(int shininess) {
+            double[] seen = lit(new Plane(Point.ZERO, new Vector(0, 0, 1)), new Material().setKd(0.5).setShininess(shininess));
+            assertThat(seen).containsExactly(lit(new Plane(Point.ZERO, new Vector(0, 0, 1)), new Material().setKd(0.5)));
+            double nl = 12 / Math.sqrt(9 + 16 + 144); // the light's direction against the floor's normal
+            assertThat(seen[1]).isCloseTo(5 + 0.5 * nl * 200, offset(1e-9));
+        }
+
+        @Test
+        @DisplayName("without kS a power that overflows (a user's normal of length 4, shininess 1000) is not a NaN pixel")
+        void overflowingPower() {
+            // (n·l)·n grows with |n|², so the mirror term here is about 28.6 > 1, and 28.6^1000 = +∞;
+            // kS·∞ with kS = 0 was NaN. The term is now the diffuse one alone, as at shininess 0.
+            double[] seen = lit(new LongNormalFloor(), new Material().setKd(0.5).setShininess(1000));
+            assertThat(seen).doesNotContain(Double.NaN)
+                    .containsExactly(lit(new LongNormalFloor(), new Material().setKd(0.5)));
         }
     }
 }
