@@ -7,11 +7,12 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * Which walk the trees of this JVM take (Apache Lucene's {@code VectorizationProvider} pattern):
  * the {@code VectorWalk} of wide nodes where the incubating Vector API is readable
  * ({@code --add-modules jdk.incubator.vector}) and the CPU's vectors hold four doubles (AVX2 and
- * later); the scalar walk of binary nodes otherwise. A render's tree takes the vector walk only
- * in a long render: from the first ray of a render of {@link #FIRST_RAY_CAMERA_RAYS} camera rays
- * or more ({@link Bvh#expectCameraRays}), on every JDK; and from JDK 25 on ({@link #SWITCHES})
- * also once a render has seconds of work left and the walk runs compiled ({@link #COMPILED},
- * {@link Bvh#expectLongWalk}). A short render never loads a vector class. Nothing is required
+ * later); the scalar walk of binary nodes otherwise. From JDK 25 on ({@link #BY_ITSELF}) a
+ * render's tree takes the vector walk by itself only in a long render: from the first ray of a
+ * render of {@link #FIRST_RAY_CAMERA_RAYS} camera rays or more ({@link Bvh#expectCameraRays}), or
+ * once a render has seconds of work left and the walk runs compiled ({@link #COMPILED},
+ * {@link Bvh#expectLongWalk}). Before JDK 25 only {@code -Draytracer.simd=true} gives it. A
+ * short render never loads a vector class. Nothing is required
  * of anyone: {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true}
  * gives every tree the vector walk from its first ray (a JVM that renders for long: a benchmark,
  * a Spark executor). Both walks return the same hits, so the choice changes speed only, never an
@@ -39,27 +40,33 @@ final class Vectorization {
      */
     static final int MIN_PRIMITIVES = 4096;
     /**
-     * Whether a render's tree takes the vector walk by itself, once it is compiled and the render
-     * has seconds left ({@link Bvh#expectLongWalk}): from JDK 25 on. On JDK 17 a tree switched in
-     * the middle of a render walked about 1.5× slower per ray than the same tree on the vector walk
-     * from the render's first ray (a mesh of 10<sup>5</sup> triangles, 144 samples a pixel: 15-21 s
-     * against 10.1 s, the scalar walk 12.3 s), for reasons not found: not the compiled code, where
-     * the data lies, the threads or the records (BENCHMARKS.md, issue 50, night session). JDK 18 to
-     * 24 are not measured, so they do as JDK 17: a long render takes the vector walk from its first
-     * ray ({@link #FIRST_RAY_CAMERA_RAYS}), and {@code -Draytracer.simd=true} gives it to any render.
+     * Whether a render's tree takes the vector walk by itself ({@link Bvh#expectCameraRays},
+     * {@link Bvh#expectLongWalk}): from JDK 25 on. On JDK 17 the vector walk's compiled code runs
+     * at one of two speeds, and which one depends on the render's first rays, for reasons not found
+     * (BENCHMARKS.md, issue 50, night and third sessions):
+     * <ul>
+     * <li>a tree switched in the middle of a render walked about 1.5× slower per ray than the same
+     * tree on the vector walk from the render's first ray (a mesh of 10<sup>5</sup> triangles, 144
+     * samples a pixel: 15-21 s against 10.1 s, the scalar walk 12.3 s);</li>
+     * <li>from the first ray, it ran faster than the scalar walk while tiles were claimed row by row
+     * (0.78-0.84 of its time at 64 and 144 samples a pixel), and 1.11-1.20× slower once they were
+     * claimed in a spread order (5 pairs of the launcher at 64 samples a pixel: 7.45 s against 6.35 s;
+     * the walk's progress uniformly slower, no allocation, the same images). The order alone makes
+     * the difference (the jars before and after it, 5.6 s against 7.5 s in the median of five runs,
+     * one of the older jar's at 7.75 s); JDK 25 is not affected.</li>
+     * </ul>
+     * JDK 18 to 24 are not measured, so they do as JDK 17: the scalar walk, unless
+     * {@code -Draytracer.simd=true} gives every render the vector walk from its first ray.
      */
-    static final boolean SWITCHES = Runtime.version().feature() >= 25;
+    static final boolean BY_ITSELF = Runtime.version().feature() >= 25;
     /**
      * The camera rays from which a render takes the vector walk from its first ray, on a tree of
      * {@link #MIN_PRIMITIVES} or more ({@link Bvh#expectCameraRays}), decided before any
-     * ray of it is traced, on every JDK. Measured on the 99,224-triangle mesh at 600×600, 2 threads,
-     * whole renders against the scalar walk: on JDK 17, 5.8·10<sup>6</sup> camera rays (16 a pixel)
-     * took as long either way, 2.3·10<sup>7</sup> (64) 0.87 of the time, 5.2·10<sup>7</sup> (144)
-     * 0.84, and one a pixel 1.5× (the vector code runs interpreted until compiled, about 0.6 s); on
-     * JDK 25, in pairs, 0.97 and 0.94, where switching at the render's pace gave 1.03 (64 a pixel,
-     * too short to switch) and 0.92–0.94. On JDK 17 a tree that changes
-     * walk during a render walks 1.5× slower, for reasons not found (BENCHMARKS.md, issue 50, night
-     * session): there this rule is the only way in.
+     * ray of it is traced, from JDK 25 on ({@link #BY_ITSELF}). Measured on the 99,224-triangle mesh
+     * at 600×600, 2 threads, whole renders against the scalar walk: on JDK 25, in pairs, 0.97 (64 a
+     * pixel) and 0.94 (144), where switching at the render's pace gave 1.03 (64 a pixel, too short to
+     * switch) and 0.92–0.94; one a pixel took 1.5× on JDK 17 (the vector code runs interpreted until
+     * compiled, about 0.6 s).
      */
     static final long FIRST_RAY_CAMERA_RAYS = 20_000_000L;
     /**
@@ -119,10 +126,9 @@ final class Vectorization {
     static String describe() {
         if (!AVAILABLE) return "scalar walk (" + WHY_NOT + ")";
         if (!COMPILED.get())
-            return SWITCHES ? "scalar walk (the vector walk is not compiled yet: a short render)"
-                    : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk in renders of "
-                    + FIRST_RAY_CAMERA_RAYS + " camera rays or more on trees of " + MIN_PRIMITIVES
-                    + " primitives or more; any with -D" + PROPERTY + "=true)";
+            return BY_ITSELF ? "scalar walk (the vector walk is not compiled yet: a short render)"
+                    : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk only with -D"
+                    + PROPERTY + "=true)";
         WideWalk walk = walk();
         return walk != null ? walk.description() : "scalar walk (" + Loaded.WHY_NOT + ")";
     }
