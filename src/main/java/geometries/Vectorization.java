@@ -41,22 +41,26 @@ final class Vectorization {
     static final int MIN_PRIMITIVES = 4096;
     /**
      * Whether a render's tree takes the vector walk by itself ({@link Bvh#expectCameraRays},
-     * {@link Bvh#expectLongWalk}): from JDK 25 on. On JDK 17 the vector walk's compiled code runs
-     * at one of two speeds, and which one depends on the render's first rays, for reasons not found
-     * (BENCHMARKS.md, issue 50, night and third sessions):
+     * {@link Bvh#expectLongWalk}): from JDK 25 on. On JDK 17 the compiled vector walk runs at one of
+     * two speeds, and which one depends on the profile of the walk's first rays (BENCHMARKS.md,
+     * issue 50, night session and third session of 2026-11-29):
      * <ul>
      * <li>a tree switched in the middle of a render walked about 1.5× slower per ray than the same
      * tree on the vector walk from the render's first ray (a mesh of 10<sup>5</sup> triangles, 144
      * samples a pixel: 15-21 s against 10.1 s, the scalar walk 12.3 s);</li>
-     * <li>from the first ray, it ran faster than the scalar walk while tiles were claimed row by row
-     * (0.78-0.84 of its time at 64 and 144 samples a pixel), and 1.11-1.20× slower once they were
-     * claimed in a spread order (5 pairs of the launcher at 64 samples a pixel: 7.45 s against 6.35 s;
-     * the walk's progress uniformly slower, no allocation, the same images). The order alone makes
-     * the difference (the jars before and after it, 5.6 s against 7.5 s in the median of five runs,
-     * one of the older jar's at 7.75 s); JDK 25 is not affected.</li>
+     * <li>from the first ray, with tiles claimed in a spread order, 1.11-1.20× the scalar walk's time
+     * (it had been 0.78-0.84 in row order). The main cause, found: C2 compiled the node test's
+     * read-back of the hit lanes to conditional moves when the first tiles hit the mesh, to
+     * branches when they were sky (the same jar, tiles in row order from the top or from the
+     * middle row: 2.7 s against 3.7 s; with {@code -XX:ConditionalMoveLimit=0} always fast). The
+     * read-back is now written so that it stays a branch ({@code VectorWalk.test}), and the walk
+     * from the first ray took 0.76-0.81 of the scalar walk's time in the median of four launcher
+     * pairs at 64 and 144 samples a pixel, but still 1.10-1.22 in one pair of four each (a slow
+     * mode that {@code -XX:ConditionalMoveLimit=0} also removes, its site not found).</li>
      * </ul>
-     * JDK 18 to 24 are not measured, so they do as JDK 17: the scalar walk, unless
-     * {@code -Draytracer.simd=true} gives every render the vector walk from its first ray.
+     * So before JDK 25 a render never takes it by itself: a long render must not come out slower
+     * for the module. JDK 18 to 24 are not measured, so they do as JDK 17; {@code
+     * -Draytracer.simd=true} gives every render the vector walk from its first ray there.
      */
     static final boolean BY_ITSELF = Runtime.version().feature() >= 25;
     /**

@@ -157,10 +157,21 @@ final class VectorWalk implements WideWalk {
             return bits;
         }
         // JDK 17 compiles no mask-to-bits instruction (the mask would be built as an object, 0.1 kB
-        // a ray): the missed children's entries are made +∞ instead and the bits read back.
+        // a ray): the missed children's entries are made +∞ instead and the bits read back, one
+        // branch a lane. Each must stay a branch. When C2's profile saw the lanes hit about half
+        // the time, it compiled the plain form (bits |= (e < ∞ ? 1 : 0) << j) to conditional
+        // moves: the next node's address then waited for the vector store's read-back at every
+        // node, where a branch, predicted well within a tile of coherent rays, lets the processor
+        // run ahead. Which form C2 chose depended on the render's first tiles: the same mesh took
+        // 3.5-4.2 s or 2.4-2.7 s (BENCHMARKS.md, issue 50, third session of 2026-11-29; with
+        // -XX:ConditionalMoveLimit=0 always the latter). The store in the other arm keeps C2 from
+        // making it a conditional move; a missed lane's entry is never read.
         t0.blend(INFINITY, hit.not()).intoArray(entries, 0);
         long bits = 0;
-        for (int j = 0; j < WIDTH; ++j) bits |= (entries[j] < Double.POSITIVE_INFINITY ? 1L : 0L) << j;
+        for (int j = 0; j < WIDTH; ++j) {
+            if (entries[j] < Double.POSITIVE_INFINITY) bits |= 1L << j;
+            else entries[j] = Double.NaN;
+        }
         return bits;
     }
 
@@ -182,12 +193,18 @@ final class VectorWalk implements WideWalk {
             } else if ((rest & (rest - 1)) == 0) {
                 // Two, the commonest case of several: one comparison instead of the sort (the
                 // nearer first, the first in lane order of equal entries, as the sort orders them).
+                // Stores in both arms keep it a branch, as the lanes' read-back in test.
                 int a = Long.numberOfTrailingZeros(bits), b = Long.numberOfTrailingZeros(rest);
-                boolean bFirst = entries[b] < entries[a];
-                int far = bFirst ? a : b;
-                stack[top] = at + far;
-                stackT[top++] = entries[far];
-                item = at + (bFirst ? b : a);
+                double ta = entries[a], tb = entries[b];
+                if (tb < ta) {
+                    stack[top] = at + a;
+                    stackT[top++] = ta;
+                    item = at + b;
+                } else {
+                    stack[top] = at + b;
+                    stackT[top++] = tb;
+                    item = at + a;
+                }
             } else {
                 // Three or more: the nearest now (the first in lane order of equal entries), the
                 // others pushed in lane order, unsorted. Which hit wins does not depend on the
