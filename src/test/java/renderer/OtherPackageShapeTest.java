@@ -40,22 +40,8 @@ class OtherPackageShapeTest {
     private static final int N = 20;
 
     /** A ball written the 2025–26 way: the one hook, answered by a library sphere's list query. */
-    private static final class Ball extends Geometry {
-        private final Sphere inner = new Sphere(CENTER, RADIUS);
-
-        @Override
-        protected List<Intersection> calcIntersectionsHelper(Ray ray, double maxDistance) {
-            List<Intersection> found = inner.calcIntersections(ray, maxDistance);
-            if (found == null) return null;
-            List<Intersection> mine = new ArrayList<>();
-            for (Intersection i : found) mine.add(new Intersection(this, i.point));
-            return mine;
-        }
-
-        @Override
-        public Vector getNormal(Point point) {
-            return point.subtract(CENTER).normalize();
-        }
+    private static Geometry ball() {
+        return new UserShape(new Sphere(CENTER, RADIUS), p -> p.subtract(CENTER).normalize());
     }
 
     /** A subclass of the library's sphere that overrides nothing. */
@@ -88,7 +74,7 @@ class OtherPackageShapeTest {
     @Test
     @DisplayName("the engine's queries of a user's shape answer through its hook, as the library's sphere answers")
     void leanQueriesAskTheHook() {
-        Ball ball = new Ball();
+        Geometry ball = ball();
         Sphere sphere = new Sphere(CENTER, RADIUS);
         assertThat(LeanQueries.boundingBox(ball)).as("a user's shape has no box: it stays beside the tree").isNull();
         assertThat(LeanQueries.isLibraryShape(ball)).isFalse();
@@ -114,7 +100,7 @@ class OtherPackageShapeTest {
     @DisplayName("a user's shape, and a subclass of a library shape, render as the library's sphere")
     void rendersAsTheLibrarySphere(boolean bvh) {
         RayTracerBasic library = new SimpleRayTracer(scene(new Sphere(CENTER, RADIUS))).setBvh(bvh);
-        RayTracerBasic user = new SimpleRayTracer(scene(new Ball())).setBvh(bvh);
+        RayTracerBasic user = new SimpleRayTracer(scene(ball())).setBvh(bvh);
         RayTracerBasic subclass = new SimpleRayTracer(scene(new PlainSphere())).setBvh(bvh);
         int onBall = 0;
         for (Ray ray : rays()) {

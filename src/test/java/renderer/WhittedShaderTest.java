@@ -11,9 +11,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.ValueSource;
 
-import java.util.ArrayList;
-import java.util.List;
-
 import geometries.Geometry;
 import geometries.Plane;
 import lighting.AmbientLight;
@@ -22,7 +19,6 @@ import lighting.PointLight;
 import primitives.Color;
 import primitives.Material;
 import primitives.Point;
-import primitives.Ray;
 import primitives.Rgb;
 import primitives.Vector;
 import scene.Scene;
@@ -118,22 +114,8 @@ class WhittedShaderTest {
     @DisplayName("the Phong term of a light")
     class Phong {
         /** A floor z = 0 as a user could write it, whose normal is (0, 0, 4): not of unit length. */
-        private static final class LongNormalFloor extends Geometry {
-            private final Plane inner = new Plane(Point.ZERO, new Vector(0, 0, 1));
-
-            @Override
-            protected List<Intersection> calcIntersectionsHelper(Ray ray, double maxDistance) {
-                List<Intersection> found = inner.calcIntersections(ray, maxDistance);
-                if (found == null) return null;
-                List<Intersection> mine = new ArrayList<>();
-                for (Intersection i : found) mine.add(new Intersection(this, i.point));
-                return mine;
-            }
-
-            @Override
-            public Vector getNormal(Point point) {
-                return new Vector(0, 0, 4);
-            }
+        private static Geometry longNormalFloor() {
+            return new UserShape(new Plane(Point.ZERO, new Vector(0, 0, 1)), p -> new Vector(0, 0, 4));
         }
 
         private double[] lit(Geometry floor, Material material) {
@@ -159,9 +141,9 @@ class WhittedShaderTest {
         void overflowingPower() {
             // (n·l)·n grows with |n|², so the mirror term here is about 28.6 > 1, and 28.6^1000 = +∞;
             // kS·∞ with kS = 0 was NaN. The term is now the diffuse one alone, as at shininess 0.
-            double[] seen = lit(new LongNormalFloor(), new Material().setKd(0.5).setShininess(1000));
+            double[] seen = lit(longNormalFloor(), new Material().setKd(0.5).setShininess(1000));
             assertThat(seen).doesNotContain(Double.NaN)
-                    .containsExactly(lit(new LongNormalFloor(), new Material().setKd(0.5)));
+                    .containsExactly(lit(longNormalFloor(), new Material().setKd(0.5)));
         }
     }
 }
