@@ -14,9 +14,9 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * {@link Bvh#expectLongWalk}). Before JDK 25 only {@code -Draytracer.simd=true} gives it. A
  * short render never loads a vector class. Nothing is required
  * of anyone: {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true}
- * gives every tree the vector walk from its first ray (a JVM that renders for long: a benchmark,
- * a Spark executor). Both walks return the same hits, so the choice changes speed only, never an
- * image.
+ * gives every tree of {@link #MIN_PRIMITIVES} primitives or more the vector walk from its first ray
+ * (a JVM that renders for long: a benchmark, a Spark executor). Both walks return the same hits,
+ * so the choice changes speed only, never an image.
  */
 final class Vectorization {
     /** The system property: {@code false} forces the scalar walk, {@code true} the vector walk from the first ray. */
@@ -60,7 +60,8 @@ final class Vectorization {
      * </ul>
      * So before JDK 25 a render never takes it by itself: a long render must not come out slower
      * for the module. JDK 18 to 24 are not measured, so they do as JDK 17; {@code
-     * -Draytracer.simd=true} gives every render the vector walk from its first ray there.
+     * -Draytracer.simd=true} gives a render's tree of {@link #MIN_PRIMITIVES} or more the vector walk
+     * from its first ray there.
      */
     static final boolean BY_ITSELF = Runtime.version().feature() >= 25;
     /**
