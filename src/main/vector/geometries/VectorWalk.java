@@ -193,18 +193,12 @@ final class VectorWalk implements WideWalk {
             } else if ((rest & (rest - 1)) == 0) {
                 // Two, the commonest case of several: one comparison instead of the sort (the
                 // nearer first, the first in lane order of equal entries, as the sort orders them).
-                // Stores in both arms keep it a branch, as the lanes' read-back in test.
                 int a = Long.numberOfTrailingZeros(bits), b = Long.numberOfTrailingZeros(rest);
-                double ta = entries[a], tb = entries[b];
-                if (tb < ta) {
-                    stack[top] = at + a;
-                    stackT[top++] = ta;
-                    item = at + b;
-                } else {
-                    stack[top] = at + b;
-                    stackT[top++] = tb;
-                    item = at + a;
-                }
+                boolean bFirst = entries[b] < entries[a];
+                int far = bFirst ? a : b;
+                stack[top] = at + far;
+                stackT[top++] = entries[far];
+                item = at + (bFirst ? b : a);
             } else {
                 // Three or more: the nearest now (the first in lane order of equal entries), the
                 // others pushed in lane order, unsorted. Which hit wins does not depend on the
