@@ -527,7 +527,10 @@ public final class Bvh extends Intersectable {
         double limit = maxDistance * (1 + 1e-9) + 1e-9;
         WideTree w = wide;
         if (w != null) {
-            if (entry(0, ox, oy, oz, ix, iy, iz, limit) == Double.POSITIVE_INFINITY) return true;
+            // No test of the root's box first: most shadow rays start inside it, and C2 compiled
+            // the rare miss to a trap that, met seconds into a render, threw the compiled any-hit
+            // walk back to the interpreter (BENCHMARKS.md, issue 50). The root's children are
+            // tested in the walk's first step anyway.
             int size = w.nodes().stackSize();
             // As the closest-hit walk's stack: a walk in progress on this record keeps its own.
             if (query.walking)

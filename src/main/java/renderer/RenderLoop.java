@@ -1,5 +1,6 @@
 package renderer;
 
+import java.lang.ref.WeakReference;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CancellationException;
@@ -242,6 +243,13 @@ final class RenderLoop {
             return done;
         }
 
+        /** A worker's trace context: its own scratch records, stopped by an interrupt. */
+        private TraceContext newContext() {
+            TraceContext ctx = tracer.newContext();
+            ctx.interruptible = true;
+            return ctx;
+        }
+
         private CancellationException interrupted() {
             return new CancellationException("render of " + name + " was interrupted");
         }
@@ -251,11 +259,29 @@ final class RenderLoop {
                 PixelSampler sampler = sampling.newSampler(estimator, tile);
                 // One tile's pixels, written out when the tile is done.
                 int[] tilePixels = new int[tile * tile];
-                TraceContext ctx = tracer.newContext();
-                ctx.interruptible = true;
+                TraceContext ctx = newContext();
+                // Cleared by the next garbage collection: see below.
+                WeakReference<Object> noCollectionSince = execution.threads() > 1 ? new WeakReference<>(new Object()) : null;
                 try {
                     for (int t = nextTile.getAndIncrement(); t < tileCount; t = nextTile.getAndIncrement()) {
                         if (cancelled.get() || Thread.currentThread().isInterrupted()) throw interrupted();
+                        // A collection copies the workers' records (the context, its hits, their
+                        // walk stacks and lanes) into shared regions, in whatever order it walks
+                        // them: a record of this worker can land on a cache line with one of
+                        // another's, and each write of one then takes the line from the other's
+                        // core. Where that happened, a whole render on the vector walk took 1.5-1.7x
+                        // its time (about one in four, at random; never once the collections stopped:
+                        // BENCHMARKS.md, issue 50, fourth session of 2026-11-29). So after each
+                        // collection the worker makes its records anew, in its own allocation
+                        // buffer, where no other thread allocates. Nothing else changes: every
+                        // random number is keyed by the pixel, and the shadow cache is exact.
+                        if (noCollectionSince != null && noCollectionSince.get() == null) {
+                            ctx.addTo(counter);
+                            ctx = newContext();
+                            sampler = sampling.newSampler(estimator, tile);
+                            tilePixels = new int[tile * tile];
+                            noCollectionSince = new WeakReference<>(new Object());
+                        }
                         progress.advance(renderTile(t, sampler, ctx, tilePixels));
                         // Only once the pace is known: the first tiles include the code's warm-up.
                         if (progress.elapsedSeconds() >= PACE_SECONDS && progress.remainingSeconds() >= LONG_RENDER_SECONDS)

@@ -123,18 +123,28 @@ final class VectorTriangles {
                          double[] scratch) {
         // No bound here: within(t, max) is asked lane by lane; the vector step rules out the
         // leaves where no triangle is hit in front of the ray, most of them.
-        if (distances(s, first, count, query, Double.POSITIVE_INFINITY, scratch) == 0) return true;
+        long may = distances(s, first, count, query, Double.POSITIVE_INFINITY, scratch);
         // Read out before any visitor runs: one may query a tree with this record, whose walk
-        // writes the same scratch.
+        // writes the same scratch. (Where no lane may hit, these are stale and never read.)
         double t0 = scratch[0], t1 = scratch[1], t2 = scratch[2], t3 = scratch[3];
         double t4 = scratch[4], t5 = scratch[5], t6 = scratch[6], t7 = scratch[7];
-        return tree.visitTriangle(first, t0, maxDistance, visitor)
-                && (count < 2 || tree.visitTriangle(first + 1, t1, maxDistance, visitor))
-                && (count < 3 || tree.visitTriangle(first + 2, t2, maxDistance, visitor))
-                && (count < 4 || tree.visitTriangle(first + 3, t3, maxDistance, visitor))
-                && (count < 5 || tree.visitTriangle(first + 4, t4, maxDistance, visitor))
-                && (count < 6 || tree.visitTriangle(first + 5, t5, maxDistance, visitor))
-                && (count < 7 || tree.visitTriangle(first + 6, t6, maxDistance, visitor))
-                && (count < 8 || tree.visitTriangle(first + 7, t7, maxDistance, visitor));
+        // One loop, the distances shifted down a lane a turn, up to the last lane that may hit (the
+        // lanes between are refused by visitTriangle's rule, as before), and no early return for
+        // a leaf missed: C2 compiles a branch that its profile never saw taken to a trap, and the
+        // first tiles of a render saw no shadow ray stopped at lane 3 or 6, or no leaf missed
+        // after its box was hit. Each of those, met later, threw the compiled any-hit walk back to
+        // the interpreter, where vector code is slow: seven times in the first two seconds of the
+        // teapot scene on JDK 25 when each lane had its branch (BENCHMARKS.md, issue 50).
+        for (int k = first; may != 0; may >>>= 1, ++k) {
+            if (!tree.visitTriangle(k, t0, maxDistance, visitor)) return false;
+            t0 = t1;
+            t1 = t2;
+            t2 = t3;
+            t3 = t4;
+            t4 = t5;
+            t5 = t6;
+            t6 = t7;
+        }
+        return true;
     }
 }

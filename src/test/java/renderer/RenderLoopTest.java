@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.BitSet;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.DisplayName;
@@ -115,5 +116,37 @@ class RenderLoopTest {
         BitSet bands = new BitSet(10);
         for (int k = 0; k < count / 10; ++k) bands.set((int) ((long) k * stride % count) / side * 10 / side);
         assertThat(bands.cardinality()).isEqualTo(10);
+    }
+
+    @Test
+    @DisplayName("collections during a render, after each of which every worker makes its records anew, change no pixel and no ray count")
+    void collectionsChangeNothing() throws InterruptedException {
+        ImageWriter quiet = new ImageWriter("collections", 64, 48), collected = new ImageWriter("collections", 64, 48);
+        RenderStats expected = TestScenes.camera(TestScenes.everyEffect(), quiet).setMultithreading(2).build().render();
+        // Collections as often as the machine allows while the same render runs: each clears
+        // the workers' weak reference, so that each worker makes its records anew at its next tile.
+        AtomicInteger collections = new AtomicInteger();
+        AtomicBoolean rendering = new AtomicBoolean(true);
+        Thread collector = new Thread(() -> {
+            while (rendering.get()) {
+                System.gc();
+                collections.incrementAndGet();
+            }
+        });
+        collector.start();
+        RenderStats stats;
+        try {
+            stats = TestScenes.camera(TestScenes.everyEffect(), collected).setMultithreading(2).build().render();
+        } finally {
+            rendering.set(false);
+            collector.join();
+        }
+        assertThat(collections.get()).as("collections during the render").isGreaterThan(1);
+        assertThat(new long[] { stats.cameraRays(), stats.shadowRays(), stats.secondaryRays() })
+                .as("camera, shadow and secondary rays")
+                .containsExactly(expected.cameraRays(), expected.shadowRays(), expected.secondaryRays());
+        for (int y = 0; y < 48; ++y)
+            for (int x = 0; x < 64; ++x)
+                assertThat(collected.getRgb(x, y)).as("pixel (%d,%d)", x, y).isEqualTo(quiet.getRgb(x, y));
     }
 }
