@@ -114,8 +114,7 @@ def test_a_render_prints_no_incubator_warning_and_says_its_walk(tmp_path, vector
     assert "incubator" not in done.stderr
     module = vector == "1" or vector == "" and this_jdk()[1] == "jsa"  # by default before JDK 25
     if module:  # where the JDK has it: a short render keeps the scalar walk
-        assert "scalar walk (the vector walk is not compiled yet: a short render)" in done.stdout \
-            or "takes the vector walk only with -Draytracer.simd=true)" in done.stdout
+        assert "scalar walk (the vector walk is not compiled yet: a short render)" in done.stdout
     else:
         assert "scalar walk (no jdk.incubator.vector)" in done.stdout
 

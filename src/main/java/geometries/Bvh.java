@@ -64,7 +64,7 @@ public final class Bvh extends Intersectable {
     /**
      * Whether this tree may get {@link #wide} later: at the start of a long render
      * ({@link #expectCameraRays}), or once a render's pace says it is long and the vector walk is
-     * compiled ({@link #expectLongWalk}, from JDK 25).
+     * compiled ({@link #expectLongWalk}).
      */
     private final boolean widens;
     /** Set when the heap had no room for {@link #wide}: the tree keeps the scalar walk ({@link #widen}). */
@@ -185,10 +185,10 @@ public final class Bvh extends Intersectable {
      * enough for the vector walk gets its wide part when the walk runs compiled in this JVM
      * ({@link Vectorization#COMPILED}), and until then the walk is warmed ({@link VectorWarmUp}),
      * once per JVM. Not before: the warm-up costs about a second of processor time, which a short
-     * render would lose. Only from JDK 25 on ({@link Vectorization#BY_ITSELF}); before, nothing.
+     * render would lose.
      */
     void expectLongWalk() {
-        if (!widens || !Vectorization.BY_ITSELF || wide != null || noRoom) return;
+        if (!widens || wide != null || noRoom) return;
         if (Vectorization.COMPILED.get()) widen(Vectorization.walk());
         else VectorWarmUp.start();
     }
@@ -198,11 +198,10 @@ public final class Bvh extends Intersectable {
      * is traced: a tree of {@link Vectorization#MIN_PRIMITIVES} or more gets its wide part
      * now when the render is long ({@link Vectorization#FIRST_RAY_CAMERA_RAYS}), and the render takes
      * the vector walk from its first ray. A tree that already has it keeps it; a render too short
-     * for this rule may still switch at its pace ({@link #expectLongWalk}). Only from JDK 25 on
-     * ({@link Vectorization#BY_ITSELF}); before, nothing.
+     * for this rule may still switch at its pace ({@link #expectLongWalk}).
      */
     void expectCameraRays(long cameraRays) {
-        if (!widens || !Vectorization.BY_ITSELF || wide != null || noRoom
+        if (!widens || wide != null || noRoom
                 || cameraRays < Vectorization.FIRST_RAY_CAMERA_RAYS) return;
         widen(Vectorization.walk());
     }
@@ -228,7 +227,7 @@ public final class Bvh extends Intersectable {
      * One line for a render's summary: which walk this JVM's trees take now, the vector walk of
      * wide nodes or the scalar one, and for the scalar one why ({@code jdk.incubator.vector} not
      * readable, {@code -Draytracer.simd=false}, a CPU without 256-bit vectors, or a vector walk
-     * not compiled yet: from JDK 25 on a long render takes it from its first ray, and a render with
+     * not compiled yet: a long render takes it from its first ray, and a render with
      * seconds of work left has it compiled; {@code -Draytracer.simd=true} gives it to any render's
      * tree of {@link Vectorization#MIN_PRIMITIVES} primitives or more).
      * A render's summary names its own tree's walk ({@link #describeWalk}) instead.

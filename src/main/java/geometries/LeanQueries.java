@@ -20,7 +20,7 @@ public final class LeanQueries {
     /**
      * Told, before any of its rays is traced, that a render of about {@code cameraRays} camera rays
      * starts: a tree of {@code world} large enough takes the vector walk from the first ray when
-     * the render is long, from JDK 25 on ({@link Bvh#expectCameraRays}); otherwise nothing.
+     * the render is long ({@link Bvh#expectCameraRays}); otherwise nothing.
      *
      * @param world      the render's geometry, a tree or not
      * @param cameraRays the camera rays the render traces at least (pixels times the fewest a pixel takes)

@@ -7,12 +7,14 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * Which walk the trees of this JVM take (Apache Lucene's {@code VectorizationProvider} pattern):
  * the {@code VectorWalk} of wide nodes where the incubating Vector API is readable
  * ({@code --add-modules jdk.incubator.vector}) and the CPU's vectors hold four doubles (AVX2 and
- * later); the scalar walk of binary nodes otherwise. From JDK 25 on ({@link #BY_ITSELF}) a
- * render's tree takes the vector walk by itself only in a long render: from the first ray of a
- * render of {@link #FIRST_RAY_CAMERA_RAYS} camera rays or more ({@link Bvh#expectCameraRays}), or
- * once a render has seconds of work left and the walk runs compiled ({@link #COMPILED},
- * {@link Bvh#expectLongWalk}). Before JDK 25 only {@code -Draytracer.simd=true} gives it. A
- * short render never loads a vector class. Nothing is required
+ * later); the scalar walk of binary nodes otherwise. A render's tree takes the vector walk by
+ * itself only in a long render: from the first ray of a render of {@link #FIRST_RAY_CAMERA_RAYS}
+ * camera rays or more ({@link Bvh#expectCameraRays}), or once a render has seconds of work left
+ * and the walk runs compiled ({@link #COMPILED}, {@link Bvh#expectLongWalk}). A short render never
+ * loads a vector class. (Until the fourth session of 2026-11-29 JDK 17-24 took it only with
+ * {@code -Draytracer.simd=true}: about one long render in four to eight came out 1.1-1.5x slower
+ * on it. The cause was two render workers' records put on one cache line by a garbage
+ * collection, which {@code RenderLoop} now rules out; BENCHMARKS.md, issue 50.) Nothing is required
  * of anyone: {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true}
  * gives every tree of {@link #MIN_PRIMITIVES} primitives or more the vector walk from its first ray
  * (a JVM that renders for long: a benchmark, a Spark executor). Both walks return the same hits,
@@ -40,38 +42,14 @@ final class Vectorization {
      */
     static final int MIN_PRIMITIVES = 4096;
     /**
-     * Whether a render's tree takes the vector walk by itself ({@link Bvh#expectCameraRays},
-     * {@link Bvh#expectLongWalk}): from JDK 25 on. On JDK 17 the compiled vector walk runs at one of
-     * two speeds, and which one depends on the profile of the walk's first rays (BENCHMARKS.md,
-     * issue 50, night session and third session of 2026-11-29):
-     * <ul>
-     * <li>a tree switched in the middle of a render walked about 1.5× slower per ray than the same
-     * tree on the vector walk from the render's first ray (a mesh of 10<sup>5</sup> triangles, 144
-     * samples a pixel: 15-21 s against 10.1 s, the scalar walk 12.3 s);</li>
-     * <li>from the first ray, with tiles claimed in a spread order, 1.11-1.20× the scalar walk's time
-     * (it had been 0.78-0.84 in row order). The main cause, found: C2 compiled the node test's
-     * read-back of the hit lanes to conditional moves when the first tiles hit the mesh, to
-     * branches when they were sky (the same jar, tiles in row order from the top or from the
-     * middle row: 2.7 s against 3.7 s; with {@code -XX:ConditionalMoveLimit=0} always fast). The
-     * read-back is now written so that it stays a branch ({@code VectorWalk.test}), and the walk
-     * from the first ray took 0.76-0.81 of the scalar walk's time in the median of four launcher
-     * pairs at 64 and 144 samples a pixel, but still 1.10-1.22 in one pair of four each (a slow
-     * mode that {@code -XX:ConditionalMoveLimit=0} also removes, its site not found).</li>
-     * </ul>
-     * So before JDK 25 a render never takes it by itself: a long render must not come out slower
-     * for the module. JDK 18 to 24 are not measured, so they do as JDK 17; {@code
-     * -Draytracer.simd=true} gives a render's tree of {@link #MIN_PRIMITIVES} or more the vector walk
-     * from its first ray there.
-     */
-    static final boolean BY_ITSELF = Runtime.version().feature() >= 25;
-    /**
      * The camera rays from which a render takes the vector walk from its first ray, on a tree of
      * {@link #MIN_PRIMITIVES} or more ({@link Bvh#expectCameraRays}), decided before any
-     * ray of it is traced, from JDK 25 on ({@link #BY_ITSELF}). Measured on the 99,224-triangle mesh
+     * ray of it is traced. Measured on the 99,224-triangle mesh
      * at 600×600, 2 threads, whole renders against the scalar walk: on JDK 25, in pairs, 0.97 (64 a
      * pixel) and 0.94 (144), where switching at the render's pace gave 1.03 (64 a pixel, too short to
      * switch) and 0.92–0.94; one a pixel took 1.5× on JDK 17 (the vector code runs interpreted until
-     * compiled, about 0.6 s).
+     * compiled, about 0.6 s). With workers' records renewed after each collection ({@code
+     * RenderLoop}), 5-6 pairs: JDK 17 0.81 (64 a pixel) and 0.75 (144), JDK 25 0.85 and 0.82.
      */
     static final long FIRST_RAY_CAMERA_RAYS = 20_000_000L;
     /**
@@ -130,10 +108,7 @@ final class Vectorization {
      */
     static String describe() {
         if (!AVAILABLE) return "scalar walk (" + WHY_NOT + ")";
-        if (!COMPILED.get())
-            return BY_ITSELF ? "scalar walk (the vector walk is not compiled yet: a short render)"
-                    : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk only with -D"
-                    + PROPERTY + "=true)";
+        if (!COMPILED.get()) return "scalar walk (the vector walk is not compiled yet: a short render)";
         WideWalk walk = walk();
         return walk != null ? walk.description() : "scalar walk (" + Loaded.WHY_NOT + ")";
     }

@@ -39,8 +39,7 @@ class VectorWarmUpTest {
         while (!Vectorization.COMPILED.get() && System.nanoTime() < deadline) Thread.sleep(20);
         System.out.println("compiled: " + Vectorization.COMPILED.get());
         System.out.println("walk: " + Bvh.walkDescription());
-        // A render's tree, large enough, gets its wide part when a long render says so (from JDK
-        // 25 on, Vectorization.BY_ITSELF; before, never); a small one never.
+        // A render's tree, large enough, gets its wide part when a long render says so; a small one never.
         Bvh large = Bvh.build(new Geometries(BvhTest.gridMesh(60)));
         Bvh small = Bvh.build(new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(3, 0, 0), 1)));
         System.out.println("large tree wide before a long render: " + (large.wideNodes() != null));
@@ -85,6 +84,6 @@ class VectorWarmUpTest {
         assertThat(facts.get(0)).isEqualTo("compiled: true");
         assertThat(facts.get(1)).matches("walk: [48]-wide vector walk \\(trees of \\d+ primitives or more\\)");
         assertThat(facts.subList(2, 5)).containsExactly("large tree wide before a long render: false",
-                "large tree wide after: " + Vectorization.BY_ITSELF, "small tree wide after: false");
+                "large tree wide after: true", "small tree wide after: false");
     }
 }

@@ -29,8 +29,8 @@ class VectorizationTest {
 
     @ParameterizedTest(name = "{0} camera rays")
     @ValueSource(longs = { 1, Vectorization.FIRST_RAY_CAMERA_RAYS - 1, Vectorization.FIRST_RAY_CAMERA_RAYS })
-    @DisplayName("from JDK 25 on, a render long from the start gives a tree of 4096 primitives or more the vector"
-            + " walk from its first ray; smaller trees, and every tree before JDK 25, keep the scalar walk")
+    @DisplayName("a render long from the start gives a tree of 4096 primitives or more the vector walk from its"
+            + " first ray, on every JDK; smaller trees, and shorter renders, keep the scalar walk")
     void firstRayRule(long cameraRays) {
         assumeTrue(Vectorization.walk() != null, "no vector walk in this JVM: " + Bvh.walkDescription());
         Bvh large = Bvh.build(new Geometries(BvhTest.gridMesh(60)));
@@ -38,7 +38,7 @@ class VectorizationTest {
         assertThat(large.primitiveTotal()).isGreaterThanOrEqualTo(Vectorization.MIN_PRIMITIVES);
         large.expectCameraRays(cameraRays);
         small.expectCameraRays(cameraRays);
-        boolean wide = Runtime.version().feature() >= 25 && cameraRays >= Vectorization.FIRST_RAY_CAMERA_RAYS;
+        boolean wide = cameraRays >= Vectorization.FIRST_RAY_CAMERA_RAYS;
         assertThat(large.wideNodes() != null).as("the large tree widened").isEqualTo(wide);
         assertThat(small.wideNodes()).as("a tree below the walk's size").isNull();
         if (wide) assertThat(large.describeWalk()).matches("[48]-wide vector walk \\(trees of \\d+ primitives or more\\)");
@@ -48,7 +48,7 @@ class VectorizationTest {
     @ParameterizedTest(name = "{0} → {1}")
     @CsvSource(delimiter = '|', value = {
             "''|scalar walk (no jdk.incubator.vector)",
-            "--add-modules jdk.incubator.vector|AUTO",
+            "--add-modules jdk.incubator.vector|scalar walk (the vector walk is not compiled yet: a short render)",
             "--add-modules jdk.incubator.vector -Draytracer.simd=true|-wide vector walk",
             "--add-modules jdk.incubator.vector -Draytracer.simd=false|scalar walk (-Draytracer.simd=false)",
             "-Draytracer.simd=true|scalar walk (no jdk.incubator.vector)"})
@@ -56,10 +56,6 @@ class VectorizationTest {
         List<String> jvmOptions = new ArrayList<>();
         for (String o : options.split(" ")) if (!o.isEmpty()) jvmOptions.add(o);
         String out = FreshJvm.run(VectorizationTest.class, jvmOptions);
-        if (expected.equals("AUTO"))
-            // From JDK 25 a render switches by itself; before, only -Draytracer.simd=true gives the vector walk.
-            expected = Runtime.version().feature() >= 25 ? "scalar walk (the vector walk is not compiled yet: a short render)"
-                    : "scalar walk (JDK " + Runtime.version().feature() + " takes the vector walk only with -Draytracer.simd=true)";
         if (expected.startsWith("-wide")) assertThat(out).matches("[48]" + expected + " \\(trees of \\d+ primitives or more\\)");
         else assertThat(out).isEqualTo(expected);
     }
