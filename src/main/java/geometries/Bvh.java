@@ -229,7 +229,7 @@ public final class Bvh extends Intersectable {
      * readable, {@code -Draytracer.simd=false}, a CPU without 256-bit vectors, or a vector walk
      * not compiled yet: a long render takes it from its first ray, and a render with
      * seconds of work left has it compiled; {@code -Draytracer.simd=true} gives it to any render's
-     * tree of {@link Vectorization#MIN_PRIMITIVES} primitives or more).
+     * tree of {@link Vectorization#ASKED_MIN_PRIMITIVES} primitives or more).
      * A render's summary names its own tree's walk ({@link #describeWalk}) instead.
      *
      * @return the walk, in words

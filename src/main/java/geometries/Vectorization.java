@@ -16,7 +16,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * on it. The cause was two render workers' records put on one cache line by a garbage
  * collection, which {@code RenderLoop} now rules out; BENCHMARKS.md, issue 50.) Nothing is required
  * of anyone: {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true}
- * gives every tree of {@link #MIN_PRIMITIVES} primitives or more the vector walk from its first ray
+ * gives every tree of {@link #ASKED_MIN_PRIMITIVES} primitives or more the vector walk from its first ray
  * (a JVM that renders for long: a benchmark, a Spark executor). Both walks return the same hits,
  * so the choice changes speed only, never an image.
  */
@@ -41,6 +41,18 @@ final class Vectorization {
      * miss or hit a few large shapes, the scalar walk's early exits win.
      */
     static final int MIN_PRIMITIVES = 4096;
+    /**
+     * The smallest tree that takes the vector walk when {@code -Draytracer.simd=true} asks for it
+     * (a JVM that renders for long: a benchmark, a Spark executor). Such a JVM pays the walk's
+     * compilation once, and then a tree of about a thousand triangles gains too: the teapot scene
+     * (992 triangles, 2 threads, 64 samples a pixel, vector walk from the first ray against
+     * scalar, 5 pairs) 0.94 on JDK 25 and 0.88 on JDK 17; the walk alone, one thread, 1.13x
+     * Embree's time against 1.98x (BENCHMARKS.md, issue 50, fourth session of 2026-11-29). Not
+     * below: the showcase (133 shapes) at 64 samples a pixel took 1.045x on it. A render that was
+     * not asked keeps {@link #MIN_PRIMITIVES}: the teapot at 25 samples a pixel, in a fresh JVM,
+     * took 1.13x on JDK 25 (the compilation is not won back).
+     */
+    static final int ASKED_MIN_PRIMITIVES = 512;
     /**
      * The camera rays from which a render takes the vector walk from its first ray, on a tree of
      * {@link #MIN_PRIMITIVES} or more ({@link Bvh#expectCameraRays}), decided before any
@@ -95,6 +107,11 @@ final class Vectorization {
     /** @return this JVM's vector walk, or null where there is none (not {@link #AVAILABLE}, or the CPU refused it) */
     static WideWalk walk() {
         return AVAILABLE ? Loaded.WALK : null;
+    }
+
+    /** @return the smallest tree this JVM's vector walk takes: {@link #ASKED_MIN_PRIMITIVES} with {@code -Draytracer.simd=true}, else {@link #MIN_PRIMITIVES} */
+    static int minPrimitives() {
+        return EAGER ? ASKED_MIN_PRIMITIVES : MIN_PRIMITIVES;
     }
 
     /** @return the walk a render's tree gets when it is built: this JVM's vector walk with {@code -Draytracer.simd=true}, else none */

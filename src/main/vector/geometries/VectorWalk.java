@@ -65,7 +65,7 @@ final class VectorWalk implements WideWalk {
      *                                       where the Vector API would emulate them, slower than the scalar walk
      */
     public VectorWalk() {
-        minPrimitives = Vectorization.MIN_PRIMITIVES;
+        minPrimitives = Vectorization.minPrimitives();
         int bits = DoubleVector.SPECIES_PREFERRED.vectorBitSize();
         if (bits < DOUBLES.vectorBitSize())
             throw new UnsupportedOperationException(bits + "-bit vectors");

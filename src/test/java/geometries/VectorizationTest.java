@@ -22,9 +22,15 @@ import primitives.Point;
  * scalar walk otherwise, and {@code -Draytracer.simd=false} wins over the module.
  */
 class VectorizationTest {
-    /** Prints this JVM's walk, for the cases below. */
+    /** Prints this JVM's walk, or with "trees" whether trees of 648 and 450 triangles are wide when built, for the cases below. */
     public static void main(String[] args) {
-        System.out.println(Bvh.walkDescription());
+        if (args.length == 0) {
+            System.out.println(Bvh.walkDescription());
+            return;
+        }
+        Bvh teapotSized = Bvh.build(new Geometries(BvhTest.gridMesh(18)));
+        Bvh smaller = Bvh.build(new Geometries(BvhTest.gridMesh(15)));
+        System.out.println((teapotSized.wideNodes() != null) + " " + (smaller.wideNodes() != null));
     }
 
     @ParameterizedTest(name = "{0} camera rays")
@@ -58,5 +64,18 @@ class VectorizationTest {
         String out = FreshJvm.run(VectorizationTest.class, jvmOptions);
         if (expected.startsWith("-wide")) assertThat(out).matches("[48]" + expected + " \\(trees of \\d+ primitives or more\\)");
         else assertThat(out).isEqualTo(expected);
+    }
+
+    @ParameterizedTest(name = "{0} → {1}")
+    @CsvSource(delimiter = '|', value = { "-Draytracer.simd=true|true false", "''|false false" })
+    @DisplayName("asked for with -Draytracer.simd=true, the vector walk takes trees from 512 primitives at their build;"
+            + " unasked, a tree below 4096 keeps the scalar walk")
+    void askedTakesSmallerTrees(String option, String expected) throws IOException, InterruptedException {
+        assumeTrue(Vectorization.walk() != null, "no vector walk in this JVM: " + Bvh.walkDescription());
+        assertThat(2 * 18 * 18).isBetween(Vectorization.ASKED_MIN_PRIMITIVES, Vectorization.MIN_PRIMITIVES - 1);
+        assertThat(2 * 15 * 15).isLessThan(Vectorization.ASKED_MIN_PRIMITIVES);
+        String out = FreshJvm.run(VectorizationTest.class, option.isEmpty() ? FreshJvm.withVectorModule()
+                : FreshJvm.withVectorModule(option), "trees");
+        assertThat(out).isEqualTo(expected);
     }
 }
