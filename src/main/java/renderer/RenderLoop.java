@@ -261,7 +261,7 @@ final class RenderLoop {
                 int[] tilePixels = new int[tile * tile];
                 TraceContext ctx = newContext();
                 // Cleared by the next garbage collection: see below.
-                WeakReference<Object> noCollectionSince = execution.threads() > 1 ? new WeakReference<>(new Object()) : null;
+                WeakReference<Object> noCollectionSince = new WeakReference<>(new Object());
                 try {
                     for (int t = nextTile.getAndIncrement(); t < tileCount; t = nextTile.getAndIncrement()) {
                         if (cancelled.get() || Thread.currentThread().isInterrupted()) throw interrupted();
@@ -273,9 +273,12 @@ final class RenderLoop {
                         // its time (about one in four, at random; never once the collections stopped:
                         // BENCHMARKS.md, issue 50, fourth session of 2026-11-29). So after each
                         // collection the worker makes its records anew, in its own allocation
-                        // buffer, where no other thread allocates. Nothing else changes: every
-                        // random number is keyed by the pixel, and the shadow cache is exact.
-                        if (noCollectionSince != null && noCollectionSince.get() == null) {
+                        // buffer, where no other thread allocates. Also with one worker, or on the
+                        // calling thread: other renders may run beside this one (a Spark
+                        // executor's tasks, each on the thread that calls it; tests run in
+                        // parallel). Nothing else changes: every random number is keyed by the
+                        // pixel, and the shadow cache is exact.
+                        if (noCollectionSince.get() == null) {
                             ctx.addTo(counter);
                             ctx = newContext();
                             sampler = sampling.newSampler(estimator, tile);

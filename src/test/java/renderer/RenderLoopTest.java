@@ -118,11 +118,12 @@ class RenderLoopTest {
         assertThat(bands.cardinality()).isEqualTo(10);
     }
 
-    @Test
+    @ParameterizedTest(name = "{0} threads")
+    @ValueSource(ints = { 0, 2 })
     @DisplayName("collections during a render, after each of which every worker makes its records anew, change no pixel and no ray count")
-    void collectionsChangeNothing() throws InterruptedException {
+    void collectionsChangeNothing(int threads) throws InterruptedException {
         ImageWriter quiet = new ImageWriter("collections", 64, 48), collected = new ImageWriter("collections", 64, 48);
-        RenderStats expected = TestScenes.camera(TestScenes.everyEffect(), quiet).setMultithreading(2).build().render();
+        RenderStats expected = TestScenes.camera(TestScenes.everyEffect(), quiet).setMultithreading(threads).build().render();
         // Collections as often as the machine allows while the same render runs: each clears
         // the workers' weak reference, so that each worker makes its records anew at its next tile.
         AtomicInteger collections = new AtomicInteger();
@@ -136,7 +137,7 @@ class RenderLoopTest {
         collector.start();
         RenderStats stats;
         try {
-            stats = TestScenes.camera(TestScenes.everyEffect(), collected).setMultithreading(2).build().render();
+            stats = TestScenes.camera(TestScenes.everyEffect(), collected).setMultithreading(threads).build().render();
         } finally {
             rendering.set(false);
             collector.join();
