@@ -38,7 +38,11 @@ final class Vectorization {
      * walk from the first ray against scalar, 2 threads): the showcase (133 shapes) at 64 samples
      * a pixel 11.9 s against 8.9-9.3 s, the teapot (992 triangles) at 25 samples 3.4-4.0 s against
      * 2.2-2.4 s, the 137-primitive scene at 64 samples 9.9-14.2 s against 9.2 s; where most rays
-     * miss or hit a few large shapes, the scalar walk's early exits win.
+     * miss or hit a few large shapes, the scalar walk's early exits win. (Those figures included
+     * the slow runs of two workers' records on one cache line, see {@code RenderLoop}; measured
+     * again without them, fourth session of 2026-11-29: the showcase 1.045x, the 137-primitive
+     * scene 1.009x, the teapot at 25 samples a pixel 1.13x on JDK 25, at 64 samples 0.94x, which
+     * {@link #ASKED_MIN_PRIMITIVES} takes.)
      */
     static final int MIN_PRIMITIVES = 4096;
     /**
