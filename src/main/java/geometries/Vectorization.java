@@ -12,7 +12,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * camera rays or more ({@link Bvh#expectCameraRays}), or once a render has seconds of work left
  * and the walk runs compiled ({@link #COMPILED}, {@link Bvh#expectLongWalk}). A short render never
  * loads a vector class. (Until the fourth session of 2026-11-29 JDK 17-24 took it only with
- * {@code -Draytracer.simd=true}: about one long render in four to eight came out 1.1-1.5x slower
+ * {@code -Draytracer.simd=true}: about one long render in four to eight came out 1.2-1.7x slower
  * on it. The cause was two render workers' records put on one cache line by a garbage
  * collection, which {@code RenderLoop} now rules out; BENCHMARKS.md, issue 50.) Nothing is required
  * of anyone: {@code -Draytracer.simd=false} forces the scalar walk, {@code -Draytracer.simd=true}
@@ -50,8 +50,8 @@ final class Vectorization {
      * (a JVM that renders for long: a benchmark, a Spark executor). Such a JVM pays the walk's
      * compilation once, and then a tree of about a thousand triangles gains too: the teapot scene
      * (992 triangles, 2 threads, 64 samples a pixel, vector walk from the first ray against
-     * scalar, 5 pairs) 0.94 on JDK 25 and 0.88 on JDK 17; the walk alone, one thread, 1.13x
-     * Embree's time against 1.98x (BENCHMARKS.md, issue 50, fourth session of 2026-11-29). Not
+     * scalar, 5 pairs) 0.94 on JDK 25 and 0.88 on JDK 17; the walk alone, one thread, 1.11x
+     * Embree's time against 2.03x (BENCHMARKS.md, issue 50, fourth session of 2026-11-29). Not
      * below: the showcase (133 shapes) at 64 samples a pixel took 1.045x on it. A render that was
      * not asked keeps {@link #MIN_PRIMITIVES}: the teapot at 25 samples a pixel, in a fresh JVM,
      * took 1.13x on JDK 25 (the compilation is not won back).

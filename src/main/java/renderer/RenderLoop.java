@@ -269,7 +269,7 @@ final class RenderLoop {
                         // walk stacks and lanes) into shared regions, in whatever order it walks
                         // them: a record of this worker can land on a cache line with one of
                         // another's, and each write of one then takes the line from the other's
-                        // core. Where that happened, a whole render on the vector walk took 1.5-1.7x
+                        // core. Where that happened, a whole render on the vector walk took 1.2-1.7x
                         // its time (about one in four, at random; never once the collections stopped:
                         // BENCHMARKS.md, issue 50, fourth session of 2026-11-29). So after each
                         // collection the worker makes its records anew, in its own allocation
