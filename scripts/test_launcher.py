@@ -105,14 +105,16 @@ def test_the_users_options_come_after_the_launchers(tmp_path):
 
 
 @needs_jar
-@pytest.mark.parametrize("vector", ["", "1", "0"])
-def test_a_render_prints_no_incubator_warning_and_says_its_walk(tmp_path, vector):
+@pytest.mark.parametrize("vector, tier", [("", "4"), ("1", "4"), ("0", "4"), ("", ""), ("1", "")])
+def test_a_render_prints_no_incubator_warning_and_says_its_walk(tmp_path, vector, tier):
+    # A small render gets the quick tier alone (tier ""), and with it no module; the user's
+    # TieredStopAtLevel=4 (both tiers) leaves the module to RAYTRACER_VECTOR and the JDK.
     folder = project(tmp_path, with_jar=True)
     done = run(folder, str(ROOT / "scenes" / "two-colors.xml"), "--width=40", f"--output={tmp_path / 'x.png'}",
-               env={"RAYTRACER_VECTOR": vector})
+               env={"RAYTRACER_VECTOR": vector, "RAYTRACER_JAVA_OPTS": f"-XX:TieredStopAtLevel={tier}" if tier else ""})
     assert done.returncode == 0, done.stderr
     assert "incubator" not in done.stderr
-    module = vector == "1" or vector == "" and this_jdk()[1] == "jsa"  # by default before JDK 25
+    module = tier and (vector == "1" or vector == "" and this_jdk()[1] == "jsa")  # by default before JDK 25
     if module:  # where the JDK has it: a short render keeps the scalar walk
         assert "scalar walk (the vector walk is not compiled yet: a short render)" in done.stdout
     else:
@@ -206,3 +208,103 @@ def test_an_archive_that_cannot_be_made_is_said_once_and_not_tried_again(tmp_pat
     second = run(folder, "scene.xml", env={"JAVA_HOME": str(home)})
     assert second.stderr == "the JVM's own line\n"
     assert not any(a.startswith("-XX:SharedArchiveFile") for a in second.stdout.splitlines())
+
+
+def scene_file(folder: Path, body: str, name: str = "scene.xml") -> Path:
+    """A scene file holding `body` inside <scene>: only the tags the launcher's estimate reads."""
+    path = folder / name
+    path.write_text(f'<?xml version="1.0" encoding="UTF-8"?>\n<scene name="s">\n{body}\n</scene>\n')
+    return path
+
+
+CORES = len(os.sched_getaffinity(0))
+IMAGE = '<image name="s" width="600" height="600"/>'
+
+
+@pytest.mark.parametrize("body, args, quick", [
+    # 600x600 at one sample a pixel: 3.6x10^5 rays, a short render
+    (IMAGE, [], True),
+    ("", [], True),  # the format's default image, 500x500
+    (IMAGE + '<render><anti-aliasing mode="random" grid="4 4"/></render>', [], False),  # 5.8x10^6
+    (IMAGE + '<render><anti-aliasing mode="random"/></render>', ["--width", "300"], True),  # 300x300x16
+    (IMAGE + '<render><anti-aliasing mode="random"/></render>', ["--width=400", "--height=400"], False),
+    (IMAGE, ["--aa=random"], False),  # the file's grid, the format's 4x4
+    (IMAGE + '<render><anti-aliasing mode="adaptive" depth="3"/></render>', [], True),  # counted as 2 a pixel
+    ('<image width="1200" height="1200"/><render><anti-aliasing mode="adaptive"/></render>', [], False),
+    (IMAGE + '<render><anti-aliasing mode="corners"/></render>', [], True),  # 5 a pixel: 1.8x10^6
+    ('<image width="700" height="700"/><render><anti-aliasing mode="corners"/></render>', [], False),
+    (IMAGE + '<render><depth-of-field focal-distance="9" aperture="1"/></render>', [], False),  # 16 lens rays
+    (IMAGE + '<render><depth-of-field focal-distance="9" aperture="0"/></render>', [], True),  # a pinhole
+    # soft shadows: 16 shadow rays toward a light with a radius, for each hit
+    (IMAGE + '<lights><point-light color="1 1 1" position="0 0 0" radius="0.5"/></lights>', [], False),
+    (IMAGE + '<lights><point-light color="1 1 1" position="0 0 0" radius="0"/></lights>', [], True),
+    (IMAGE + '<render bvh="false"/>', [], False),  # every ray against every shape
+    # what the command line says wins over the file, and the file's comments are not read
+    ('<!-- <image width="6000" height="6000"/> a > b -->' + IMAGE, [], True),
+    ("<image\n   name='s'\n   width='3000'\n   height='3000'/>", [], False),  # quotes and lines as XML allows
+    (IMAGE, ["--aa", "RANDOM", "-q", "--output=x.png", "--seed", "3"], False),
+    # anything the launcher does not read: both tiers, as before it estimated
+    (IMAGE, ["--help"], False),
+    (IMAGE, ["--frames", "a.xml"], False),
+    ('<image width="six" height="600"/>', [], False),
+    (IMAGE + '<render><anti-aliasing mode="sideways"/></render>', [], False),
+])
+def test_a_short_render_that_keeps_every_core_busy_gets_the_quick_tier_alone(tmp_path, body, args, quick):
+    # The fake JVM prints the options it was given: -XX:TieredStopAtLevel=1 is the quick tier alone.
+    (tmp_path / "project").mkdir()
+    folder = project(tmp_path / "project", with_jar=False)
+    (folder / "target").mkdir()
+    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    home = fake_jdk(tmp_path, "17.0.12")
+    scene = scene_file(tmp_path, body)
+    done = run(folder, str(scene), *args, env={"JAVA_HOME": str(home), "RAYTRACER_JAVA_OPTS": "-Dmine=1"})
+    assert done.returncode == 3, done.stderr
+    given = done.stdout.splitlines()
+    assert ("-XX:TieredStopAtLevel=1" in given) == quick
+    assert given.index("-Dmine=1") == len(given) - 4 - len(args)  # the user's options still last, then -jar JAR SCENE
+
+
+@pytest.mark.parametrize("threads, quick", [(None, True), (str(CORES), True), ("-1", True), ("-2", True),
+                                            ("1", CORES == 1), ("0", CORES == 1)])
+def test_a_spare_core_keeps_both_tiers(tmp_path, threads, quick):
+    # With fewer render threads than cores, the optimizing compiler runs beside the render.
+    (tmp_path / "project").mkdir()
+    folder = project(tmp_path / "project", with_jar=False)
+    (folder / "target").mkdir()
+    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    home = fake_jdk(tmp_path, "17.0.12")
+    in_file = scene_file(tmp_path, IMAGE + (f'<render threads="{threads}"/>' if threads else ""), "file.xml")
+    on_line = scene_file(tmp_path, IMAGE, "line.xml")
+    for scene, args in [(in_file, []), (on_line, [f"--threads={threads}"] if threads else [])]:
+        done = run(folder, str(scene), *args, env={"JAVA_HOME": str(home)})
+        assert ("-XX:TieredStopAtLevel=1" in done.stdout.splitlines()) == quick, (scene.name, args)
+
+
+def test_without_a_scene_the_showcase_is_estimated_and_a_big_file_is_not_read(tmp_path):
+    (tmp_path / "project").mkdir()
+    folder = project(tmp_path / "project", with_jar=False)
+    (folder / "target").mkdir()
+    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    home = fake_jdk(tmp_path, "17.0.12")
+    env = {"JAVA_HOME": str(home)}
+    assert "-XX:TieredStopAtLevel=1" not in run(folder, env=env).stdout.splitlines()  # no scenes/ here
+    os.symlink(ROOT / "scenes", folder / "scenes")
+    assert "-XX:TieredStopAtLevel=1" in run(folder, env=env).stdout.splitlines()  # the built-in showcase
+    assert "-XX:TieredStopAtLevel=1" not in run(folder, "--width=3000", env=env).stdout.splitlines()
+    big = scene_file(tmp_path, IMAGE + "<!--" + "x" * (1 << 20) + "-->")
+    assert "-XX:TieredStopAtLevel=1" not in run(folder, str(big), env=env).stdout.splitlines()
+
+
+@needs_jar
+def test_the_quick_tier_renders_the_same_image_and_yields_to_the_users_choice(tmp_path):
+    folder = project(tmp_path, with_jar=True)
+    scene, args = str(ROOT / "scenes" / "two-colors.xml"), ["--width=60", "--quiet"]
+    quick = run(folder, scene, *args, f"--output={tmp_path / 'quick.png'}",
+                env={"RAYTRACER_JAVA_OPTS": "-XX:+PrintCommandLineFlags"})
+    both = run(folder, scene, *args, f"--output={tmp_path / 'both.png'}",
+               env={"RAYTRACER_JAVA_OPTS": "-XX:+PrintCommandLineFlags -XX:TieredStopAtLevel=4"})
+    assert quick.returncode == 0 and both.returncode == 0, quick.stderr + both.stderr
+    flags = quick.stdout + both.stdout
+    assert "-XX:TieredStopAtLevel=1 " in quick.stdout and "-XX:TieredStopAtLevel=4 " in both.stdout, flags
+    assert "TieredStopAtLevel=1" not in both.stdout  # the user's tier, alone
+    assert (tmp_path / "quick.png").read_bytes() == (tmp_path / "both.png").read_bytes()
