@@ -243,6 +243,7 @@ IMAGE = '<image name="s" width="600" height="600"/>'
     ('<!-- <image width="6000" height="6000"/> a > b -->' + IMAGE, [], True),
     ("<image\n   name='s'\n   width='3000'\n   height='3000'/>", [], False),  # quotes and lines as XML allows
     (IMAGE, ["--aa", "RANDOM", "-q", "--output=x.png", "--seed", "3"], False),
+    (IMAGE, ["-ox.png", "-o", "y.png", "--mesh-root", "/tmp", "--threads", "-1"], True),
     # anything the launcher does not read: both tiers, as before it estimated
     (IMAGE, ["--help"], False),
     (IMAGE, ["--frames", "a.xml"], False),
