@@ -125,6 +125,15 @@ def test_a_render_prints_no_incubator_warning_and_says_its_walk(tmp_path, vector
         assert "scalar walk (no jdk.incubator.vector)" in done.stdout
 
 
+def fake_project(tmp_path: Path) -> Path:
+    """A project folder in tmp_path/project: the launcher and an empty jar, for a fake JDK's java."""
+    (tmp_path / "project").mkdir()
+    folder = project(tmp_path / "project", with_jar=False)
+    (folder / "target").mkdir()
+    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    return folder
+
+
 def fake_jdk(tmp_path: Path, version: str, modules: str = "java.base") -> Path:
     """A JAVA_HOME whose release file names `version` and `modules`, and whose java prints its
     arguments, one a line, after the JVM's incubator warning on standard error."""
@@ -153,10 +162,7 @@ def fake_jdk(tmp_path: Path, version: str, modules: str = "java.base") -> Path:
 def test_the_vector_module_is_added_by_default_where_the_jdk_has_it_and_its_warning_dropped(
         tmp_path, version, asked, modules, vector):
     # "scene.xml" does not exist: the launcher cannot estimate it and keeps both tiers.
-    (tmp_path / "project").mkdir()
-    folder = project(tmp_path / "project", with_jar=False)
-    (folder / "target").mkdir()
-    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    folder = fake_project(tmp_path)
     home = fake_jdk(tmp_path, version, modules)
     suffix = "jsa"
     archive = startup(folder, home, suffix)
@@ -178,10 +184,7 @@ def test_the_ahead_of_time_cache_is_used_for_the_quick_tier_on_jdk_25_and_later_
     # file; the one-step cache (-XX:AOTCacheOutput) the launcher makes came with JDK 25. With both
     # tiers and the vector module, JDK 25's cache held no module graph and took longer than the
     # class-data archive: there the launcher takes the archive on every JDK.
-    (tmp_path / "project").mkdir()
-    folder = project(tmp_path / "project", with_jar=False)
-    (folder / "target").mkdir()
-    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    folder = fake_project(tmp_path)
     home = fake_jdk(tmp_path, version)  # no vector module: the archive's name has no "-vector"
     archive = startup(folder, home, "aot" if uses_cache else "jsa")
     archive.parent.mkdir()
@@ -206,10 +209,7 @@ def test_the_ahead_of_time_cache_is_used_for_the_quick_tier_on_jdk_25_and_later_
 def test_an_archive_that_cannot_be_made_is_said_once_and_not_tried_again(tmp_path):
     # The fake JVM fails the training render: one line, an empty file in its place, and the next
     # run neither tries again nor passes the empty file to the JVM.
-    (tmp_path / "project").mkdir()
-    folder = project(tmp_path / "project", with_jar=False)
-    (folder / "target").mkdir()
-    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    folder = fake_project(tmp_path)
     home = fake_jdk(tmp_path, "17.0.12")
     first = run(folder, "scene.xml", env={"JAVA_HOME": str(home)})
     lines = first.stderr.splitlines()
@@ -264,10 +264,7 @@ IMAGE = '<image name="s" width="600" height="600"/>'
 ])
 def test_a_short_render_that_keeps_every_core_busy_gets_the_quick_tier_alone(tmp_path, body, args, quick):
     # The fake JVM prints the options it was given: -XX:TieredStopAtLevel=1 is the quick tier alone.
-    (tmp_path / "project").mkdir()
-    folder = project(tmp_path / "project", with_jar=False)
-    (folder / "target").mkdir()
-    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    folder = fake_project(tmp_path)
     home = fake_jdk(tmp_path, "17.0.12")
     scene = scene_file(tmp_path, body)
     done = run(folder, str(scene), *args, env={"JAVA_HOME": str(home), "RAYTRACER_JAVA_OPTS": "-Dmine=1"})
@@ -281,10 +278,7 @@ def test_a_short_render_that_keeps_every_core_busy_gets_the_quick_tier_alone(tmp
                                             ("1", CORES == 1), ("0", CORES == 1)])
 def test_a_spare_core_keeps_both_tiers(tmp_path, threads, quick):
     # With fewer render threads than cores, the optimizing compiler runs beside the render.
-    (tmp_path / "project").mkdir()
-    folder = project(tmp_path / "project", with_jar=False)
-    (folder / "target").mkdir()
-    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    folder = fake_project(tmp_path)
     home = fake_jdk(tmp_path, "17.0.12")
     in_file = scene_file(tmp_path, IMAGE + (f'<render threads="{threads}"/>' if threads else ""), "file.xml")
     on_line = scene_file(tmp_path, IMAGE, "line.xml")
@@ -294,10 +288,7 @@ def test_a_spare_core_keeps_both_tiers(tmp_path, threads, quick):
 
 
 def test_without_a_scene_the_showcase_is_estimated_and_a_big_file_is_not_read(tmp_path):
-    (tmp_path / "project").mkdir()
-    folder = project(tmp_path / "project", with_jar=False)
-    (folder / "target").mkdir()
-    (folder / "target" / "raytracer.jar").write_bytes(b"")
+    folder = fake_project(tmp_path)
     home = fake_jdk(tmp_path, "17.0.12")
     env = {"JAVA_HOME": str(home)}
     assert "-XX:TieredStopAtLevel=1" not in run(folder, env=env).stdout.splitlines()  # no scenes/ here
