@@ -5,6 +5,7 @@ the fake-JDK cases; those are skipped without it."""
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import subprocess
 from pathlib import Path
@@ -42,9 +43,6 @@ def this_jdk() -> tuple[Path, str]:
     for a command with both tiers (--version, a large render)."""
     java = Path(os.environ["JAVA_HOME"]) / "bin" / "java" if os.environ.get("JAVA_HOME") else Path(shutil.which("java"))
     home = java.resolve().parent.parent
-    feature = int(next(line for line in (home / "release").read_text().splitlines()
-                       if line.startswith("JAVA_VERSION=")).split('"')[1].split(".")[0])
-    assert feature >= 17
     return home, "jsa"
 
 
@@ -312,3 +310,28 @@ def test_the_quick_tier_renders_the_same_image_and_yields_to_the_users_choice(tm
     assert "-XX:TieredStopAtLevel=1 " in quick.stdout and "-XX:TieredStopAtLevel=4 " in both.stdout, flags
     assert "TieredStopAtLevel=1" not in both.stdout  # the user's tier, alone
     assert (tmp_path / "quick.png").read_bytes() == (tmp_path / "both.png").read_bytes()
+
+
+@needs_jar
+def test_the_estimates_defaults_are_the_commands_own(tmp_path):
+    # The launcher's estimate assumes the scene format's defaults where a tag or attribute is
+    # missing (image size, grid, adaptive depth, shadow and lens samples). The command's summary
+    # line for a scene without those tags states its own: they must be the same numbers.
+    script = (ROOT / "raytracer").read_text()
+    assumed = dict(re.findall(r"\b(w|h|gx|gy|depth|shadows|lenses) = (\d+)", script[script.index("BEGIN {"):]))
+    scene = scene_file(tmp_path, '<geometries><sphere center="0 0 -50" radius="10"><material kd="0.5"/></sphere>'
+                                 '</geometries><camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="50"'
+                                 ' vp-distance="100"/><render><depth-of-field focal-distance="50" aperture="1"/>'
+                                 '</render>')
+    java = this_jdk()[0] / "bin" / "java"
+    lines = {}
+    for mode in ["NONE", "RANDOM", "ADAPTIVE"]:
+        done = subprocess.run([str(java), "-jar", str(JAR), str(scene), f"--aa={mode}",
+                               f"--output={tmp_path / 'x.png'}"], capture_output=True, text=True, timeout=120)
+        assert done.returncode == 0, done.stderr
+        lines[mode] = next(line for line in done.stdout.splitlines() if line.startswith("render s:") and "[" in line)
+    assert f" {assumed['w']}x{assumed['h']} [" in lines["NONE"]
+    assert f"x{assumed['lenses']}, " in lines["NONE"]  # the lens samples without anti-aliasing
+    assert f"shadow samples {assumed['shadows']}," in lines["NONE"]
+    assert f"RANDOM {assumed['gx']}x{assumed['gy']}," in lines["RANDOM"]
+    assert f"ADAPTIVE depth {assumed['depth']} " in lines["ADAPTIVE"]
