@@ -16,9 +16,15 @@ ROOT = Path(__file__).resolve().parent.parent
 JAR = ROOT / "target" / "raytracer.jar"
 
 
+INLINING = Path("scripts") / "quick-tier.compilecommands"
+
+
 def project(tmp_path: Path, with_jar: bool) -> Path:
-    """A folder holding a copy of the launcher and, if asked, a link to the built jar."""
+    """A folder holding a copy of the launcher and its quick tier's inlining list and, if asked, a
+    link to the built jar."""
     shutil.copy2(ROOT / "raytracer", tmp_path / "raytracer")
+    (tmp_path / "scripts").mkdir()
+    shutil.copy2(ROOT / INLINING, tmp_path / INLINING)
     if with_jar:
         (tmp_path / "target").mkdir()
         os.symlink(JAR, tmp_path / "target" / "raytracer.jar")
@@ -269,6 +275,7 @@ def test_a_short_render_that_keeps_every_core_busy_gets_the_quick_tier_alone(tmp
     assert done.returncode == 3, done.stderr
     given = done.stdout.splitlines()
     assert ("-XX:TieredStopAtLevel=1" in given) == quick
+    assert (f"-XX:CompileCommandFile={folder / INLINING}" in given) == quick  # its inlining, and only its
     assert given.index("-Dmine=1") == len(given) - 4 - len(args)  # the user's options still last, then -jar JAR SCENE
 
 
@@ -309,7 +316,18 @@ def test_the_quick_tier_renders_the_same_image_and_yields_to_the_users_choice(tm
     flags = quick.stdout + both.stdout
     assert "-XX:TieredStopAtLevel=1 " in quick.stdout and "-XX:TieredStopAtLevel=4 " in both.stdout, flags
     assert "TieredStopAtLevel=1" not in both.stdout  # the user's tier, alone
+    # the inlining list, taken without a word on standard output (its "quiet")
+    assert f"-XX:CompileCommandFile={folder / INLINING} " in quick.stdout, quick.stdout
+    assert "CompileCommand" not in both.stdout and len(quick.stdout.splitlines()) == 1, quick.stdout
     assert (tmp_path / "quick.png").read_bytes() == (tmp_path / "both.png").read_bytes()
+
+
+def test_without_its_inlining_list_the_quick_tier_still_runs(tmp_path):
+    folder = fake_project(tmp_path)
+    (folder / INLINING).unlink()
+    done = run(folder, str(scene_file(tmp_path, IMAGE)), env={"JAVA_HOME": str(fake_jdk(tmp_path, "17.0.12"))})
+    given = done.stdout.splitlines()
+    assert "-XX:TieredStopAtLevel=1" in given and not any("CompileCommand" in g for g in given), given
 
 
 @needs_jar
