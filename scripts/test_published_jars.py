@@ -3,8 +3,9 @@ the library, the vector walk's included (it is compiled from src/main/vector by 
 own, outside the Maven source roots the sources jar reads), and the Javadoc jar has the course's
 pages, not the engine's (public only for other packages of the library, marked @hidden), and each
 course page lists the course's members only, inherited ones included: no lean query, bounding box,
-library-class rule, doubles form or other engine member. Needs `mvn package`; skipped without the
-jars."""
+library-class rule, doubles form or other engine member. The runnable jar's picocli is compiled for
+Java 17 when a JDK 25 or later built it (pom.xml, profile jdk25-picocli), and is picocli's own jar
+(Java 5) otherwise. Needs `mvn package`; skipped without the jars."""
 from __future__ import annotations
 
 import re
@@ -23,6 +24,20 @@ def attached(classifier: str) -> Path | None:
 
 
 SOURCES, JAVADOC = attached("sources"), attached("javadoc")
+RUNNABLE = TARGET / "raytracer.jar"
+
+
+@pytest.mark.skipif(not RUNNABLE.exists(), reason="no runnable jar: run mvn package first")
+def test_the_runnable_jars_picocli_is_compiled_for_java_17_where_a_jdk_25_built_it():
+    """JDK 25's start-up cache cannot hold Java 5 class files; the same classes for Java 17 it can."""
+    with zipfile.ZipFile(RUNNABLE) as jar:
+        build = int(re.search(r"Build-Jdk-Spec: (\d+)", jar.read("META-INF/MANIFEST.MF").decode()).group(1))
+        classes = {n: jar.read(n) for n in jar.namelist() if n.startswith("picocli/") and n.endswith(".class")}
+    majors = {int.from_bytes(data[6:8], "big") for data in classes.values()}
+    assert majors == ({61} if build >= 25 else {49}), (build, majors)
+    assert {"picocli/CommandLine.class", "picocli/CommandLine$Model$CommandSpec.class",
+            "picocli/CommandLine$Help.class"} <= classes.keys()
+    assert len(classes) > 200  # all of picocli, not a part
 
 
 @pytest.mark.skipif(SOURCES is None, reason="no sources jar: run mvn package first")
