@@ -33,6 +33,9 @@ record ValueType<T>(String expected, Parser<T> parser) {
     private static final Pattern DECIMAL = Pattern.compile("[+-]?(?:\\d+(?:\\.\\d*)?|\\.\\d+)(?:[eE][+-]?\\d+)?");
     private static final Pattern INTEGER_TEXT = Pattern.compile("[+-]?\\d+");
     private static final Pattern NON_FINITE = Pattern.compile("[+-]?(?:nan|inf|infinity)", Pattern.CASE_INSENSITIVE);
+    // Compiled once: String.split with this regex compiles it at every call, a scene's every list
+    // of numbers (a vertex, a colour), which in a fresh JVM's interpreter is most of reading them.
+    private static final Pattern WHITE_SPACE = Pattern.compile("\\s+");
 
     static final ValueType<Double> NUMBER = new ValueType<>("a number", ValueType::number);
     /** Sizes, distances and exponents: at least {@link Limits#MIN_MAGNITUDE}. */
@@ -148,8 +151,10 @@ record ValueType<T>(String expected, Parser<T> parser) {
     static double number(String text) {
         String t = text.strip();
         if (t.isEmpty()) throw new IllegalArgumentException("the value is empty");
-        if (NON_FINITE.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not a finite number");
-        if (!DECIMAL.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not a number");
+        if (!DECIMAL.matcher(t).matches()) { // digits only: a non-finite word never matches it
+            if (NON_FINITE.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not a finite number");
+            throw new IllegalArgumentException("'" + t + "' is not a number");
+        }
         double d = Double.parseDouble(t); // locale-independent by specification
         if (!Double.isFinite(d)) throw new IllegalArgumentException("'" + t + "' is not a finite number (too large)");
         if (Math.abs(d) > Limits.MAX_MAGNITUDE)
@@ -190,7 +195,7 @@ record ValueType<T>(String expected, Parser<T> parser) {
 
     private static String[] tokens(String text, int min, int max) {
         String t = text.strip();
-        String[] tokens = t.isEmpty() ? new String[0] : t.split("\\s+");
+        String[] tokens = t.isEmpty() ? new String[0] : WHITE_SPACE.split(t);
         if (tokens.length < min || tokens.length > max || (tokens.length > min && tokens.length < max))
             throw new IllegalArgumentException("found " + tokens.length + (tokens.length == 1 ? " value" : " values")
                     + " where " + (min == max ? String.valueOf(min) : min + " or " + max) + " are needed");
