@@ -33,8 +33,9 @@ record ValueType<T>(String expected, Parser<T> parser) {
     private static final Pattern DECIMAL = Pattern.compile("[+-]?(?:\\d+(?:\\.\\d*)?|\\.\\d+)(?:[eE][+-]?\\d+)?");
     private static final Pattern INTEGER_TEXT = Pattern.compile("[+-]?\\d+");
     private static final Pattern NON_FINITE = Pattern.compile("[+-]?(?:nan|inf|infinity)", Pattern.CASE_INSENSITIVE);
-    // Compiled once: String.split with this regex compiles it at every call, a scene's every list
-    // of numbers (a vertex, a colour), which in a fresh JVM's interpreter is most of reading them.
+    // Compiled once: String.split with this regex compiles it at every call, for each list of
+    // numbers of a scene (a vertex, a colour), in a fresh JVM's interpreter (an 8x8 launch of a
+    // 137-primitive scene took 0.963 of the time without that; BENCHMARKS.md, issue 50).
     private static final Pattern WHITE_SPACE = Pattern.compile("\\s+");
 
     static final ValueType<Double> NUMBER = new ValueType<>("a number", ValueType::number);
