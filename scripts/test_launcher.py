@@ -44,12 +44,11 @@ def startup(folder: Path, home: Path, suffix: str) -> Path:
     return folder / "target" / "startup" / f"raytracer-{key}.{suffix}"
 
 
-def this_jdk() -> tuple[Path, str]:
-    """The JDK the launcher runs here (JAVA_HOME or java on the PATH) and the suffix of its archive
-    for a command with both tiers (--version, a large render)."""
+def this_jdk() -> Path:
+    """The JDK the launcher runs here (JAVA_HOME or java on the PATH). A command with both tiers
+    (--version, a large render) takes a class-data archive (jsa) on it, whatever its version."""
     java = Path(os.environ["JAVA_HOME"]) / "bin" / "java" if os.environ.get("JAVA_HOME") else Path(shutil.which("java"))
-    home = java.resolve().parent.parent
-    return home, "jsa"
+    return java.resolve().parent.parent
 
 
 def run(folder: Path, *args: str, env: dict | None = None) -> subprocess.CompletedProcess:
@@ -76,7 +75,7 @@ def test_it_runs_the_command_line_with_its_arguments(tmp_path):
 @needs_jar
 def test_the_first_run_makes_the_start_up_archive_and_the_next_runs_use_it(tmp_path):
     folder = project(tmp_path, with_jar=True)
-    archive = startup(folder, *this_jdk())
+    archive = startup(folder, this_jdk(), "jsa")
     first = run(folder, "--version")
     assert first.returncode == 0, first.stderr
     assert first.stderr == f"raytracer: making the start-up archive for this JDK and jar (once, a few seconds): {archive}\n"
@@ -94,7 +93,7 @@ def test_the_first_run_makes_the_start_up_archive_and_the_next_runs_use_it(tmp_p
 @needs_jar
 def test_an_archive_that_does_not_fit_is_ignored_without_a_word(tmp_path):
     folder = project(tmp_path, with_jar=True)
-    archive = startup(folder, *this_jdk())
+    archive = startup(folder, this_jdk(), "jsa")
     archive.parent.mkdir(parents=True)
     archive.write_bytes(b"not an archive")
     done = run(folder, "--version")
@@ -341,7 +340,7 @@ def test_the_estimates_defaults_are_the_commands_own(tmp_path):
                                  '</geometries><camera location="0 0 0" direction="0 0 -1" up="0 1 0" vp-size="50"'
                                  ' vp-distance="100"/><render><depth-of-field focal-distance="50" aperture="1"/>'
                                  '</render>')
-    java = this_jdk()[0] / "bin" / "java"
+    java = this_jdk() / "bin" / "java"
     lines = {}
     for mode in ["NONE", "RANDOM", "ADAPTIVE"]:
         done = subprocess.run([str(java), "-jar", str(JAR), str(scene), f"--aa={mode}",
