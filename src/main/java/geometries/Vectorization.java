@@ -130,8 +130,9 @@ final class Vectorization {
     static String describe() {
         if (!AVAILABLE) return "scalar walk (" + WHY_NOT + ")";
         // Both causes in one line: telling them apart would load java.management (35-45 ms) for a
-        // summary line; a long render with the optimizing compiler has the walk compiled.
-        if (!COMPILED.get()) return "scalar walk (the vector walk is not compiled: a short render, or no optimizing JIT compiler)";
+        // summary line; a long render with the optimizing compiler has the walk compiled. No
+        // comma: the summary line's last comma ends the words before the walk's.
+        if (!COMPILED.get()) return "scalar walk (the vector walk is not compiled: a short render or a JVM without the optimizing compiler)";
         WideWalk walk = walk();
         return walk != null ? walk.description() : "scalar walk (" + Loaded.WHY_NOT + ")";
     }
