@@ -7,9 +7,9 @@ import java.util.concurrent.Callable;
 
 import app.migrate.Migration;
 import app.migrate.MigrationException;
-import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
-import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Model.OptionSpec;
+import picocli.CommandLine.Model.PositionalParamSpec;
 
 /**
  * {@code raytracer migrate DIR}: a course project onto the library (see {@link Migration}). Exit
@@ -17,51 +17,69 @@ import picocli.CommandLine.Parameters;
  * does not compile as it is, read-only, an earlier backup in the way, uncommitted git changes),
  * 1 failed part-way and taken back.
  */
-@Command(name = "migrate", mixinStandardHelpOptions = true, sortOptions = false, usageHelpAutoWidth = true,
-        description = { "Moves a course project (an IntelliJ module with src/ and unittests/, an Eclipse, plain or Maven"
-                + " project) onto the library, with nothing lost: the course classes the library provides go to"
-                + " DIR/course-backup/, your own classes stay, a pom.xml builds the project where it stands, and"
-                + " every test that does not compile against the library is left out of the build with its reason.",
-                "Nothing is deleted; --undo takes the whole migration back." },
-        exitCodeListHeading = "%nExit codes:%n",
-        exitCodeList = { "0:migrated, or already migrated (nothing changed)",
-                "2:refused before anything changed (the reason in one line)",
-                "1:failed part-way and taken back (nothing changed)" })
 final class MigrateCommand implements Callable<Integer> {
-    @Parameters(paramLabel = "DIR", description = "The course project's folder (the one with src/ or pom.xml).")
-    private String dir; // turned into a Path here, where a name this locale cannot hold is said in the command's words
-
-    @Option(names = "--undo", description = "Take back the migration of DIR, as course-backup/migrate-manifest.tsv records it"
-            + " (refused when a file changed since).")
-    private boolean undo;
-
-    @Option(names = "--dry-run", description = "Print the summary and the exact change, as a unified diff (paths relative"
-            + " to DIR; git apply takes it); change nothing.")
-    private boolean dryRun;
-
-    @Option(names = "--allow-dirty", description = "Migrate a git folder that has uncommitted changes.")
-    private boolean allowDirty;
-
-    @Option(names = "--encoding", paramLabel = "CHARSET", description = "The sources' character encoding (windows-1255,"
-            + " ISO-8859-1, UTF-8); by default as the project states it (pom, .idea/encodings.xml, Eclipse settings),"
-            + " else detected. It is written into the pom.")
-    private String encoding;
+    private static final String DIR = "DIR", UNDO = "--undo", DRY_RUN = "--dry-run", ALLOW_DIRTY = "--allow-dirty",
+            ENCODING = "--encoding";
 
     private final PrintStream out;
     private final PrintStream err;
 
+    private final CommandSpec spec;
+
     MigrateCommand(PrintStream out, PrintStream err) {
         this.out = out;
         this.err = err;
+        this.spec = model(this);
+    }
+
+    /** The subcommand's model for picocli, built as {@link RenderCommand}'s is (see there for why). */
+    private static CommandSpec model(MigrateCommand command) {
+        CommandSpec spec = CommandSpec.wrapWithoutInspection(command).name("migrate");
+        spec.usageMessage().sortOptions(false).autoWidth(true)
+                .description("Moves a course project (an IntelliJ module with src/ and unittests/, an Eclipse, plain or"
+                        + " Maven project) onto the library, with nothing lost: the course classes the library provides go"
+                        + " to DIR/course-backup/, your own classes stay, a pom.xml builds the project where it stands, and"
+                        + " every test that does not compile against the library is left out of the build with its reason.",
+                        "Nothing is deleted; --undo takes the whole migration back.")
+                .exitCodeListHeading("%nExit codes:%n")
+                .exitCodeList(RenderCommand.exitCodes("0", "migrated, or already migrated (nothing changed)",
+                        "2", "refused before anything changed (the reason in one line)",
+                        "1", "failed part-way and taken back (nothing changed)"));
+        // The folder as a string: it becomes a Path in call(), where a name this locale cannot hold
+        // is said in the command's words.
+        spec.addPositional(PositionalParamSpec.builder().index("0").arity("1").required(true).paramLabel(DIR).type(String.class)
+                .description("The course project's folder (the one with src/ or pom.xml).").build());
+        spec.addOption(flag(UNDO, "Take back the migration of DIR, as course-backup/migrate-manifest.tsv records it"
+                + " (refused when a file changed since)."));
+        spec.addOption(flag(DRY_RUN, "Print the summary and the exact change, as a unified diff (paths relative to DIR;"
+                + " git apply takes it); change nothing."));
+        spec.addOption(flag(ALLOW_DIRTY, "Migrate a git folder that has uncommitted changes."));
+        spec.addOption(OptionSpec.builder(ENCODING).type(String.class).paramLabel("CHARSET").description("The sources'"
+                + " character encoding (windows-1255, ISO-8859-1, UTF-8); by default as the project states it (pom,"
+                + " .idea/encodings.xml, Eclipse settings), else detected. It is written into the pom.").build());
+        RenderCommand.addHelpOptions(spec);
+        return spec;
+    }
+
+    private static OptionSpec flag(String name, String description) {
+        return OptionSpec.builder(name).type(boolean.class).description(description).build();
+    }
+
+    CommandSpec spec() {
+        return spec;
+    }
+
+    private boolean set(String flag) {
+        return Boolean.TRUE.equals(RenderCommand.value(spec, flag));
     }
 
     @Override
     public Integer call() {
         try {
             Migration migration = Migration.ofThisProcess(out, err);
-            Path folder = Path.of(dir);
-            if (undo) migration.undo(folder);
-            else migration.migrate(folder, allowDirty, dryRun, encoding);
+            Path folder = Path.of(RenderCommand.<String>value(spec, DIR));
+            if (set(UNDO)) migration.undo(folder);
+            else migration.migrate(folder, set(ALLOW_DIRTY), set(DRY_RUN), RenderCommand.value(spec, ENCODING));
             return 0;
         } catch (MigrationException e) {
             err.println(RenderCommand.NAME + " migrate: " + e.getMessage());

@@ -8,19 +8,19 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
 import java.util.Optional;
 import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
 
 import picocli.CommandLine;
-import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Option;
+import picocli.CommandLine.Model.OptionSpec;
+import picocli.CommandLine.Model.PositionalParamSpec;
 import picocli.CommandLine.ParameterException;
-import picocli.CommandLine.Parameters;
-import picocli.CommandLine.Spec;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
@@ -44,15 +44,6 @@ import scene.samples.Showcase;
  * error or an invalid scene file). Bad input, a failed write and an image too large for the memory
  * are each reported in one line on the error stream, not as a stack trace, and leave no image.
  */
-@Command(name = "java -jar raytracer.jar", mixinStandardHelpOptions = true, versionProvider = RenderCommand.Version.class,
-        sortOptions = false, usageHelpAutoWidth = true,
-        description = {
-                "Renders a scene file into a PNG image. The scene format is described in docs/scene-format.md.",
-                "Without a scene, renders the built-in showcase (600x600, adaptive anti-aliasing) into images/showcase.png." },
-        exitCodeListHeading = "%nExit codes:%n",
-        exitCodeList = { "0:the image was written",
-                "1:the render or the writing failed (e.g. not enough memory for the image)",
-                "2:bad input: a usage error or an invalid scene file (nothing is written)" })
 public final class RenderCommand implements Callable<Integer> {
     /** Exit code of a render or write failure. */
     public static final int FAILURE = 1;
@@ -94,63 +85,25 @@ public final class RenderCommand implements Callable<Integer> {
         return String.format(Locale.ROOT, "%.0e", d).replace("e+0", "e").replace("e-0", "e-");
     }
 
-    @Parameters(arity = "0..1", paramLabel = "SCENE",
-            description = "The scene file (XML). Default: the built-in showcase.")
+    /*
+     * The options' values, set from the parse at the start of call(). The model that declares them
+     * is model(): picocli's programmatic API rather than its annotations (see there for why).
+     */
     private Path scene;
-
-    @Option(names = { "-o", "--output" }, paramLabel = "FILE",
-            description = "The PNG file to write. Default: images/<image name>.png.")
     private Path output;
-
-    @Option(names = "--width", paramLabel = "N",
-            description = "Image width in pixels. Given alone, the height follows the file's aspect ratio.")
     private Integer width;
-
-    @Option(names = "--height", paramLabel = "N",
-            description = "Image height in pixels. Given alone, the width follows the file's aspect ratio.")
     private Integer height;
-
-    @Option(names = "--threads", paramLabel = "N",
-            description = "Render threads: N > 0 worker threads (at most " + Camera.MAX_THREADS_PER_CORE
-                    + " per core), 0 the calling thread, -1 or -2 all cores. Default: the file's, else all cores.")
     private Integer threads;
-
-    @Option(names = "--aa", paramLabel = "MODE",
-            description = "Anti-aliasing: ${COMPLETION-CANDIDATES} (case-insensitive); the parameters stay the file's. Default: the file's, else NONE.")
     private AntiAliasing antiAliasing;
-
-    @Option(names = "--seed", paramLabel = "N",
-            description = "The seed of every random number of the render. Default: the file's, else 0.")
     private Long seed;
-
-    @Option(names = { "-q", "--quiet" }, description = "Print nothing but errors.")
     private boolean quiet;
-
-    @Option(names = "--mesh-root", paramLabel = "DIR",
-            description = { "The folder a scene file's meshes may be read from, sub-folders included. Default: the"
-                    + " scene file's own folder: a mesh path outside it (absolute, '../', a link leading out) or"
-                    + " without the .obj extension is refused unread." })
     private Path meshRoot;
-
     // ===== Spark: more scene files as frames, one option, and a branch into app.spark =====
-    @Parameters(index = "1..*", arity = "0..*", paramLabel = "MORE",
-            description = "With --spark: more scene files, rendered as the frames of one Spark job (one PNG each).")
     private List<Path> frames = new ArrayList<>();
-
-    @Option(names = "--spark", paramLabel = "MASTER",
-            description = { "Render on Apache Spark, byte-identical to the local render: MASTER is a Spark master URL"
-                    + " (local[2], spark://HOST:7077, yarn, k8s://...) or 'submit' for the --master of spark-submit.",
-                    "Needs the command line built with Spark (mvn -Pspark package) and Spark on the class path"
-                            + " (the 'spark' Maven profile or spark-submit; see docs/spark.md).",
-                    "A cluster master needs the runnable jar: under spark-submit, or with java -cp target/raytracer.jar"
-                            + " and Spark's jars (the command ships the jar); from the Maven profile's class folders"
-                            + " only local[N] runs, and a cluster master is refused at once." })
     private String spark;
     // ===== end Spark =====
 
-    @Spec
-    private CommandSpec spec;
-
+    private final CommandSpec spec;
     private final PrintStream out;
     private final PrintStream err;
     private final boolean terminal;
@@ -164,6 +117,98 @@ public final class RenderCommand implements Callable<Integer> {
         this.out = out;
         this.err = err;
         this.terminal = terminal;
+        this.spec = model(this);
+    }
+
+    /*
+     * The options' names, each written once: the model declares them, call() reads their values
+     * back by them.
+     */
+    private static final String SCENE = "SCENE", OUTPUT = "--output", WIDTH = "--width", HEIGHT = "--height",
+            THREADS = "--threads", AA = "--aa", SEED = "--seed", QUIET = "--quiet", MESH_ROOT = "--mesh-root",
+            MORE = "MORE", SPARK = "--spark";
+
+    /**
+     * The command's model for picocli, built with its programmatic API. Its annotations would say
+     * the same, but a fresh JVM reads annotations by reflection and makes a proxy class for each
+     * annotation type it meets (picocli's own and their meta-annotations): 50-70 ms of every launch
+     * on JDK 17 and 25, before the first line of the scene file is read, a twentieth of a
+     * one-second render (BENCHMARKS.md, issue 50, eighth session of 2026-11-29). Nothing here is
+     * read by reflection: call() takes the values from the parse.
+     */
+    private static CommandSpec model(RenderCommand command) {
+        CommandSpec spec = CommandSpec.wrapWithoutInspection(command).name("java -jar raytracer.jar")
+                .versionProvider(new Version());
+        spec.usageMessage().sortOptions(false).autoWidth(true)
+                .description("Renders a scene file into a PNG image. The scene format is described in docs/scene-format.md.",
+                        "Without a scene, renders the built-in showcase (600x600, adaptive anti-aliasing) into images/showcase.png.")
+                .exitCodeListHeading("%nExit codes:%n")
+                .exitCodeList(exitCodes("0", "the image was written",
+                        "1", "the render or the writing failed (e.g. not enough memory for the image)",
+                        "2", "bad input: a usage error or an invalid scene file (nothing is written)"));
+        spec.addPositional(PositionalParamSpec.builder().index("0").arity("0..1").paramLabel(SCENE).type(Path.class)
+                .description("The scene file (XML). Default: the built-in showcase.").build());
+        spec.addOption(option(OUTPUT, Path.class, "FILE", "The PNG file to write. Default: images/<image name>.png.")
+                .names("-o", OUTPUT).build());
+        spec.addOption(option(WIDTH, Integer.class, "N",
+                "Image width in pixels. Given alone, the height follows the file's aspect ratio.").build());
+        spec.addOption(option(HEIGHT, Integer.class, "N",
+                "Image height in pixels. Given alone, the width follows the file's aspect ratio.").build());
+        spec.addOption(option(THREADS, Integer.class, "N", "Render threads: N > 0 worker threads (at most "
+                + Camera.MAX_THREADS_PER_CORE + " per core), 0 the calling thread, -1 or -2 all cores. Default: the file's,"
+                + " else all cores.").build());
+        spec.addOption(option(AA, AntiAliasing.class, "MODE", "Anti-aliasing: ${COMPLETION-CANDIDATES} (case-insensitive);"
+                + " the parameters stay the file's. Default: the file's, else NONE.").build());
+        spec.addOption(option(SEED, Long.class, "N",
+                "The seed of every random number of the render. Default: the file's, else 0.").build());
+        spec.addOption(OptionSpec.builder("-q", QUIET).type(boolean.class).description("Print nothing but errors.").build());
+        spec.addOption(option(MESH_ROOT, Path.class, "DIR", "The folder a scene file's meshes may be read from,"
+                + " sub-folders included. Default: the scene file's own folder: a mesh path outside it (absolute, '../',"
+                + " a link leading out) or without the .obj extension is refused unread.").build());
+        // ===== Spark =====
+        spec.addPositional(PositionalParamSpec.builder().index("1..*").arity("0..*").paramLabel(MORE).type(List.class)
+                .auxiliaryTypes(Path.class).description("With --spark: more scene files, rendered as the frames of one"
+                        + " Spark job (one PNG each).").build());
+        spec.addOption(OptionSpec.builder(SPARK).type(String.class).paramLabel("MASTER").description(
+                "Render on Apache Spark, byte-identical to the local render: MASTER is a Spark master URL (local[2],"
+                        + " spark://HOST:7077, yarn, k8s://...) or 'submit' for the --master of spark-submit.",
+                "Needs the command line built with Spark (mvn -Pspark package) and Spark on the class path (the 'spark'"
+                        + " Maven profile or spark-submit; see docs/spark.md).",
+                "A cluster master needs the runnable jar: under spark-submit, or with java -cp target/raytracer.jar and"
+                        + " Spark's jars (the command ships the jar); from the Maven profile's class folders only local[N]"
+                        + " runs, and a cluster master is refused at once.").build());
+        // ===== end Spark =====
+        addHelpOptions(spec);
+        return spec;
+    }
+
+    /** An option of one value: its one name, type, label and description. */
+    private static OptionSpec.Builder option(String name, Class<?> type, String label, String description) {
+        return OptionSpec.builder(name).type(type).paramLabel(label).description(description);
+    }
+
+    /** {@code -h/--help} and {@code -V/--version}, as picocli's standard help options word them. */
+    static void addHelpOptions(CommandSpec spec) {
+        spec.addOption(OptionSpec.builder("-h", "--help").usageHelp(true).description("Show this help message and exit.").build());
+        spec.addOption(OptionSpec.builder("-V", "--version").versionHelp(true)
+                .description("Print version information and exit.").build());
+    }
+
+    /** Exit codes and their meanings, in the order given: code, meaning, code, meaning... */
+    static Map<String, String> exitCodes(String... codesAndMeanings) {
+        Map<String, String> codes = new LinkedHashMap<>();
+        for (int i = 0; i < codesAndMeanings.length; i += 2) codes.put(codesAndMeanings[i], codesAndMeanings[i + 1]);
+        return codes;
+    }
+
+    /** The parsed value of the option or positional parameter {@code name}, null when not given. */
+    @SuppressWarnings("unchecked")
+    static <T> T value(CommandSpec spec, String name) {
+        OptionSpec option = spec.findOption(name);
+        if (option != null) return (T) option.getValue();
+        for (PositionalParamSpec p : spec.positionalParameters())
+            if (p.paramLabel().equals(name)) return (T) p.getValue();
+        throw new IllegalArgumentException("no option or parameter " + name);
     }
 
     /**
@@ -178,8 +223,8 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** The command line, with its streams, ready to {@code execute}. */
     static CommandLine commandLine(PrintStream out, PrintStream err, boolean terminal) {
-        CommandLine cl = new CommandLine(new RenderCommand(out, err, terminal));
-        cl.addSubcommand("migrate", new MigrateCommand(out, err));
+        CommandLine cl = new CommandLine(new RenderCommand(out, err, terminal).spec);
+        cl.addSubcommand("migrate", new CommandLine(new MigrateCommand(out, err).spec()));
         cl.getCommandSpec().usageMessage().footerHeading("%nLimits (docs/scene-format.md, \"Limits\"):%n").footer(LIMITS);
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         cl.setOut(new PrintWriter(out, true, StandardCharsets.UTF_8));
@@ -215,6 +260,7 @@ public final class RenderCommand implements Callable<Integer> {
     @Override
     public Integer call() {
         long start = System.nanoTime();
+        readOptions();
         checkOptions();
         if (spark != null || !frames.isEmpty()) return spark();
         Job job;
@@ -325,6 +371,22 @@ public final class RenderCommand implements Callable<Integer> {
         } finally {
             if (bar != null) bar.finish();
         }
+    }
+
+    /** The options' values from the parse (null where an option was not given). */
+    private void readOptions() {
+        scene = value(spec, SCENE);
+        output = value(spec, OUTPUT);
+        width = value(spec, WIDTH);
+        height = value(spec, HEIGHT);
+        threads = value(spec, THREADS);
+        antiAliasing = value(spec, AA);
+        seed = value(spec, SEED);
+        quiet = Boolean.TRUE.equals(value(spec, QUIET));
+        meshRoot = value(spec, MESH_ROOT);
+        List<Path> more = value(spec, MORE);
+        frames = more != null ? more : List.of();
+        spark = value(spec, SPARK);
     }
 
     /** Option values that picocli's types do not already rule out. */
