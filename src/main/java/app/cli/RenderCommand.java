@@ -17,9 +17,11 @@ import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
 
 import picocli.CommandLine;
+import picocli.CommandLine.Help;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Model.PositionalParamSpec;
+import picocli.CommandLine.Model.UsageMessageSpec;
 import picocli.CommandLine.ParameterException;
 import primitives.Vector;
 import renderer.AntiAliasing;
@@ -58,27 +60,32 @@ public final class RenderCommand implements Callable<Integer> {
 
     /**
      * The stated limits, for --help: each is refused with a message that names it. Each line fits
-     * picocli's 80 columns (a longer one wraps to column 0, out of the table).
+     * picocli's 80 columns (a longer one wraps to column 0, out of the table). Made when the help
+     * is written, not with the class: their string concatenations and String.format were the
+     * first of the process, and on JDK 17 the first of each starts the JVM's machinery for it,
+     * which a render with --quiet never needs otherwise.
      */
-    private static final String[] LIMITS = {
-            "  threads            at most " + Camera.MAX_THREADS_PER_CORE + " per core (" + Camera.maxThreads() + " here)",
-            "  samples per pixel  at most " + Camera.MAX_SAMPLES_PER_PIXEL + " (RANDOM grid, depth-of-field samples)",
-            "  rays per pixel     at most " + RenderSettings.MAX_RAYS_PER_PIXEL + ": samples per pixel",
-            "                     (grid, adaptive, lens) x (1 + 2 x beam-size)",
-            "                     x (1 + shadow-samples x lights with a radius",
-            "                     + other lights); deeper bounces counted as traced",
-            "  image              at most " + RenderSettings.MAX_PIXELS + " pixels, written to images/<name>.png:",
-            "                     a name of at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH + " characters, no / \\ : ..",
-            "                     and no control, invisible or space-like character",
-            "                     other than the space (U+202E, U+3164, U+00A0...)",
-            "  scene file         at most " + Limits.MAX_SCENE_BYTES + " bytes, elements nested at most "
-                    + Limits.MAX_NESTING_DEPTH + " deep,",
-            "                     numbers at most " + magnitude(Limits.MAX_MAGNITUDE) + " in magnitude,",
-            "                     sizes and factors 0 or at least " + magnitude(Limits.MIN_MAGNITUDE),
-            "  OBJ file           a regular .obj file inside the scene file's folder",
-            "                     (or --mesh-root), of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
-            "                     lines of at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters",
-            "  memory             what does not fit in Java's heap (-Xmx) fails at once" };
+    private static String[] limits() {
+        return new String[] {
+                "  threads            at most " + Camera.MAX_THREADS_PER_CORE + " per core (" + Camera.maxThreads() + " here)",
+                "  samples per pixel  at most " + Camera.MAX_SAMPLES_PER_PIXEL + " (RANDOM grid, depth-of-field samples)",
+                "  rays per pixel     at most " + RenderSettings.MAX_RAYS_PER_PIXEL + ": samples per pixel",
+                "                     (grid, adaptive, lens) x (1 + 2 x beam-size)",
+                "                     x (1 + shadow-samples x lights with a radius",
+                "                     + other lights); deeper bounces counted as traced",
+                "  image              at most " + RenderSettings.MAX_PIXELS + " pixels, written to images/<name>.png:",
+                "                     a name of at most " + RenderSettings.MAX_IMAGE_NAME_LENGTH + " characters, no / \\ : ..",
+                "                     and no control, invisible or space-like character",
+                "                     other than the space (U+202E, U+3164, U+00A0...)",
+                "  scene file         at most " + Limits.MAX_SCENE_BYTES + " bytes, elements nested at most "
+                        + Limits.MAX_NESTING_DEPTH + " deep,",
+                "                     numbers at most " + magnitude(Limits.MAX_MAGNITUDE) + " in magnitude,",
+                "                     sizes and factors 0 or at least " + magnitude(Limits.MIN_MAGNITUDE),
+                "  OBJ file           a regular .obj file inside the scene file's folder",
+                "                     (or --mesh-root), of at most " + Limits.MAX_OBJ_BYTES + " bytes, streamed,",
+                "                     lines of at most " + Limits.MAX_OBJ_LINE_LENGTH + " characters",
+                "  memory             what does not fit in Java's heap (-Xmx) fails at once" };
+    }
 
     /** 1e9 rather than 1.0E9. */
     private static String magnitude(double d) {
@@ -225,7 +232,10 @@ public final class RenderCommand implements Callable<Integer> {
     static CommandLine commandLine(PrintStream out, PrintStream err, boolean terminal) {
         CommandLine cl = new CommandLine(new RenderCommand(out, err, terminal).spec);
         cl.addSubcommand("migrate", new CommandLine(new MigrateCommand(out, err).spec()));
-        cl.getCommandSpec().usageMessage().footerHeading("%nLimits (docs/scene-format.md, \"Limits\"):%n").footer(LIMITS);
+        UsageMessageSpec usage = cl.getCommandSpec().usageMessage().footerHeading("%nLimits (docs/scene-format.md, \"Limits\"):%n");
+        // The footer as picocli writes one (Help.footer), its lines made only then (see limits()).
+        usage.sectionMap().put(UsageMessageSpec.SECTION_KEY_FOOTER, help -> Help.join(help.ansi(), usage.width(),
+                usage.adjustLineBreaksForWideCJKCharacters(), limits(), new StringBuilder()).toString());
         cl.setCaseInsensitiveEnumValuesAllowed(true);
         cl.setOut(new PrintWriter(out, true, StandardCharsets.UTF_8));
         cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
