@@ -6,6 +6,7 @@ import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
@@ -23,6 +24,7 @@ import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Model.PositionalParamSpec;
 import picocli.CommandLine.Model.UsageMessageSpec;
 import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.TypeConversionException;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
@@ -189,6 +191,19 @@ public final class RenderCommand implements Callable<Integer> {
         return spec;
     }
 
+    /**
+     * A file name as picocli's own Path converter reads it, word for word in its message too; that
+     * converter calls Paths.get by reflection, whose first call took JDK 25 about 8 ms of every
+     * launch to set up.
+     */
+    private static Path path(String name) {
+        try {
+            return Path.of(name);
+        } catch (InvalidPathException e) {
+            throw new TypeConversionException("cannot convert '" + name + "' to " + Path.class + " (" + e + ")");
+        }
+    }
+
     /** An option of one value: its one name, type, label and description. */
     private static OptionSpec.Builder option(String name, Class<?> type, String label, String description) {
         return OptionSpec.builder(name).type(type).paramLabel(label).description(description);
@@ -237,6 +252,7 @@ public final class RenderCommand implements Callable<Integer> {
         usage.sectionMap().put(UsageMessageSpec.SECTION_KEY_FOOTER, help -> Help.join(help.ansi(), usage.width(),
                 usage.adjustLineBreaksForWideCJKCharacters(), limits(), new StringBuilder()).toString());
         cl.setCaseInsensitiveEnumValuesAllowed(true);
+        cl.registerConverter(Path.class, RenderCommand::path);
         cl.setOut(new PrintWriter(out, true, StandardCharsets.UTF_8));
         cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
         cl.setParameterExceptionHandler((e, args) -> {

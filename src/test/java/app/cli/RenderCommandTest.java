@@ -32,6 +32,7 @@ import renderer.AntiAliasing;
 import renderer.Camera;
 import renderer.ImageWriter;
 import renderer.RayTracerBasic;
+import scene.io.Messages;
 import scene.samples.Showcase;
 
 /**
@@ -157,6 +158,24 @@ class RenderCommandTest {
             assertThat(run("--width", "50000", "--height", "50000").errLines().get(0)).isEqualTo(
                     "raytracer: --width/--height: image size 50000x50000 is 2500000000 pixels, more than an image can hold"
                             + " (2147483639)");
+        }
+
+        /**
+         * A name no file can have (a NUL; only an in-process run can pass one): picocli's own
+         * words for a value its Path converter refuses, which the command's converter keeps.
+         */
+        @ParameterizedTest(name = "{0}")
+        @ValueSource(strings = { "-o", "--mesh-root", "SCENE" })
+        @DisplayName("a file name Java cannot hold is a usage error in picocli's words")
+        void unholdableFileName(String option) {
+            String name = "a\0b.png";
+            Run r = option.equals("SCENE") ? run(name) : run(option, name);
+            String which = option.equals("SCENE") ? "positional parameter at index 0 (SCENE)"
+                    : "option '" + (option.equals("-o") ? "--output" : option) + "'";
+            assertThat(r.exitCode()).isEqualTo(2);
+            assertThat(r.errLines().get(0)).isEqualTo("raytracer: " + Messages.visible("Invalid value for " + which
+                    + ": cannot convert '" + name + "' to interface java.nio.file.Path (java.nio.file.InvalidPathException:"
+                    + " Nul character not allowed: " + name + ")"));
         }
 
         /**
