@@ -140,7 +140,7 @@ public final class RenderCommand implements Callable<Integer> {
     /**
      * The command's model for picocli, built with its programmatic API. Its annotations would say
      * the same, but a fresh JVM reads annotations by reflection and makes a proxy class for each
-     * annotation type it meets (picocli's own and their meta-annotations): 50-70 ms of every launch
+     * annotation type it meets (picocli's own and their meta-annotations): 40-80 ms of every launch
      * on JDK 17 and 25, before the first line of the scene file is read, a twentieth of a
      * one-second render (BENCHMARKS.md, issue 50, eighth session of 2026-11-29). Nothing here is
      * read by reflection: call() takes the values from the parse.
