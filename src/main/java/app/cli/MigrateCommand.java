@@ -1,5 +1,12 @@
 package app.cli;
 
+import static app.cli.CommandSpecs.addHelpOptions;
+import static app.cli.CommandSpecs.exitCodes;
+import static app.cli.CommandSpecs.flag;
+import static app.cli.CommandSpecs.given;
+import static app.cli.CommandSpecs.option;
+import static app.cli.CommandSpecs.value;
+
 import java.io.PrintStream;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
@@ -8,7 +15,6 @@ import java.util.concurrent.Callable;
 import app.migrate.Migration;
 import app.migrate.MigrationException;
 import picocli.CommandLine.Model.CommandSpec;
-import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Model.PositionalParamSpec;
 
 /**
@@ -32,7 +38,7 @@ final class MigrateCommand implements Callable<Integer> {
         this.spec = model(this);
     }
 
-    /** The subcommand's model for picocli, built as {@link RenderCommand}'s is (see there for why). */
+    /** The subcommand's model for picocli, in its programmatic API (see {@link CommandSpecs} for why). */
     private static CommandSpec model(MigrateCommand command) {
         CommandSpec spec = CommandSpec.wrapWithoutInspection(command).name("migrate");
         spec.usageMessage().sortOptions(false).autoWidth(true)
@@ -42,7 +48,7 @@ final class MigrateCommand implements Callable<Integer> {
                         + " every test that does not compile against the library is left out of the build with its reason.",
                         "Nothing is deleted; --undo takes the whole migration back.")
                 .exitCodeListHeading("%nExit codes:%n")
-                .exitCodeList(RenderCommand.exitCodes("0", "migrated, or already migrated (nothing changed)",
+                .exitCodeList(exitCodes("0", "migrated, or already migrated (nothing changed)",
                         "2", "refused before anything changed (the reason in one line)",
                         "1", "failed part-way and taken back (nothing changed)"));
         // The folder as a string: it becomes a Path in call(), where a name this locale cannot hold
@@ -54,32 +60,24 @@ final class MigrateCommand implements Callable<Integer> {
         spec.addOption(flag(DRY_RUN, "Print the summary and the exact change, as a unified diff (paths relative to DIR;"
                 + " git apply takes it); change nothing."));
         spec.addOption(flag(ALLOW_DIRTY, "Migrate a git folder that has uncommitted changes."));
-        spec.addOption(OptionSpec.builder(ENCODING).type(String.class).paramLabel("CHARSET").description("The sources'"
+        spec.addOption(option(ENCODING, String.class, "CHARSET", "The sources'"
                 + " character encoding (windows-1255, ISO-8859-1, UTF-8); by default as the project states it (pom,"
                 + " .idea/encodings.xml, Eclipse settings), else detected. It is written into the pom.").build());
-        RenderCommand.addHelpOptions(spec);
+        addHelpOptions(spec);
         return spec;
-    }
-
-    private static OptionSpec flag(String name, String description) {
-        return OptionSpec.builder(name).type(boolean.class).description(description).build();
     }
 
     CommandSpec spec() {
         return spec;
     }
 
-    private boolean set(String flag) {
-        return Boolean.TRUE.equals(RenderCommand.value(spec, flag));
-    }
-
     @Override
     public Integer call() {
         try {
             Migration migration = Migration.ofThisProcess(out, err);
-            Path folder = Path.of(RenderCommand.<String>value(spec, DIR));
-            if (set(UNDO)) migration.undo(folder);
-            else migration.migrate(folder, set(ALLOW_DIRTY), set(DRY_RUN), RenderCommand.value(spec, ENCODING));
+            Path folder = Path.of(CommandSpecs.<String>value(spec, DIR));
+            if (given(spec, UNDO)) migration.undo(folder);
+            else migration.migrate(folder, given(spec, ALLOW_DIRTY), given(spec, DRY_RUN), value(spec, ENCODING));
             return 0;
         } catch (MigrationException e) {
             err.println(RenderCommand.NAME + " migrate: " + e.getMessage());

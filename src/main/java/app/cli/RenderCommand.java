@@ -1,18 +1,21 @@
 package app.cli;
 
+import static app.cli.CommandSpecs.addHelpOptions;
+import static app.cli.CommandSpecs.exitCodes;
+import static app.cli.CommandSpecs.given;
+import static app.cli.CommandSpecs.option;
+import static app.cli.CommandSpecs.value;
+
 import java.io.IOException;
 import java.io.PrintStream;
 import java.io.PrintWriter;
 import java.io.UncheckedIOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
 import java.util.ArrayList;
-import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import java.util.Optional;
 import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
@@ -24,7 +27,6 @@ import picocli.CommandLine.Model.OptionSpec;
 import picocli.CommandLine.Model.PositionalParamSpec;
 import picocli.CommandLine.Model.UsageMessageSpec;
 import picocli.CommandLine.ParameterException;
-import picocli.CommandLine.TypeConversionException;
 import primitives.Vector;
 import renderer.AntiAliasing;
 import renderer.Camera;
@@ -138,12 +140,8 @@ public final class RenderCommand implements Callable<Integer> {
             MORE = "MORE", SPARK = "--spark";
 
     /**
-     * The command's model for picocli, built with its programmatic API. Its annotations would say
-     * the same, but a fresh JVM reads annotations by reflection and makes a proxy class for each
-     * annotation type it meets (picocli's own and their meta-annotations): 40-80 ms of every launch
-     * on JDK 17 and 25, before the first line of the scene file is read, a twentieth of a
-     * one-second render (BENCHMARKS.md, issue 50, eighth session of 2026-11-29). Nothing here is
-     * read by reflection: call() takes the values from the parse.
+     * The command's model for picocli, in its programmatic API rather than annotations (see
+     * {@link CommandSpecs} for why): call() takes the values from the parse.
      */
     private static CommandSpec model(RenderCommand command) {
         CommandSpec spec = CommandSpec.wrapWithoutInspection(command).name("java -jar raytracer.jar")
@@ -192,48 +190,6 @@ public final class RenderCommand implements Callable<Integer> {
     }
 
     /**
-     * A file name as picocli's own Path converter reads it, word for word in its message too; that
-     * converter calls Paths.get by reflection, whose first call took JDK 25 about 8 ms of every
-     * launch to set up.
-     */
-    private static Path path(String name) {
-        try {
-            return Path.of(name);
-        } catch (InvalidPathException e) {
-            throw new TypeConversionException("cannot convert '" + name + "' to " + Path.class + " (" + e + ")");
-        }
-    }
-
-    /** An option of one value: its one name, type, label and description. */
-    private static OptionSpec.Builder option(String name, Class<?> type, String label, String description) {
-        return OptionSpec.builder(name).type(type).paramLabel(label).description(description);
-    }
-
-    /** {@code -h/--help} and {@code -V/--version}, as picocli's standard help options word them. */
-    static void addHelpOptions(CommandSpec spec) {
-        spec.addOption(OptionSpec.builder("-h", "--help").usageHelp(true).description("Show this help message and exit.").build());
-        spec.addOption(OptionSpec.builder("-V", "--version").versionHelp(true)
-                .description("Print version information and exit.").build());
-    }
-
-    /** Exit codes and their meanings, in the order given: code, meaning, code, meaning... */
-    static Map<String, String> exitCodes(String... codesAndMeanings) {
-        Map<String, String> codes = new LinkedHashMap<>();
-        for (int i = 0; i < codesAndMeanings.length; i += 2) codes.put(codesAndMeanings[i], codesAndMeanings[i + 1]);
-        return codes;
-    }
-
-    /** The parsed value of the option or positional parameter {@code name}, null when not given. */
-    @SuppressWarnings("unchecked")
-    static <T> T value(CommandSpec spec, String name) {
-        OptionSpec option = spec.findOption(name);
-        if (option != null) return (T) option.getValue();
-        for (PositionalParamSpec p : spec.positionalParameters())
-            if (p.paramLabel().equals(name)) return (T) p.getValue();
-        throw new IllegalArgumentException("no option or parameter " + name);
-    }
-
-    /**
      * Runs the command on the process's streams.
      *
      * @param args the command line, as {@code main} receives it
@@ -252,7 +208,7 @@ public final class RenderCommand implements Callable<Integer> {
         usage.sectionMap().put(UsageMessageSpec.SECTION_KEY_FOOTER, help -> Help.join(help.ansi(), usage.width(),
                 usage.adjustLineBreaksForWideCJKCharacters(), limits(), new StringBuilder()).toString());
         cl.setCaseInsensitiveEnumValuesAllowed(true);
-        cl.registerConverter(Path.class, RenderCommand::path);
+        cl.registerConverter(Path.class, CommandSpecs::path);
         cl.setOut(new PrintWriter(out, true, StandardCharsets.UTF_8));
         cl.setErr(new PrintWriter(err, true, StandardCharsets.UTF_8));
         cl.setParameterExceptionHandler((e, args) -> {
@@ -408,7 +364,7 @@ public final class RenderCommand implements Callable<Integer> {
         threads = value(spec, THREADS);
         antiAliasing = value(spec, AA);
         seed = value(spec, SEED);
-        quiet = Boolean.TRUE.equals(value(spec, QUIET));
+        quiet = given(spec, QUIET);
         meshRoot = value(spec, MESH_ROOT);
         List<Path> more = value(spec, MORE);
         frames = more != null ? more : List.of();
