@@ -33,12 +33,15 @@ def project(tmp_path: Path, with_jar: bool) -> Path:
 
 def startup(folder: Path, home: Path, suffix: str) -> Path:
     """Where the launcher keeps its start-up archive for the JDK at `home`: named by the checksum
-    of the JDK's release file, as POSIX cksum computes it, and "-vector" when the launcher adds
+    of the JDK's release file and that of the jar's path, as POSIX cksum computes them, and
+    "-vector" when the launcher adds
     the vector module by default (an archive fits only its modules): to a render with both tiers,
     whose archive is a class-data archive (jsa) on every JDK, where the JDK has the module. The
     quick tier's has no module: an ahead-of-time cache (aot) on JDK 25 and later, else a jsa."""
     key = subprocess.run(["cksum"], stdin=(home / "release").open("rb"), capture_output=True, text=True,
                          check=True).stdout.split()[0]
+    jar = str(folder / "target" / "raytracer.jar")  # the path the launcher names it by: its folder's, links kept
+    key += "-" + subprocess.run(["cksum"], input=jar, capture_output=True, text=True, check=True).stdout.split()[0]
     if "jdk.incubator.vector" in (home / "release").read_text() and suffix == "jsa":
         key += "-vector"
     return folder / "target" / "startup" / f"raytracer-{key}.{suffix}"
@@ -88,6 +91,24 @@ def test_the_first_run_makes_the_start_up_archive_and_the_next_runs_use_it(tmp_p
     os.utime(archive, (jar_time - 10, jar_time - 10))
     third = run(folder, "--version")
     assert third.returncode == 0 and "making the start-up archive" in third.stderr
+
+
+@needs_jar
+def test_a_project_moved_to_another_folder_makes_an_archive_of_its_own(tmp_path):
+    # The JVM refuses an archive made for the jar at another path, silently: without one of its
+    # own, every launch of the moved project would start as slowly as without an archive.
+    (tmp_path / "before").mkdir()
+    first = project(tmp_path / "before", with_jar=True)
+    made = run(first, "--version")
+    assert made.returncode == 0 and "making the start-up archive" in made.stderr
+    moved = tmp_path / "after"
+    shutil.copytree(first, moved, symlinks=True)  # a copy keeps the jar's and the archive's times, as mv does
+    archive = startup(moved, this_jdk(), "jsa")
+    assert not archive.exists()
+    again = run(moved, "--version")
+    assert again.returncode == 0, again.stderr
+    assert again.stderr == f"raytracer: making the start-up archive for this JDK and jar (once, a few seconds): {archive}\n"
+    assert run(moved, "--version").stderr == ""
 
 
 @needs_jar
