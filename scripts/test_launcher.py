@@ -32,12 +32,12 @@ def project(tmp_path: Path, with_jar: bool) -> Path:
 
 
 def startup(folder: Path, home: Path, suffix: str) -> Path:
-    """Where the launcher keeps its start-up archive for the JDK at `home`: named by the checksum
-    of the JDK's release file and that of the jar's path, as POSIX cksum computes them, and
-    "-vector" when the launcher adds
-    the vector module by default (an archive fits only its modules): to a render with both tiers,
-    whose archive is a class-data archive (jsa) on every JDK, where the JDK has the module. The
-    quick tier's has no module: an ahead-of-time cache (aot) on JDK 25 and later, else a jsa."""
+    """Where the launcher keeps its start-up archive for the JDK at `home`: named by the checksum of
+    the JDK's release file and that of the jar's path, as POSIX cksum computes them, and "-vector"
+    when the launcher adds the vector module by default (an archive fits only its modules): to a
+    render with both tiers, whose archive is a class-data archive (jsa) on every JDK, where the JDK
+    has the module. The quick tier's has no module: an ahead-of-time cache (aot) on JDK 25 and
+    later, else a jsa."""
     key = subprocess.run(["cksum"], stdin=(home / "release").open("rb"), capture_output=True, text=True,
                          check=True).stdout.split()[0]
     jar = str(folder / "target" / "raytracer.jar")  # the path the launcher names it by: its folder's, links kept
