@@ -2,6 +2,7 @@ package app.cli;
 
 import static app.cli.Cli.run;
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeFalse;
 
 import java.io.IOException;
 import java.io.RandomAccessFile;
@@ -355,6 +356,8 @@ class UntrustedInputTest {
     @EnabledOnOs({ OS.LINUX, OS.MAC })
     @DisplayName("a signal while the image is written leaves no temporary file")
     void signalWhileWriting(String signal) throws Exception {
+        assumeFalse(signal.equals("INT") && sigintIgnored(),
+                "SIGINT is ignored here (a shell's background job): the JVM it starts keeps ignoring it");
         Path file = write("scene.xml", "<scene name=\"big\"><camera location=\"0 0 0\" direction=\"0 0 -1\" up=\"0 1 0\""
                 + " vp-size=\"1\" vp-distance=\"1\"/><image width=\"4000\" height=\"4000\" grid-interval=\"3\"/>"
                 + "<render threads=\"1\"/></scene>");
@@ -374,5 +377,19 @@ class UntrustedInputTest {
         assertThat(tmp).doesNotExist();
         assertThat(dir.resolve("out.png")).doesNotExist();
         assertNothingWritten();
+    }
+
+    /**
+     * Whether this process ignores SIGINT, as a job a non-interactive shell starts in the
+     * background does: a JVM started from it keeps ignoring the signal (HotSpot leaves an
+     * inherited SIG_IGN alone), so a SIGINT sent to it does nothing. Linux says so in
+     * /proc/self/status (SigIgn, a hexadecimal mask, signal n at bit n - 1); elsewhere, no.
+     */
+    private static boolean sigintIgnored() throws IOException {
+        Path status = Path.of("/proc/self/status");
+        if (!Files.isReadable(status)) return false;
+        for (String line : Files.readAllLines(status))
+            if (line.startsWith("SigIgn:")) return (Long.parseUnsignedLong(line.substring(7).strip(), 16) & 0b10) != 0;
+        return false;
     }
 }
