@@ -13,7 +13,7 @@ import picocli.CommandLine.TypeConversionException;
 /**
  * The pieces both commands build their picocli models from, in picocli's programmatic API rather
  * than its annotations: a fresh JVM reads annotations by reflection and makes a proxy class for
- * each annotation type it meets (picocli's own and their meta-annotations), 40-80 ms of every
+ * each annotation type it meets (picocli's own and their meta-annotations), 35-80 ms of every
  * launch on JDK 17 and 25, before the first line of a scene file is read (BENCHMARKS.md, issue 50,
  * eighth session of 2026-11-29). Nothing here reads by reflection: a command takes its values from
  * the parse by name ({@link #value}).
