@@ -110,7 +110,7 @@ public final class RenderCommand implements Callable<Integer> {
     private boolean quiet;
     private Path meshRoot;
     // ===== Spark: more scene files as frames, one option, and a branch into app.spark =====
-    private List<Path> frames = new ArrayList<>();
+    private List<Path> frames = List.of();
     private String spark;
     // ===== end Spark =====
 
@@ -155,8 +155,8 @@ public final class RenderCommand implements Callable<Integer> {
                         "2", "bad input: a usage error or an invalid scene file (nothing is written)"));
         spec.addPositional(PositionalParamSpec.builder().index("0").arity("0..1").paramLabel(SCENE).type(Path.class)
                 .description("The scene file (XML). Default: the built-in showcase.").build());
-        spec.addOption(option(OUTPUT, Path.class, "FILE", "The PNG file to write. Default: images/<image name>.png.")
-                .names("-o", OUTPUT).build());
+        spec.addOption(OptionSpec.builder("-o", OUTPUT).type(Path.class).paramLabel("FILE")
+                .description("The PNG file to write. Default: images/<image name>.png.").build());
         spec.addOption(option(WIDTH, Integer.class, "N",
                 "Image width in pixels. Given alone, the height follows the file's aspect ratio.").build());
         spec.addOption(option(HEIGHT, Integer.class, "N",
