@@ -1,5 +1,7 @@
 package renderer;
 
+import java.util.function.Supplier;
+
 import primitives.Rgb;
 
 /**
@@ -40,8 +42,8 @@ final class GridSampler extends PixelSampler {
         }
 
         @Override
-        public PixelSampler newSampler(Estimator estimator, int tileSize) {
-            return new GridSampler(this, estimator);
+        public Supplier<PixelSampler> samplers(Estimator estimator, int tileSize, int x0, int y0, int x1, int y1) {
+            return () -> new GridSampler(this, estimator);
         }
 
         @Override

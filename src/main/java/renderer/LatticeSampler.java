@@ -1,6 +1,7 @@
 package renderer;
 
 import java.util.Arrays;
+import java.util.function.Supplier;
 
 import primitives.Rgb;
 
@@ -50,6 +51,8 @@ final class LatticeSampler extends PixelSampler {
     private int originX, originY; // global lattice coordinates of the tile's top-left point
     private final double[] sum = new double[3]; // the adaptive accumulator, reused per pixel
     private final Rgb pixel = new Rgb();
+    /** The pass's pixel corners on its tiles' borders, traced once for all its workers; null: none. */
+    private final LatticeSeams seams;
 
     /**
      * ADAPTIVE's threshold is the spread of a pixel's corners (0..255 scale, per channel, values
@@ -58,8 +61,9 @@ final class LatticeSampler extends PixelSampler {
      *
      * @param tileSize the render loop's tile side in pixels: the cache covers one tile's lattice
      */
-    private LatticeSampler(Plan plan, Estimator estimator, int tileSize) {
+    private LatticeSampler(Plan plan, Estimator estimator, int tileSize, LatticeSeams seams) {
         super(plan.seed, plan.lens, estimator);
+        this.seams = seams;
         this.adaptive = plan.adaptive;
         this.maxDepth = plan.depth;
         this.threshold = plan.threshold;
@@ -135,9 +139,11 @@ final class LatticeSampler extends PixelSampler {
             return Math.max(1, Math.min(64, 256 / pointsPerPixel()));
         }
 
+        /** The workers' samplers share the pass's {@link LatticeSeams}. */
         @Override
-        public PixelSampler newSampler(Estimator estimator, int tileSize) {
-            return new LatticeSampler(this, estimator, tileSize);
+        public Supplier<PixelSampler> samplers(Estimator estimator, int tileSize, int x0, int y0, int x1, int y1) {
+            LatticeSeams seams = LatticeSeams.of(x0, y0, x1, y1, tileSize);
+            return () -> new LatticeSampler(this, estimator, tileSize, seams);
         }
 
         @Override
@@ -160,21 +166,42 @@ final class LatticeSampler extends PixelSampler {
     private int point(int gx, int gy, TraceContext ctx) {
         int i = (gy - originY) * side + (gx - originX);
         if (stamp[i] != generation) {
-            SampleStream rnd = ctx.random;
-            rnd.reset(seed, gx, gy, -perPixel);
-            Rgb c;
-            if (adaptive) { // jittered within its cell of the lattice: see the class comment
-                double jx = rnd.nextDouble() - 0.5, jy = rnd.nextDouble() - 0.5;
-                c = trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
+            // a pixel corner on a border between tiles: traced once for the pass (R is a power of two)
+            int s = seams != null && ((gx | gy) & (perPixel - 1)) == 0 ? seams.index(gx / perPixel, gy / perPixel) : -1;
+            if (s < 0) {
+                traceInto(i, gx, gy, ctx);
+            } else if (seams.claim(s)) {
+                try {
+                    traceInto(i, gx, gy, ctx);
+                } catch (RuntimeException | Error e) {
+                    seams.release(s); // another worker traces it, unless the render stops
+                    throw e;
+                }
+                seams.publish(s, cr[i], cg[i], cb[i]);
             } else {
-                c = trace((double) gx / perPixel, (double) gy / perPixel, ctx);
+                cr[i] = seams.red(s);
+                cg[i] = seams.green(s);
+                cb[i] = seams.blue(s);
             }
-            cr[i] = c.r();
-            cg[i] = c.g();
-            cb[i] = c.b();
             stamp[i] = generation;
         }
         return i;
+    }
+
+    /** Traces global lattice point (gx, gy) into cache slot {@code i}. */
+    private void traceInto(int i, int gx, int gy, TraceContext ctx) {
+        SampleStream rnd = ctx.random;
+        rnd.reset(seed, gx, gy, -perPixel);
+        Rgb c;
+        if (adaptive) { // jittered within its cell of the lattice: see the class comment
+            double jx = rnd.nextDouble() - 0.5, jy = rnd.nextDouble() - 0.5;
+            c = trace((gx + jx) / perPixel, (gy + jy) / perPixel, ctx);
+        } else {
+            c = trace((double) gx / perPixel, (double) gy / perPixel, ctx);
+        }
+        cr[i] = c.r();
+        cg[i] = c.g();
+        cb[i] = c.b();
     }
 
     @Override

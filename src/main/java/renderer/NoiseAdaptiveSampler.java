@@ -1,5 +1,7 @@
 package renderer;
 
+import java.util.function.Supplier;
+
 import primitives.Rgb;
 
 /**
@@ -75,8 +77,8 @@ final class NoiseAdaptiveSampler extends PixelSampler {
         }
 
         @Override
-        public PixelSampler newSampler(Estimator estimator, int tileSize) {
-            return new NoiseAdaptiveSampler(this, estimator);
+        public Supplier<PixelSampler> samplers(Estimator estimator, int tileSize, int x0, int y0, int x1, int y1) {
+            return () -> new NoiseAdaptiveSampler(this, estimator);
         }
 
         @Override

@@ -12,6 +12,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.Supplier;
 
 /**
  * The one render loop. The image is cut into square tiles; workers claim tiles from an atomic
@@ -161,6 +162,8 @@ final class RenderLoop {
         /** The first exception a worker failed with; the others then stop and it is rethrown. */
         private final AtomicReference<Throwable> failure = new AtomicReference<>();
         private final RenderStats.Counter counter = new RenderStats.Counter();
+        /** Each worker's sampler (and a worker's new one after a collection): what they share is the pass's. */
+        private final Supplier<PixelSampler> samplers;
 
         Pass(String name, PreparedTracer prepared, Rect rect, int[] out) {
             this.name = name;
@@ -174,6 +177,7 @@ final class RenderLoop {
             this.tilesX = (rect.x1 - rect.x0 + tile - 1) / tile;
             this.tileCount = tilesX * ((rect.y1 - rect.y0 + tile - 1) / tile);
             this.stride = spreadingStride(tileCount);
+            this.samplers = sampling.samplers(estimator, tile, rect.x0, rect.y0, rect.x1, rect.y1);
         }
 
         RenderStats run(double prepareSeconds) {
@@ -256,7 +260,7 @@ final class RenderLoop {
 
         private Runnable worker(Progress progress) {
             return () -> {
-                PixelSampler sampler = sampling.newSampler(estimator, tile);
+                PixelSampler sampler = samplers.get();
                 // One tile's pixels, written out when the tile is done.
                 int[] tilePixels = new int[tile * tile];
                 TraceContext ctx = newContext();
@@ -281,7 +285,7 @@ final class RenderLoop {
                         if (noCollectionSince.get() == null) {
                             ctx.addTo(counter);
                             ctx = newContext();
-                            sampler = sampling.newSampler(estimator, tile);
+                            sampler = samplers.get();
                             tilePixels = new int[tile * tile];
                             noCollectionSince = new WeakReference<>(new Object());
                         }

@@ -1,5 +1,7 @@
 package renderer;
 
+import java.util.function.Supplier;
+
 /**
  * What one anti-aliasing mode needs for a render, decided once ({@link Sampling#plan(boolean)}):
  * the most camera rays a pixel may take (the ray budget's factor), the render loop's tile side,
@@ -32,13 +34,15 @@ interface SamplerPlan {
     int tileSize();
 
     /**
-     * A new sampler, for one worker: its scratch state is its own.
+     * The samplers of one pass over the pixels [x0, x1) × [y0, y1), in tiles from (x0, y0): each
+     * call of the supplier gives one worker a new sampler, whose scratch state is its own. What the
+     * pass's workers share is made here, once per pass ({@link LatticeSeams}).
      *
      * @param estimator the colour of a camera sample, from the render loop
      * @param tileSize  the render loop's tile side, in pixels, at most {@link #tileSize()} (a
      *                  lattice sampler's cache covers one tile)
      */
-    PixelSampler newSampler(Estimator estimator, int tileSize);
+    Supplier<PixelSampler> samplers(Estimator estimator, int tileSize, int x0, int y0, int x1, int y1);
 
     /** @return the mode and its parameters in words, as the summary line shows them ("RANDOM 4x4") */
     String describe();
