@@ -9,8 +9,10 @@ import primitives.Rgb;
  * {@link AntiAliasing#CORNERS} and {@link AntiAliasing#ADAPTIVE}: samples on a fixed lattice of
  * {@code R} points per pixel side, cached per tile so that a point shared by neighbouring pixels
  * or sub-pixels is traced once. A lattice point's colour depends only on its global coordinates
- * (its random stream is keyed by them), so a point on a tile border, traced again by the next
- * tile, gets the same value, and the image does not depend on the thread count.
+ * (its random stream is keyed by them), so a point on a tile border gets the same value from
+ * either tile, and the image does not depend on the thread count: the pixel corners there are
+ * traced once for the whole pass ({@link LatticeSeams}), the finer points there once by each
+ * tile.
  *
  * <p>Pixel (x, y) spans lattice coordinates [x·R, (x+1)·R].
  * <ul>
@@ -131,8 +133,9 @@ final class LatticeSampler extends PixelSampler {
 
         /**
          * The tile side, in pixels: 64, fewer for lattices above 4 points per pixel side so that the
-         * per-tile cache stays at most 257² points (2.1 MB). Large tiles matter: the points on a tile's
-         * border are traced again by the neighbouring tile, about 2/side of the one-ray-per-pixel base.
+         * per-tile cache stays at most 257² points (2.1 MB). Large tiles matter less since the pixel
+         * corners on a tile's border are traced once for the pass ({@link LatticeSeams}): the finer
+         * points there are still traced by both tiles.
          */
         @Override
         public int tileSize() {
