@@ -85,13 +85,19 @@ class LatticeSeamsTest {
             assertThat(seams.claim(s)).isTrue();
         }
 
-        @Test
-        @DisplayName("a worker that needs a corner being traced waits for its colour")
-        void waitsForTheTracer() throws Exception {
+        /** Claims the corner here, then has another worker claim it: @return that worker's claim, still waiting */
+        private CompletableFuture<Boolean> claimedHereWanted() throws InterruptedException {
             assertThat(seams.claim(s)).isTrue();
             CompletableFuture<Boolean> other = CompletableFuture.supplyAsync(() -> seams.claim(s));
             Thread.sleep(50);
             assertThat(other).as("the other worker, while the corner is traced").isNotDone();
+            return other;
+        }
+
+        @Test
+        @DisplayName("a worker that needs a corner being traced waits for its colour")
+        void waitsForTheTracer() throws Exception {
+            CompletableFuture<Boolean> other = claimedHereWanted();
             seams.publish(s, 7, 8, 9);
             assertThat(other.get(10, TimeUnit.SECONDS)).as("the other worker takes the colour, untraced").isFalse();
             assertThat(seams.blue(s)).isEqualTo(9);
@@ -100,9 +106,7 @@ class LatticeSeamsTest {
         @Test
         @DisplayName("a worker waiting on a corner whose trace failed traces it itself")
         void waitsThenTraces() throws Exception {
-            assertThat(seams.claim(s)).isTrue();
-            CompletableFuture<Boolean> other = CompletableFuture.supplyAsync(() -> seams.claim(s));
-            Thread.sleep(50);
+            CompletableFuture<Boolean> other = claimedHereWanted();
             seams.release(s);
             assertThat(other.get(10, TimeUnit.SECONDS)).as("the other worker traces it").isTrue();
         }
