@@ -26,7 +26,10 @@ first of our commands once with their statistics printed (rays per pixel, shown 
 Then --rounds rounds; in each round, each case runs every command once, in an order rotated from
 round to round. The table gives per case and command the median wall seconds (min, max), the
 median CPU seconds (user + system of the process), and the median of the round-by-round ratios to
-Sunflow's wall time in the same round (a machine whose speed drifts moves both sides of a ratio).
+Sunflow's wall time in the same round (a machine whose speed drifts moves both sides of a ratio),
+with a 95 % interval for that median that assumes nothing of the ratios' distribution (order
+statistics; at least 6 rounds): a target such as "at most 0.5 of Sunflow's time" is met beyond
+doubt only when the whole interval is below it.
 Our commands' images of a case must be byte-identical (they are the same renderer); Sunflow's
 image is a different renderer's and is not compared.
 
@@ -38,6 +41,7 @@ JDK on PATH (or JAVA_HOME).
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import platform
 import re
@@ -156,16 +160,39 @@ def rays_per_pixel(output: str, ours: bool, pixels: int) -> tuple[float, float] 
     return found["eye"] / pixels, found["total"] / pixels
 
 
+def median_interval(values: list[float], level: float = 0.95) -> tuple[float, float] | None:
+    """A distribution-free interval for the median of the population the values were drawn from.
+
+    The k-th smallest and k-th largest values, for the largest k whose interval holds the median with
+    probability at least `level` whatever the distribution: it misses only when k or fewer values
+    fall on one side, 2 * P(Binomial(n, 1/2) < k). None when even the smallest and largest value
+    are not enough (fewer than 6 values at 95 %): more rounds are needed.
+    """
+    n = len(values)
+    ordered = sorted(values)
+    tail = 0.0  # P(B <= k - 1), B ~ Binomial(n, 1/2)
+    best = None
+    for k in range(1, n // 2 + 1):
+        tail += math.comb(n, k - 1) / 2 ** n
+        if 1 - 2 * tail < level:
+            break
+        best = (ordered[k - 1], ordered[n - k])
+    return best
+
+
 def table(cases: list[str], commands: list[Command], walls: dict, cpus: dict) -> str:
-    lines = ["| case | command | median wall s | min | max | median CPU s | median ratio to Sunflow (round by round) |",
-             "|---|---|--:|--:|--:|--:|--:|"]
+    lines = ["| case | command | median wall s | min | max | median CPU s | median ratio to Sunflow (round by round) "
+             "| 95 % interval of that median |",
+             "|---|---|--:|--:|--:|--:|--:|--:|"]
     for case in cases:
         base = walls[case][SUNFLOW]
         for c in commands:
             w = walls[case][c.label]
-            ratio = statistics.median(a / b for a, b in zip(w, base))
+            ratios = [a / b for a, b in zip(w, base)]
+            interval = median_interval(ratios)
+            shown = f"{interval[0]:.3f}–{interval[1]:.3f}" if interval else "more rounds needed"
             lines.append(f"| {case} | `{c.label}` | {statistics.median(w):.3f} | {min(w):.3f} | {max(w):.3f} | "
-                         f"{statistics.median(cpus[case][c.label]):.3f} | {ratio:.3f} |")
+                         f"{statistics.median(cpus[case][c.label]):.3f} | {statistics.median(ratios):.3f} | {shown} |")
     return "\n".join(lines)
 
 

@@ -47,6 +47,31 @@ def test_rays_per_pixel_from_either_sides_statistics():
     assert sb.rays_per_pixel("nothing", True, 1) is None and sb.rays_per_pixel("nothing", False, 1) is None
 
 
+class TestMedianInterval:
+    def test_eleven_rounds_give_the_second_smallest_and_second_largest(self):
+        # k = 2: misses with 2 * P(B(11, 1/2) <= 1) = 24/2048, 98.8 % coverage; k = 3 would be 93.5 %
+        assert sb.median_interval([float(v) for v in (5, 3, 11, 1, 8, 2, 10, 4, 9, 7, 6)]) == (2.0, 10.0)
+
+    def test_thirty_one_rounds_give_the_tenth_from_each_end(self):
+        # k = 10: 2 * P(B(31, 1/2) <= 9) = 2.9 %; k = 11 would miss 7.1 % of the time
+        assert sb.median_interval([float(v) for v in range(1, 32)]) == (10.0, 22.0)
+
+    @pytest.mark.parametrize("n, expected", [(5, None), (6, (1.0, 6.0)), (8, (1.0, 8.0)), (9, (2.0, 8.0))])
+    def test_the_interval_widens_to_the_extremes_and_then_gives_up(self, n, expected):
+        # 6 values: 2/64 = 3.1 % miss at k = 1; 5 values: 2/32 = 6.25 %, not 95 % even at the extremes
+        assert sb.median_interval([float(v) for v in range(1, n + 1)]) == expected
+
+    def test_the_coverage_holds_whatever_the_distribution(self):
+        import random
+        rng = random.Random(7)
+        misses = 0
+        for _ in range(4000):  # a skewed distribution whose median is 1
+            values = [rng.lognormvariate(0, 1) for _ in range(11)]
+            lo, hi = sb.median_interval(values)
+            misses += not lo <= 1 <= hi
+        assert misses / 4000 < 0.05
+
+
 @pytest.mark.parametrize("argv", [
     ["--sunflow-jar", "/no/such.jar"],
     ["--sunflow-jar", __file__, "--cases", "8spp"],
