@@ -190,7 +190,7 @@ def table(cases: list[str], commands: list[Command], walls: dict, cpus: dict) ->
             w = walls[case][c.label]
             ratios = [a / b for a, b in zip(w, base)]
             interval = median_interval(ratios)
-            shown = f"{interval[0]:.3f}–{interval[1]:.3f}" if interval else "more rounds needed"
+            shown = "—" if not c.ours else f"{interval[0]:.3f}–{interval[1]:.3f}" if interval else "more rounds needed"
             lines.append(f"| {case} | `{c.label}` | {statistics.median(w):.3f} | {min(w):.3f} | {max(w):.3f} | "
                          f"{statistics.median(cpus[case][c.label]):.3f} | {statistics.median(ratios):.3f} | {shown} |")
     return "\n".join(lines)
