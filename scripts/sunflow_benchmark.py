@@ -164,8 +164,8 @@ def median_interval(values: list[float], level: float = 0.95) -> tuple[float, fl
     """A distribution-free interval for the median of the population the values were drawn from.
 
     The k-th smallest and k-th largest values, for the largest k whose interval holds the median with
-    probability at least `level` whatever the distribution: it misses only when k or fewer values
-    fall on one side, 2 * P(Binomial(n, 1/2) < k). None when even the smallest and largest value
+    probability at least `level` whatever the distribution: it misses only when fewer than k values
+    fall on one side of the median, 2 * P(Binomial(n, 1/2) < k) (for a continuous distribution). None when even the smallest and largest value
     are not enough (fewer than 6 values at 95 %): more rounds are needed.
     """
     n = len(values)
