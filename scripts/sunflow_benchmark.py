@@ -163,10 +163,11 @@ def rays_per_pixel(output: str, ours: bool, pixels: int) -> tuple[float, float] 
 def median_interval(values: list[float], level: float = 0.95) -> tuple[float, float] | None:
     """A distribution-free interval for the median of the population the values were drawn from.
 
-    The k-th smallest and k-th largest values, for the largest k whose interval holds the median with
-    probability at least `level` whatever the distribution: it misses only when fewer than k values
-    fall on one side of the median, 2 * P(Binomial(n, 1/2) < k) (for a continuous distribution). None when even the smallest and largest value
-    are not enough (fewer than 6 values at 95 %): more rounds are needed.
+    The k-th smallest and k-th largest values, for the largest k whose interval holds the median
+    with probability at least `level` whatever the (continuous) distribution: it misses only when
+    fewer than k values fall on one side of the median, 2 * P(Binomial(n, 1/2) < k). None when
+    even the smallest and largest value are not enough (fewer than 6 values at 95 %): more rounds
+    are needed.
     """
     n = len(values)
     ordered = sorted(values)
