@@ -2,6 +2,7 @@
 each side's output, the arguments refused, and that the Sunflow scene holds the port's primitives."""
 from __future__ import annotations
 
+import random
 import re
 from pathlib import Path
 
@@ -62,7 +63,6 @@ class TestMedianInterval:
         assert sb.median_interval([float(v) for v in range(1, n + 1)]) == expected
 
     def test_the_coverage_holds_whatever_the_distribution(self):
-        import random
         rng = random.Random(7)
         misses = 0
         for _ in range(4000):  # a skewed distribution whose median is 1
