@@ -267,8 +267,7 @@ final class LatticeSampler extends PixelSampler {
      */
     static boolean spreads(double[] ch, int a, int b, int c, int d, double threshold) {
         double va = ch[a], vb = ch[b], vc = ch[c], vd = ch[d];
-        if (va != va || vb != vb || vc != vc || vd != vd) return false; // Math.min and max give NaN
-        double hi = va, lo = va;
+        double hi = va, lo = va; // a NaN is never taken below: only va can make them NaN, and then no spread
         if (vb > hi) hi = vb;
         else if (vb < lo) lo = vb;
         if (vc > hi) hi = vc;
@@ -277,6 +276,9 @@ final class LatticeSampler extends PixelSampler {
         else if (vd < lo) lo = vd;
         if (hi > 255) hi = 255;
         if (lo > 255) lo = 255;
-        return hi - lo > threshold;
+        if (!(hi - lo > threshold)) return false;
+        // Math.min and max give NaN for a NaN corner, and then no spread: asked only here, as C1
+        // builds x != x as a three-way result tested after, four branches each
+        return va == va && vb == vb && vc == vc && vd == vd;
     }
 }
