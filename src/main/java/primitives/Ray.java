@@ -64,8 +64,11 @@ public final class Ray {
      *         enters the surface, 0 when it is tangent (within the zero tolerance)
      */
     static double headOffset(double nx, double ny, double nz, double dx, double dy, double dz) {
-        double nd = Util.alignZero(nx * dx + ny * dy + nz * dz);
-        return nd == 0 ? 0 : nd > 0 ? DELTA : -DELTA;
+        double nd = nx * dx + ny * dy + nz * dz;
+        // alignZero(nd) == 0 ? 0 : alignZero(nd) > 0 ? DELTA : -DELTA, NaN (-DELTA) included, as
+        // two comparisons with the tolerance: the quick compiler (C1) built the two comparisons
+        // with 0 as one three-way result tested twice (BENCHMARKS.md, issue 50, eleventh session)
+        return nd >= Util.ACCURACY ? DELTA : nd > -Util.ACCURACY ? 0 : -DELTA;
     }
 
     /** @return the point the ray starts from ({@code t = 0}) */

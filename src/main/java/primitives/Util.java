@@ -14,9 +14,10 @@ public final class Util {
      * Values below this in magnitude are treated as zero: 2^-40 ≈ 9.1e-13. "Binary exponent below
      * -40" and "|x| &lt; 2^-40" are the same test for every double (NaN and ±∞ are not zero,
      * subnormals are); the comparison form stays in floating-point registers, which matters
-     * because the intersection kernels call it several times per ray.
+     * because the intersection kernels call it several times per ray. Package-private for
+     * {@link Ray#headOffset}, which compares with it directly.
      */
-    private static final double ACCURACY = 0x1p-40;
+    static final double ACCURACY = 0x1p-40;
 
     /**
      * The generator behind {@link #random(double, double)}: fixed seed, so a program that builds

@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.Arguments;
 import org.junit.jupiter.params.provider.MethodSource;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import geometries.Intersectable.GeoPoint;
 import geometries.Sphere;
@@ -72,6 +73,30 @@ class RayTest {
         void tangentKeepsHead() {
             Ray ray = new Ray(head, new Vector(1, 1, 0), normal);
             assertThat(ray.getHead()).isEqualTo(head);
+        }
+
+        @ParameterizedTest(name = "n·d = {0}")
+        @ValueSource(doubles = { 0x1p-40, -0x1p-40, 0x1.0000000000001p-40, 0x1.fffffffffffffp-41, -0x1.fffffffffffffp-41,
+                0.0, -0.0, 1e-300, -1e-300, 0.3, -0.3, Double.NaN, Double.POSITIVE_INFINITY, Double.NEGATIVE_INFINITY })
+        @DisplayName("the offset is alignZero's: 0 within the zero tolerance, ±DELTA beyond it, −DELTA for NaN")
+        void offsetAsAlignZeroDecides(double dot) {
+            assertThat(Ray.headOffset(1, 0, 0, dot, 0, 0)).isEqualTo(withAlignZero(dot));
+        }
+
+        @Test
+        @DisplayName("the offset is alignZero's on random products near the tolerance")
+        void offsetOnRandomProducts() {
+            java.util.Random rnd = new java.util.Random(17);
+            for (int i = 0; i < 100_000; ++i) {
+                double dot = Math.scalb(rnd.nextDouble() * 4 - 2, -40 + rnd.nextInt(3) - 1);
+                assertThat(Ray.headOffset(1, 0, 0, dot, 0, 0)).as("n·d = %s", dot).isEqualTo(withAlignZero(dot));
+            }
+        }
+
+        /** The rule as it was written with {@link Util#alignZero}. */
+        private static double withAlignZero(double dot) {
+            double nd = Util.alignZero(dot);
+            return nd == 0 ? 0 : nd > 0 ? Ray.DELTA : -Ray.DELTA;
         }
     }
 
