@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.within;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Random;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.DisplayName;
@@ -86,7 +87,7 @@ class RayTest {
         @Test
         @DisplayName("the offset is alignZero's on random products near the tolerance")
         void offsetOnRandomProducts() {
-            java.util.Random rnd = new java.util.Random(17);
+            Random rnd = new Random(17);
             for (int i = 0; i < 100_000; ++i) {
                 double dot = Math.scalb(rnd.nextDouble() * 4 - 2, -40 + rnd.nextInt(3) - 1);
                 assertThat(Ray.headOffset(1, 0, 0, dot, 0, 0)).as("n·d = %s", dot).isEqualTo(withAlignZero(dot));
