@@ -3,7 +3,6 @@ package scene.io;
 import java.util.Arrays;
 import java.util.Locale;
 import java.util.function.Consumer;
-import java.util.regex.Pattern;
 import java.util.stream.Collectors;
 
 import primitives.Color;
@@ -30,14 +29,6 @@ record ValueType<T>(String expected, Parser<T> parser) {
         T parse(String text);
     }
 
-    private static final Pattern DECIMAL = Pattern.compile("[+-]?(?:\\d+(?:\\.\\d*)?|\\.\\d+)(?:[eE][+-]?\\d+)?");
-    private static final Pattern INTEGER_TEXT = Pattern.compile("[+-]?\\d+");
-    private static final Pattern NON_FINITE = Pattern.compile("[+-]?(?:nan|inf|infinity)", Pattern.CASE_INSENSITIVE);
-    // Compiled once: String.split with this regex compiles it at every call, for each list of
-    // numbers of a scene (a vertex, a colour), in a fresh JVM's interpreter (an 8x8 launch of a
-    // 137-primitive scene took 0.963 of the time without that; BENCHMARKS.md, issue 50).
-    private static final Pattern WHITE_SPACE = Pattern.compile("\\s+");
-
     static final ValueType<Double> NUMBER = new ValueType<>("a number", ValueType::number);
     /** Sizes, distances and exponents: at least {@link Limits#MIN_MAGNITUDE}. */
     static final ValueType<Double> POSITIVE = new ValueType<>("a positive number", text -> {
@@ -59,7 +50,7 @@ record ValueType<T>(String expected, Parser<T> parser) {
     });
     static final ValueType<Long> LONG = new ValueType<>("an integer", text -> {
         String t = text.strip();
-        if (!INTEGER_TEXT.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not an integer");
+        if (!NumberText.isInteger(t)) throw new IllegalArgumentException("'" + t + "' is not an integer");
         try {
             return Long.parseLong(t);
         } catch (NumberFormatException e) {
@@ -152,8 +143,8 @@ record ValueType<T>(String expected, Parser<T> parser) {
     static double number(String text) {
         String t = text.strip();
         if (t.isEmpty()) throw new IllegalArgumentException("the value is empty");
-        if (!DECIMAL.matcher(t).matches()) { // digits only: a non-finite word never matches it
-            if (NON_FINITE.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not a finite number");
+        if (!NumberText.isDecimal(t)) { // digits only: a non-finite word never matches it
+            if (NumberText.isNonFiniteWord(t)) throw new IllegalArgumentException("'" + t + "' is not a finite number");
             throw new IllegalArgumentException("'" + t + "' is not a number");
         }
         double d = Double.parseDouble(t); // locale-independent by specification
@@ -178,7 +169,7 @@ record ValueType<T>(String expected, Parser<T> parser) {
 
     private static int integer(String text) {
         String t = text.strip();
-        if (!INTEGER_TEXT.matcher(t).matches()) throw new IllegalArgumentException("'" + t + "' is not an integer");
+        if (!NumberText.isInteger(t)) throw new IllegalArgumentException("'" + t + "' is not an integer");
         try {
             return Integer.parseInt(t);
         } catch (NumberFormatException e) {
@@ -196,7 +187,7 @@ record ValueType<T>(String expected, Parser<T> parser) {
 
     private static String[] tokens(String text, int min, int max) {
         String t = text.strip();
-        String[] tokens = t.isEmpty() ? new String[0] : WHITE_SPACE.split(t);
+        String[] tokens = NumberText.words(t);
         if (tokens.length < min || tokens.length > max || (tokens.length > min && tokens.length < max))
             throw new IllegalArgumentException("found " + tokens.length + (tokens.length == 1 ? " value" : " values")
                     + " where " + (min == max ? String.valueOf(min) : min + " or " + max) + " are needed");
