@@ -416,11 +416,14 @@ public final class Bvh extends Intersectable {
                     continue;
                 }
             }
-            do {
-                if (top == 0) return found;
-                --top;
-            } while (!(stackT[top] <= limit(hit.t)));
-            n = stack[top];
+            // Pop the entries the closer hit has since put out of range. Tested before the loop
+            // rather than at its top: C2 made the earlier do-while a counted loop whose limit
+            // check failed on the first empty stack of every JVM, which threw the method's first
+            // compile away (one C2 compile of this method fewer a launch; BENCHMARKS.md, issue 50,
+            // twelfth session).
+            while (top > 0 && !(stackT[top - 1] <= limit(hit.t))) --top;
+            if (top == 0) return found;
+            n = stack[--top];
         }
     }
 
