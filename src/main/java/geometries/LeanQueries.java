@@ -89,6 +89,29 @@ public final class LeanQueries {
         return shape.visitHits(query, maxDistance, visitor);
     }
 
+    /** The probe's visitor: one crossing is the answer, so the walk stops at the first. */
+    private static final HitVisitor FIRST_CROSSING = (geometry, t) -> false;
+
+    /**
+     * Whether {@code shape} crosses the ray {@code query} carries at a distance the any-hit walk
+     * accepts (the rule of {@link #visitHits(Intersectable, Hit, double, HitVisitor)}): a shadow
+     * cache's probe of the shape that stopped the previous shadow ray.
+     *
+     * <p>A call site of its own rather than {@code visitHits}: the JIT profiles the receiver's
+     * class at each call site, and one site shared by the render's tree and the probed shapes
+     * told C2 "a tree and a sphere" early in a render, then a plane, then a polygon; each new
+     * class threw away the compiled shadow-ray code that had inlined the site (four to nine
+     * times a launch of the Sunflow scene; BENCHMARKS.md, issue 50, twelfth session).
+     *
+     * @param shape       the shape asked, one primitive
+     * @param query       the record holding the query ray
+     * @param maxDistance the largest distance from the ray head that counts, in scene units
+     * @return true when the shape crosses the ray within {@code maxDistance}
+     */
+    public static boolean crosses(Geometry shape, Hit query, double maxDistance) {
+        return !shape.visitHits(query, maxDistance, FIRST_CROSSING);
+    }
+
     /**
      * {@link #visitHits(Intersectable, Hit, double, HitVisitor)} of {@code ray}.
      *

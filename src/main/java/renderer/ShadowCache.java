@@ -4,7 +4,6 @@ import java.util.Arrays;
 
 import geometries.Geometry;
 import geometries.Hit;
-import geometries.HitVisitor;
 import geometries.Intersectable;
 import geometries.LeanQueries;
 import primitives.Double3;
@@ -21,11 +20,9 @@ import primitives.Double3;
  * intersection test, and they have no side effects (a mesh would be a walk of its own; a user's
  * class may do anything).
  */
-final class ShadowCache implements HitVisitor {
+final class ShadowCache {
     /** Per light (the tracer's light order): the last opaque occluder found, or null. */
     private Geometry[] last = new Geometry[0];
-    /** Whether the shape asked in {@link #blocks} crosses the ray within the distance. */
-    private boolean crossed;
 
     /**
      * The product of kT along {@code shadow} up to {@code distance} toward light {@code light}, into
@@ -52,16 +49,7 @@ final class ShadowCache implements HitVisitor {
         if (light >= last.length) return false;
         Geometry g = last[light];
         if (g == null || !opaque(g)) return false;
-        crossed = false;
-        LeanQueries.visitHits(g, shadow, distance, this); // the walk's acceptance rule, the walk's arithmetic
-        return crossed;
-    }
-
-    /** The probe's visit: one crossing is enough. */
-    @Override
-    public boolean visit(Geometry geometry, double t) {
-        crossed = true;
-        return false;
+        return LeanQueries.crosses(g, shadow, distance); // the walk's acceptance rule, the walk's arithmetic
     }
 
     /** @return whether {@code g} lets no light through, in any channel */
