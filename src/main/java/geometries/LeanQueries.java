@@ -100,7 +100,7 @@ public final class LeanQueries {
      * <p>A call site of its own rather than {@code visitHits}: the JIT profiles the receiver's
      * class at each call site, and one site shared by the render's tree and the probed shapes
      * told C2 "a tree and a sphere" early in a render, then a plane, then a polygon; each new
-     * class threw away the compiled shadow-ray code that had inlined the site (four to nine
+     * class threw away the compiled shadow-ray code that had inlined the site (up to eight
      * times a launch of the Sunflow scene; BENCHMARKS.md, issue 50, twelfth session).
      *
      * @param shape       the shape asked, one primitive

@@ -7,8 +7,8 @@ import java.util.List;
  * The written forms of a scene file's numbers, read character by character rather than with
  * {@code java.util.regex}: a scene of a few hundred objects has thousands of numbers, enough for
  * the optimizing compiler to compile the regex matcher while the render starts, on the one
- * compiler thread a two-core machine has, ahead of the render's own code (40-80 ms of it at each
- * launch of the Sunflow scene, and once 1 s; BENCHMARKS.md, issue 50, twelfth session). Each
+ * compiler thread a two-core machine has, ahead of the render's own code (40-80 ms of that
+ * thread at each launch of the Sunflow scene; BENCHMARKS.md, issue 50, twelfth session). Each
  * method accepts exactly what the regular expression in its comment accepts ({@code \d} is
  * {@code [0-9]} and {@code \s} is {@code [ \t\n\x0B\f\r]}, as in {@code java.util.regex} without
  * its Unicode flag); {@code NumberTextTest} holds them to those expressions.
