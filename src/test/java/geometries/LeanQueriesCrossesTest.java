@@ -33,6 +33,7 @@ class LeanQueriesCrossesTest {
     @DisplayName("any shape, any ray: the walk visits a hit exactly when the probe says it crosses")
     void agreesWithTheWalk() {
         Random random = new Random(20261130);
+        int[] answers = new int[2]; // how many rays the probe answered false, true: both must be common
         for (int i = 0; i < 20_000; ++i) {
             Geometry shape = shape(random);
             Ray ray = new Ray(point(random), new Vector(random.nextDouble(-1, 1), random.nextDouble(-1, 1), random.nextDouble(0.1, 1)));
@@ -44,7 +45,10 @@ class LeanQueriesCrossesTest {
             });
             assertThat(LeanQueries.crosses(shape, Hit.of(ray), bound)).as("%s, %s, bound %s", shape, ray, bound)
                     .isEqualTo(visited[0] > 0);
+            ++answers[visited[0] > 0 ? 1 : 0];
         }
+        assertThat(answers[0]).as("rays that miss").isGreaterThan(1_000);
+        assertThat(answers[1]).as("rays that cross").isGreaterThan(1_000);
     }
 
     private static Point point(Random random) {

@@ -50,13 +50,21 @@ class NumberTextTest {
     void agreesWithTheExpressionsOnRandomTexts() {
         Random random = new Random(20261130L);
         StringBuilder sb = new StringBuilder();
+        int decimals = 0, integers = 0, multiWord = 0; // the texts must reach every method's "yes"
         for (int i = 0; i < 300_000; ++i) {
             sb.setLength(0);
             String from = i % 2 == 0 ? ALPHABET : NUMERIC;
             int length = random.nextInt(9);
             for (int k = 0; k < length; ++k) sb.append(from.charAt(random.nextInt(from.length())));
-            agree(sb.toString());
+            String text = sb.toString();
+            agree(text);
+            if (NumberText.isDecimal(text)) ++decimals;
+            if (NumberText.isInteger(text)) ++integers;
+            if (NumberText.words(text.strip()).length > 1) ++multiWord;
         }
+        assertThat(decimals).as("decimals among the texts").isGreaterThan(1_000);
+        assertThat(integers).as("integers among the texts").isGreaterThan(1_000);
+        assertThat(multiWord).as("lists of several words among the texts").isGreaterThan(1_000);
     }
 
     private static void agree(String text) {
