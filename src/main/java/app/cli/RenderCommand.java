@@ -19,6 +19,7 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
+import java.util.function.Supplier;
 
 import picocli.CommandLine;
 import picocli.CommandLine.Help;
@@ -115,16 +116,20 @@ public final class RenderCommand implements Callable<Integer> {
     // ===== end Spark =====
 
     private final CommandSpec spec;
+    /** Starts the PNG encoder's set-up (EncoderWarmUp.start; a test's own to see a failing one handled). */
+    private final Supplier<EncoderWarmUp> encoderSetUp;
     private final PrintStream out;
     private final PrintStream err;
     private final boolean terminal;
 
     /**
-     * @param out      where progress, the summary and the result go
-     * @param err      where errors go
-     * @param terminal whether {@code out} is an interactive terminal (progress bar) or not (lines)
+     * @param out          where progress, the summary and the result go
+     * @param err          where errors go
+     * @param terminal     whether {@code out} is an interactive terminal (progress bar) or not (lines)
+     * @param encoderSetUp starts the PNG encoder's set-up, once per render, beside the scene's reading
      */
-    RenderCommand(PrintStream out, PrintStream err, boolean terminal) {
+    RenderCommand(PrintStream out, PrintStream err, boolean terminal, Supplier<EncoderWarmUp> encoderSetUp) {
+        this.encoderSetUp = encoderSetUp;
         this.out = out;
         this.err = err;
         this.terminal = terminal;
@@ -201,7 +206,12 @@ public final class RenderCommand implements Callable<Integer> {
 
     /** The command line, with its streams, ready to {@code execute}. */
     static CommandLine commandLine(PrintStream out, PrintStream err, boolean terminal) {
-        CommandLine cl = new CommandLine(new RenderCommand(out, err, terminal).spec);
+        return commandLine(out, err, terminal, EncoderWarmUp::start);
+    }
+
+    /** As {@link #commandLine(PrintStream, PrintStream, boolean)}, with the PNG encoder's set-up {@code encoderSetUp} starts. */
+    static CommandLine commandLine(PrintStream out, PrintStream err, boolean terminal, Supplier<EncoderWarmUp> encoderSetUp) {
+        CommandLine cl = new CommandLine(new RenderCommand(out, err, terminal, encoderSetUp).spec);
         cl.addSubcommand("migrate", new CommandLine(new MigrateCommand(out, err).spec()));
         UsageMessageSpec usage = cl.getCommandSpec().usageMessage().footerHeading("%nLimits (docs/scene-format.md, \"Limits\"):%n");
         // The footer as picocli writes one (Help.footer), its lines made only then (see limits()).
@@ -245,6 +255,8 @@ public final class RenderCommand implements Callable<Integer> {
         readOptions();
         checkOptions();
         if (spark != null || !frames.isEmpty()) return spark();
+        // Beside the scene's reading, on the core it leaves idle; awaited before the render.
+        EncoderWarmUp encoder = encoderSetUp.get();
         Job job;
         try {
             job = scene == null ? showcase() : load(scene, meshRoot);
@@ -295,6 +307,16 @@ public final class RenderCommand implements Callable<Integer> {
             return BAD_INPUT;
         }
 
+        try {
+            encoder.await();
+        } catch (IOException e) {
+            err.println(NAME + ": " + Messages.visible(e.getMessage()));
+            return FAILURE;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            err.println(NAME + ": interrupted before the render");
+            return FAILURE;
+        }
         try {
             camera.render();
         } catch (OutOfMemoryError e) {
