@@ -13,10 +13,12 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
 /**
  * The PNG encoder's one-time set-up, done on a thread of its own while the scene is read: an
  * 8x8 image encoded to nowhere. The first PNG a JVM writes first loads the JDK's AWT library and
- * fills the image I/O registry; on the main thread, after the render, that took about 40 ms of a
- * launch (JDK 17: {@code java.awt.Rectangle}'s and {@code ImageIO}'s initialisers), time in which
- * nothing else runs. While the scene is read the second core is mostly idle. A 1-sample render of
- * the 137-primitive Sunflow scene took 0.96 of the time with it (BENCHMARKS.md, issue 50,
+ * fills the image I/O registry ({@code java.awt.Rectangle}'s and {@code ImageIO}'s initialisers
+ * the largest parts). On the main thread after the render, where nothing else runs, the write of a
+ * 1-sample render of the 137-primitive Sunflow scene took 86 ms; with the set-up done beforehand,
+ * 63 ms (JDK 17, medians of 12 launches). While the scene is read, the second core is mostly
+ * idle. With it, that launch took 0.96 of the time (JDK 17, 30 rotated pairs); on JDK 25, whose
+ * start-up cache holds these classes linked, nothing beyond the noise (BENCHMARKS.md, issue 50,
  * thirteenth session).
  *
  * <p>The render waits for it ({@link #await}) before it starts, so that the set-up never takes a
