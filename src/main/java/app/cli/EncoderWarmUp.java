@@ -14,12 +14,12 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
  * The PNG encoder's one-time set-up, done on a thread of its own while the scene is read: an
  * 8x8 image encoded to nowhere. The first PNG a JVM writes first loads the JDK's AWT library and
  * fills the image I/O registry ({@code java.awt.Rectangle}'s and {@code ImageIO}'s initialisers
- * the largest parts). On the main thread after the render, where nothing else runs, the write of a
- * 1-sample render of the 137-primitive Sunflow scene took 86 ms; with the set-up done beforehand,
- * 63 ms (JDK 17, medians of 12 launches). While the scene is read, the second core is mostly
- * idle. With it, that launch took 0.96 of the time (JDK 17, 30 rotated pairs); on JDK 25, whose
- * start-up cache holds these classes linked, nothing beyond the noise (BENCHMARKS.md, issue 50,
- * thirteenth session).
+ * the largest parts). That ran on the main thread after the render, where nothing else runs. In a
+ * 1-sample render of the 137-primitive Sunflow scene (JDK 17, 16 launches each, with progress
+ * lines) the write took 95 ms before and 60 ms after; the wait before the render grew by 36 ms,
+ * as the second core is not always idle while the scene is read. With {@code --quiet} the launch
+ * took 0.975 of the time (30 rotated pairs); on JDK 25, whose start-up cache holds these classes
+ * linked, nothing beyond the noise (BENCHMARKS.md, issue 50, thirteenth session).
  *
  * <p>The render waits for it ({@link #await}) before it starts, so that the set-up never takes a
  * core from the render's threads, and so that an encoder that cannot work in this JVM fails the
