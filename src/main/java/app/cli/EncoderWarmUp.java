@@ -16,8 +16,8 @@ import javax.imageio.stream.MemoryCacheImageOutputStream;
  * fills the image I/O registry ({@code java.awt.Rectangle}'s and {@code ImageIO}'s initialisers
  * the largest parts). That ran on the main thread after the render, where nothing else runs. In a
  * 1-sample render of the 137-primitive Sunflow scene (JDK 17, 16 launches each, with progress
- * lines) the write took 95 ms before and 60 ms after; the wait before the render grew by 36 ms,
- * as the second core is not always idle while the scene is read. With {@code --quiet} the launch
+ * lines) the write took 95 ms before and 60 ms after, while the time before the render grew by
+ * 36 ms: the second core is not always idle while the scene is read. With {@code --quiet} the launch
  * took 0.975 of the time (30 rotated pairs); on JDK 25, whose start-up cache holds these classes
  * linked, nothing beyond the noise (BENCHMARKS.md, issue 50, thirteenth session).
  *
