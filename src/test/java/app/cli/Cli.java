@@ -13,6 +13,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
 
 import picocli.CommandLine;
 
@@ -59,9 +60,14 @@ final class Cli {
     }
 
     static Run run(boolean terminal, String... args) {
+        return run(terminal, EncoderWarmUp::start, args);
+    }
+
+    /** As {@link #run(boolean, String...)}, with the PNG encoder's set-up that {@code encoderSetUp} starts. */
+    static Run run(boolean terminal, Supplier<EncoderWarmUp> encoderSetUp, String... args) {
         ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
         int code = RenderCommand.commandLine(new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8), terminal).execute(args);
+                new PrintStream(err, true, StandardCharsets.UTF_8), terminal, encoderSetUp).execute(args);
         return new Run(code, out.toString(StandardCharsets.UTF_8), err.toString(StandardCharsets.UTF_8));
     }
 

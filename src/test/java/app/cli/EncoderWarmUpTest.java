@@ -23,7 +23,7 @@ class EncoderWarmUpTest {
     @DisplayName("the set-up's work")
     class Work {
         @Test
-        @DisplayName("runs once, on a daemon thread of its own, and await returns only once it is done")
+        @DisplayName("runs once, on a daemon thread of its own; await blocks until it is done")
         void runsOnItsOwnThread() throws Exception {
             AtomicReference<Thread> ranOn = new AtomicReference<>();
             CountDownLatch release = new CountDownLatch(1);
@@ -34,7 +34,19 @@ class EncoderWarmUpTest {
                 ++runs[0];
                 return null;
             });
+            Thread waiter = new Thread(() -> {
+                try {
+                    warmUp.await();
+                } catch (IOException | InterruptedException e) {
+                    throw new AssertionError(e);
+                }
+            });
+            waiter.start();
+            while (waiter.getState() != Thread.State.WAITING && waiter.getState() != Thread.State.TERMINATED)
+                Thread.onSpinWait();
+            assertThat(waiter.getState()).as("await blocks while the work has not finished").isEqualTo(Thread.State.WAITING);
             release.countDown();
+            waiter.join();
             warmUp.await();
             warmUp.await();
             assertThat(ranOn.get()).isNotSameAs(Thread.currentThread());

@@ -5,10 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.catchThrowableOfType;
 
 import java.awt.image.BufferedImage;
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.InvalidPathException;
 import java.nio.file.Path;
@@ -478,17 +475,13 @@ class RenderCommandTest {
     @Test
     @DisplayName("a PNG encoder that cannot work: exit code 1 before the render starts, one line, no image")
     void encoderFailure() throws IOException {
-        ByteArrayOutputStream out = new ByteArrayOutputStream(), err = new ByteArrayOutputStream();
         Path png = dir.resolve("out.png");
-        int code = RenderCommand.commandLine(new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8), false,
-                () -> EncoderWarmUp.start(() -> {
-                    throw new IOException("no PNG writer available");
-                })).execute(small().toString(), "-o", png.toString());
-        assertThat(code).isEqualTo(1);
-        assertThat(err.toString(StandardCharsets.UTF_8))
-                .isEqualTo("raytracer: cannot encode PNG images in this JVM: java.io.IOException: no PNG writer available\n");
-        assertThat(out.toString(StandardCharsets.UTF_8)).as("no progress: the render never started").isEmpty();
+        Run r = Cli.run(false, () -> EncoderWarmUp.start(() -> {
+            throw new IOException("no PNG writer available");
+        }), small().toString(), "-o", png.toString());
+        assertThat(r.exitCode()).isEqualTo(1);
+        assertThat(r.err()).isEqualTo("raytracer: cannot encode PNG images in this JVM: java.io.IOException: no PNG writer available\n");
+        assertThat(r.out()).as("no progress: the render never started").isEmpty();
         assertThat(png).doesNotExist();
     }
 }
