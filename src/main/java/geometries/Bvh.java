@@ -525,8 +525,7 @@ public final class Bvh extends Intersectable {
             if (!u.visitHits(query, maxDistance, visitor)) return false;
         double ox = query.ox, oy = query.oy, oz = query.oz;
         double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
-        // Boxes are tested a little past maxDistance: a hit exactly at it still counts (course rule).
-        double limit = maxDistance * (1 + 1e-9) + 1e-9;
+        double limit = boxLimit(maxDistance);
         WideTree w = wide;
         if (w != null) {
             // No test of the root's box first: most shadow rays start inside it, and C2 compiled
@@ -556,6 +555,64 @@ public final class Bvh extends Intersectable {
             }
             if (count > 0 && !visitInLeaf(BvhNodes.first(nd, rec), count, query, maxDistance, visitor)) return false;
             ++n; // into an inner node's left child, or past a leaf
+        }
+        return true;
+    }
+
+    /** How far along a ray the walks test boxes: a little past maxDistance, so that a hit exactly at it still counts (course rule). */
+    private static double boxLimit(double maxDistance) {
+        return maxDistance * (1 + 1e-9) + 1e-9;
+    }
+
+    /**
+     * The leaves a {@link ShadowIndex} sorts, as node numbers: every leaf node of the binary
+     * tree, whose box holds its primitives.
+     *
+     * @param most the most leaves wanted
+     * @return the leaf nodes, or null when there are none or more than {@code most}, or when some
+     *         shape may not be asked more often than the walk asks it (a user's shape may count
+     *         its calls)
+     */
+    int[] shadowIndexLeaves(int most) {
+        int leaves = 0;
+        for (int n = 0; n < nodeCount; ++n)
+            if (BvhNodes.count(node, BvhNodes.at(n)) > 0) ++leaves;
+        if (leaves == 0 || leaves > most) return null;
+        for (Intersectable u : unbounded)
+            if (!(u instanceof Geometry g && g.isLibraryShape())) return null;
+        for (Intersectable o : owner)
+            if (!(o instanceof Geometry g && g.isLibraryShape())) return null;
+        int[] found = new int[leaves];
+        for (int n = 0, i = 0; n < nodeCount; ++n)
+            if (BvhNodes.count(node, BvhNodes.at(n)) > 0) found[i++] = n;
+        return found;
+    }
+
+    /** Copies node {@code n}'s box, min x, y, z then max x, y, z, into {@code box}. */
+    void leafBox(int n, float[] box) {
+        System.arraycopy(node, BvhNodes.at(n), box, 0, 6);
+    }
+
+    /**
+     * Whether the any-hit walk ({@link #visitHits(Hit, double, HitVisitor)}) would find no hit along
+     * {@code query} within {@code maxDistance}, given that only the leaf nodes
+     * {@code leaves[from..to)} can hold one: the shapes without a box, then those leaves, each
+     * with the walk's own tests (its box, then its primitives).
+     */
+    boolean clearOf(int[] leaves, int from, int to, Hit query, double maxDistance) {
+        HitVisitor first = LeanQueries.FIRST_CROSSING;
+        for (Intersectable u : unbounded)
+            if (!u.visitHits(query, maxDistance, first)) return false;
+        if (from == to) return true;
+        double ox = query.ox, oy = query.oy, oz = query.oz;
+        double ix = BoundingBox.inverse(query.dx), iy = BoundingBox.inverse(query.dy), iz = BoundingBox.inverse(query.dz);
+        double limit = boxLimit(maxDistance);
+        float[] nd = node;
+        for (int i = from; i < to; ++i) {
+            int n = leaves[i];
+            if (entry(n, ox, oy, oz, ix, iy, iz, limit) == Double.POSITIVE_INFINITY) continue;
+            int at = BvhNodes.at(n);
+            if (!visitInLeaf(BvhNodes.first(nd, at), BvhNodes.count(nd, at), query, maxDistance, first)) return false;
         }
         return true;
     }

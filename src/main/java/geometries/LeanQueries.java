@@ -89,8 +89,37 @@ public final class LeanQueries {
         return shape.visitHits(query, maxDistance, visitor);
     }
 
+    /**
+     * The light buffer of a point light at (x, y, z) over {@code world}: its shadow rays are then
+     * proved clear from a few leaves ({@link ShadowIndex#clear}).
+     *
+     * @param world the scene as the render traces it
+     * @param x     the light's position, x coordinate
+     * @param y     its y coordinate
+     * @param z     its z coordinate
+     * @return the index, or null where it would not pay or cannot be exact (a world that is not a
+     *         tree, a user's shape in it, a tree too large for its cells)
+     */
+    public static ShadowIndex shadowIndexFrom(Intersectable world, double x, double y, double z) {
+        return world instanceof Bvh tree ? ShadowIndex.fromPoint(tree, x, y, z) : null;
+    }
+
+    /**
+     * The light buffer of a directional light whose shadow rays go along the unit vector
+     * (dx, dy, dz), bit for bit as the shadow rays' own direction.
+     *
+     * @param world the scene as the render traces it
+     * @param dx    the shadow rays' direction (toward the light), x component
+     * @param dy    its y component
+     * @param dz    its z component
+     * @return the index, or null as {@link #shadowIndexFrom}
+     */
+    public static ShadowIndex shadowIndexAlong(Intersectable world, double dx, double dy, double dz) {
+        return world instanceof Bvh tree ? ShadowIndex.along(tree, dx, dy, dz) : null;
+    }
+
     /** The probe's visitor: one crossing is the answer, so the walk stops at the first. */
-    private static final HitVisitor FIRST_CROSSING = (geometry, t) -> false;
+    static final HitVisitor FIRST_CROSSING = (geometry, t) -> false;
 
     /**
      * Whether {@code shape} crosses the ray {@code query} carries at a distance the any-hit walk

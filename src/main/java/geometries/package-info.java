@@ -25,7 +25,9 @@
  * change count and nesting), {@code MeshChecks} (a mesh loader's degenerate-triangle test);
  * {@code Hit}, the per-thread record a query fills without allocating;
  * {@code HitVisitor}, which receives an any-hit walk's hits; {@code Bvh}, which the tracer asks
- * for ({@code Bvh.of(scene.geometries)}) and then queries like any intersectable; and
+ * for ({@code Bvh.of(scene.geometries)}) and then queries like any intersectable;
+ * {@code ShadowIndex}, a light's buffer over a tree's leaves, which proves a shadow ray clear from
+ * the few leaves of its cell; and
  * {@code BoundingBox}, whose slab test ({@code entry}, one call per box) the tree's node test shares.</li>
  * <li>Internal, package-private: {@code BvhLeaf}, what a tree asks of its leaves (the superclass of
  * {@code Intersectable}, out of the course's sight); {@code BvhBuilder}, which builds a tree

@@ -6,6 +6,7 @@ import geometries.Geometry;
 import geometries.Hit;
 import geometries.Intersectable;
 import geometries.LeanQueries;
+import geometries.ShadowIndex;
 import primitives.Double3;
 
 /**
@@ -27,15 +28,18 @@ final class ShadowCache {
     /**
      * The product of kT along {@code shadow} up to {@code distance} toward light {@code light}, into
      * {@code tr} (as {@code LeanQueries.visitHits(world, shadow, distance, tr.reset())} would leave it): 0 at once
-     * when the light's last opaque occluder crosses the ray, else the walk, whose opaque occluder,
-     * if it found one, is kept for the next ray.
+     * when the light's last opaque occluder crosses the ray, the reset value when the light's
+     * {@code index} (null: none) proves the ray clear, else the walk, whose opaque occluder, if it
+     * found one, is kept for the next ray.
      */
-    void trace(Intersectable world, Hit shadow, double distance, int light, Transmittance tr) {
+    void trace(Intersectable world, Hit shadow, double distance, int light, ShadowIndex index, Transmittance tr) {
         tr.reset();
         if (blocks(light, shadow, distance)) {
             tr.product.setZero();
             return;
         }
+        // A lit point, most shadow rays: the walk would visit nothing, and tr stays as reset.
+        if (index != null && index.clear(shadow, distance)) return;
         LeanQueries.visitHits(world, shadow, distance, tr);
         Geometry occluder = tr.opaque;
         // A mesh is kept out: asking it again would be a walk of its own over its triangles.

@@ -4,8 +4,11 @@ import geometries.Geometry;
 import geometries.Hit;
 import geometries.Intersectable;
 import geometries.LeanQueries;
+import geometries.ShadowIndex;
+import lighting.DirectionalLight;
 import lighting.LightQueries;
 import lighting.LightSource;
+import lighting.PointLight;
 import primitives.Color;
 import primitives.Double3;
 import primitives.Kernels;
@@ -70,6 +73,8 @@ final class WhittedShader implements PreparedTracer {
     /** The scene's geometry as the render queries it: a BVH or the flat list. */
     private final Intersectable world;
     private final LightSource[] lights;
+    /** Per light, its light buffer, or null (a soft or a user's light, a world the index does not take). */
+    private final ShadowIndex[] shadowIndexes;
     /** Rays of the first glossy or diffuse-glass beam on a camera ray's path (each bounce below it traces one). */
     private final int beamSize;
     /** Shadow rays toward a light with a radius. */
@@ -81,11 +86,37 @@ final class WhittedShader implements PreparedTracer {
         this.ambient = ambient;
         this.world = world;
         this.lights = lights;
+        this.shadowIndexes = shadowIndexes(world, lights);
         this.beamSize = beamSize;
         this.shadowSamples = shadowSamples;
     }
 
     /** The scene's tree may take its vector walk from the first ray ({@link LeanQueries#expectCameraRays}). */
+    /**
+     * The light buffer of each library light whose shadow ray is one ray (a point, spot or
+     * directional light of radius 0), over {@code world}. The index answers for a ray's geometry
+     * only, checking that the ray ends at the light or runs along it, so a light it was built for
+     * wrongly would only get no help from it.
+     */
+    private static ShadowIndex[] shadowIndexes(Intersectable world, LightSource[] lights) {
+        ShadowIndex[] indexes = new ShadowIndex[lights.length];
+        double[] l = new double[3];
+        for (int i = 0; i < lights.length; ++i) {
+            LightSource light = lights[i];
+            if (!LightQueries.isLibraryLight(light) || light.getRadius() != 0) continue;
+            if (light instanceof DirectionalLight) {
+                // The shadow rays' direction as Hit.secondary makes it: -l, normalized.
+                LightQueries.getL(light, 0, 0, 0, l);
+                Kernels.normalize(-l[0], -l[1], -l[2], l);
+                indexes[i] = LeanQueries.shadowIndexAlong(world, l[0], l[1], l[2]);
+            } else if (light instanceof PointLight) {
+                Point p = light.getPosition();
+                indexes[i] = LeanQueries.shadowIndexFrom(world, p.getX(), p.getY(), p.getZ());
+            }
+        }
+        return indexes;
+    }
+
     @Override
     public void expectCameraRays(long cameraRays) {
         LeanQueries.expectCameraRays(world, cameraRays);
@@ -206,7 +237,8 @@ final class WhittedShader implements PreparedTracer {
         if (radius == 0) {
             ctx.requireWithinBudget(1); // thousands of lights at each of a thousand shaded points
             ctx.shadowRays++;
-            cache.trace(w, ctx.shadow.secondary(px, py, pz, -lx, -ly, -lz, nx, ny, nz), LightQueries.getDistance(light, px, py, pz), li, walk);
+            cache.trace(w, ctx.shadow.secondary(px, py, pz, -lx, -ly, -lz, nx, ny, nz), LightQueries.getDistance(light, px, py, pz), li,
+                    shadowIndexes[li], walk);
             return walk.product;
         }
         // Soft shadow: stratified points on the disk of the light facing p.
@@ -233,7 +265,7 @@ final class WhittedShader implements PreparedTracer {
             // A point of the disk below the surface's horizon sends no light to p.
             if (dist == 0 || (dx * nx + dy * ny + dz * nz) * side <= 0) continue;
             ctx.shadowRays++;
-            cache.trace(w, ctx.shadow.secondary(px, py, pz, dx, dy, dz, nx, ny, nz), dist, li, walk);
+            cache.trace(w, ctx.shadow.secondary(px, py, pz, dx, dy, dz, nx, ny, nz), dist, li, null, walk); // no index: the rays end across a disk
             sum.add(walk.product);
         }
         return sum.reduce(shadowSamples);

@@ -58,7 +58,8 @@
  * <li>The shading, package-private under {@code RayTracerBasic}: {@code WhittedShader} (Phong per
  * light, shadows, reflection and refraction by one ray or a beam, colours in one small mutable
  * {@code primitives.Rgb} per recursion level), {@code Transmittance} (the kT product of a shadow
- * ray's any-hit walk) and {@code ShadowCache} (the occluder a shadow ray found last).</li>
+ * ray's any-hit walk) and {@code ShadowCache} (the occluder a shadow ray found last, then the
+ * light's {@code geometries.ShadowIndex}, then the walk).</li>
  * <li>Around the write: {@code InFlightFile} (a PNG is written to a temporary file and moved into
  * place) and {@code CallingTest} (the image name a 2024&ndash;25 flow takes from the JUnit test).</li>
  * </ul>

@@ -89,7 +89,7 @@ class ShadowCacheTest {
             a.ray(px, py, pz, dx, dy, dz);
             b.ray(px, py, pz, dx, dy, dz);
             int walks = world.walks();
-            cache.trace(world, a, distance, light, cached);
+            cache.trace(world, a, distance, light, null, cached);
             if (world.walks() == walks) ++blocked;
             LeanQueries.visitHits(world, b, distance, walked.reset());
             assertThat(channels(cached)).as("ray %d", i)
@@ -108,9 +108,9 @@ class ShadowCacheTest {
 
         /** Traces the ray twice toward light 0: @return whether the second time was answered without a walk */
         private boolean secondAnswered() {
-            cache.trace(world, ray, 100, 0, tr);
+            cache.trace(world, ray, 100, 0, null, tr);
             int walks = world.walks();
-            cache.trace(world, ray, 100, 0, tr);
+            cache.trace(world, ray, 100, 0, null, tr);
             assertThat(channels(tr)).containsExactly(0, 0, 0);
             return world.walks() == walks;
         }
@@ -129,9 +129,9 @@ class ShadowCacheTest {
             assertThat(secondAnswered()).isFalse();
             CountingGeometries meshWorld = new CountingGeometries();
             meshWorld.add(new TriangleMesh(new double[] { -1, -1, 0, 2, -1, 0, -1, 2, 0 }, new int[] { 0, 1, 2 }));
-            cache.trace(meshWorld, ray, 100, 0, tr);
+            cache.trace(meshWorld, ray, 100, 0, null, tr);
             int walks = meshWorld.walks();
-            cache.trace(meshWorld, ray, 100, 0, tr);
+            cache.trace(meshWorld, ray, 100, 0, null, tr);
             assertThat(meshWorld.walks()).isEqualTo(walks + 1);
         }
 
@@ -140,9 +140,9 @@ class ShadowCacheTest {
         void madeTransparent() {
             Sphere s = new Sphere(Point.ZERO, 1);
             world.add(s);
-            cache.trace(world, ray, 100, 0, tr);
+            cache.trace(world, ray, 100, 0, null, tr);
             s.setMaterial(new Material().setKt(0.5));
-            cache.trace(world, ray, 100, 0, tr);
+            cache.trace(world, ray, 100, 0, null, tr);
             assertThat(tr.product.r()).isEqualTo(0.25); // the ray crosses the sphere's surface twice
         }
 
@@ -150,12 +150,12 @@ class ShadowCacheTest {
         @DisplayName("each light keeps its own occluder; a ray the kept one does not cross is walked")
         void perLight() {
             world.add(new Sphere(Point.ZERO, 1));
-            cache.trace(world, ray, 100, 0, tr);
+            cache.trace(world, ray, 100, 0, null, tr);
             int walks = world.walks();
-            cache.trace(world, ray, 100, 1, tr); // another light: nothing kept for it yet
+            cache.trace(world, ray, 100, 1, null, tr); // another light: nothing kept for it yet
             assertThat(world.walks()).isEqualTo(walks + 1);
             Hit past = new RayHit().ray(5, 0, -10, 0, 0, 1); // misses the sphere
-            cache.trace(world, past, 100, 0, tr);
+            cache.trace(world, past, 100, 0, null, tr);
             assertThat(world.walks()).isEqualTo(walks + 2);
             assertThat(tr.product.r()).isEqualTo(1);
         }
@@ -164,8 +164,8 @@ class ShadowCacheTest {
         @DisplayName("an occluder beyond the light does not count: the distance rule is the walk's")
         void beyondTheLight() {
             world.add(new Sphere(Point.ZERO, 1));
-            cache.trace(world, ray, 100, 0, tr);
-            cache.trace(world, ray, 8.5, 0, tr); // the sphere is entered at 9
+            cache.trace(world, ray, 100, 0, null, tr);
+            cache.trace(world, ray, 8.5, 0, null, tr); // the sphere is entered at 9
             assertThat(tr.product.r()).isEqualTo(1);
         }
     }
