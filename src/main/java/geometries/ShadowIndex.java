@@ -6,10 +6,11 @@ import primitives.Vector;
 /**
  * Haines and Greenberg's light buffer (1986) for one light of a render: the leaves of a scene's
  * tree sorted into cells by where a shadow ray toward that light can meet them. A point light's
- * cells are the directions from the light (the six faces of a cube around it, {@link #CELLS}²
- * each); a directional light's are columns along its direction (a {@link #CELLS}² grid over the
- * scene seen from the light). A lit point's shadow ray, most shadow rays of a scene, is then
- * proved clear by the few leaves of its cell, instead of a walk from the tree's root.
+ * cells are directions from the light: on each of the six faces of a cube around it, a
+ * {@link #CELLS}² grid over the part of the face the scene covers. A directional light's are
+ * columns along its direction: a {@link #CELLS}² grid over the scene seen from the light. A lit
+ * point's shadow ray, most shadow rays of a scene, is then proved clear by the few leaves of its
+ * cell, instead of a walk from the tree's root.
  *
  * <p>Exact: {@link #clear} answers true only when the tree's any-hit walk
  * ({@link Bvh#visitHits}) would give its visitor no hit. It runs the walk's own tests (the box
@@ -23,7 +24,7 @@ import primitives.Vector;
  *         {@link LeanQueries#shadowIndexAlong})
  */
 public final class ShadowIndex {
-    /** Cells per side: of each cube face (a point light), of the grid (a directional light). */
+    /** Cells per side of a face's grid. */
     static final int CELLS = 32;
     /**
      * The most leaves a cell holds; a fuller cell answers false. A clear ray's walk costs about six
@@ -35,7 +36,7 @@ public final class ShadowIndex {
      * moved off the surface by {@link Ray#DELTA}, so the ray ends that far from the light, not on it.
      */
     static final double REACH = 2 * Ray.DELTA;
-    /** A cell answer: more leaves than {@link #MOST_LEAVES}, so the caller walks. */
+    /** A cell's one item when it has more than {@link #MOST_LEAVES} leaves: the caller walks. */
     private static final int FULL = -1;
     /**
      * How far from the origin a shadow ray may start, in scene sizes, and stay the index's: so
@@ -46,66 +47,70 @@ public final class ShadowIndex {
     private final Bvh tree;
     /** A point light's position, or null for a directional light. */
     private final double[] light;
-    /** A directional light's columns, or null for a point light. */
-    private final Columns columns;
+    /** A directional light's shadow-ray direction (bit for bit) and the two unit vectors across it; null for a point light. */
+    private final double[] columns;
     /** The largest coordinate a ray's head may have ({@link #FAR} scene sizes). */
     private final double far;
+    /** The faces' grids (six for a point light, one for a directional light). */
+    private final Grids grids;
     /** Cell c holds the leaves (node numbers) items[start[c]] to items[start[c + 1] - 1], or the one item {@link #FULL}. */
     private final int[] start;
     private final int[] items;
 
-    private ShadowIndex(Bvh tree, double[] light, Columns columns, double far, int[] start, int[] items) {
+    private ShadowIndex(Bvh tree, double[] light, double[] columns, double far, Grids grids, int[] start, int[] items) {
         this.tree = tree;
         this.light = light;
         this.columns = columns;
         this.far = far;
+        this.grids = grids;
         this.start = start;
         this.items = items;
     }
 
     /**
-     * A directional light's cells: the scene seen along the shadow rays' direction
-     * (dx, dy, dz), on two unit vectors u and v across it, as a {@link #CELLS}² grid over
-     * [u0, u1] × [v0, v1].
+     * Per face, a {@link #CELLS}² grid over the rectangle [aLow, aHigh] × [bLow, bHigh] of the
+     * face's two coordinates that the leaves reach. A coordinate maps to its cell monotonically,
+     * by the same arithmetic in the build and in the query, so a leaf's range of cells holds every
+     * coordinate in its range.
      */
-    private static final class Columns {
-        final double dx, dy, dz, ux, uy, uz, vx, vy, vz, u0, u1, v0, v1;
-        /** Cells per unit of u and of v. */
-        private final double perU, perV;
+    private static final class Grids {
+        private final double[] aLow, aHigh, bLow, bHigh, aPer, bPer;
 
-        Columns(Vector d, Vector u, Vector v, double u0, double u1, double v0, double v1) {
-            dx = d.getX();
-            dy = d.getY();
-            dz = d.getZ();
-            ux = u.getX();
-            uy = u.getY();
-            uz = u.getZ();
-            vx = v.getX();
-            vy = v.getY();
-            vz = v.getZ();
-            this.u0 = u0;
-            this.u1 = u1;
-            this.v0 = v0;
-            this.v1 = v1;
-            // A flat grid (a scene seen edge-on) keeps finite cells per unit: its one row is cell 0.
-            perU = CELLS / Math.max(u1 - u0, Double.MIN_NORMAL);
-            perV = CELLS / Math.max(v1 - v0, Double.MIN_NORMAL);
+        Grids(double[] span) {
+            int faces = span.length / 4;
+            aLow = new double[faces];
+            aHigh = new double[faces];
+            bLow = new double[faces];
+            bHigh = new double[faces];
+            aPer = new double[faces];
+            bPer = new double[faces];
+            for (int f = 0; f < faces; ++f) {
+                aLow[f] = span[4 * f];
+                aHigh[f] = span[4 * f + 1];
+                bLow[f] = span[4 * f + 2];
+                bHigh[f] = span[4 * f + 3];
+                // A flat span (a face the scene meets edge-on) keeps finite cells per unit.
+                aPer[f] = CELLS / Math.max(aHigh[f] - aLow[f], Double.MIN_NORMAL);
+                bPer[f] = CELLS / Math.max(bHigh[f] - bLow[f], Double.MIN_NORMAL);
+            }
         }
 
-        /** @return the column of a ray from (x, y, z), or -1 outside the grid (no leaf there) */
-        int cellOf(double x, double y, double z) {
-            double u = x * ux + y * uy + z * uz, v = x * vx + y * vy + z * vz;
-            return u < u0 || u > u1 || v < v0 || v > v1 ? -1 : uCell(u) * CELLS + vCell(v);
+        /** @return the cell of coordinates (a, b) on face {@code face}, or -1 outside its span (no leaf there) */
+        int cell(int face, double a, double b) {
+            if (a < aLow[face] || a > aHigh[face] || b < bLow[face] || b > bHigh[face]) return -1;
+            return (face * CELLS + aCell(face, a)) * CELLS + bCell(face, b);
         }
 
-        /** @return the grid's column of u (monotone in u, clamped to the grid: a box's interval covers each u it holds) */
-        int uCell(double u) {
-            return clamp((int) ((u - u0) * perU));
+        int aCell(int face, double a) {
+            return clamp((int) ((a - aLow[face]) * aPer[face]));
         }
 
-        /** @return the grid's row of v, as {@link #uCell} */
-        int vCell(double v) {
-            return clamp((int) ((v - v0) * perV));
+        int bCell(int face, double b) {
+            return clamp((int) ((b - bLow[face]) * bPer[face]));
+        }
+
+        private static int clamp(int cell) {
+            return cell < 0 ? 0 : Math.min(cell, CELLS - 1);
         }
     }
 
@@ -117,21 +122,24 @@ public final class ShadowIndex {
      */
     static ShadowIndex fromPoint(Bvh tree, double x, double y, double z) {
         if (!(Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z))) return null;
-        int cells = 6 * CELLS * CELLS;
-        double[][] boxes = leafBoxes(tree, cells);
+        double[][] boxes = leafBoxes(tree, 6);
         if (boxes == null) return null;
         double scale = scale(boxes, x, y, z);
-        // Each box padded by the reach, relative to the light.
+        // Each box padded by the reach, relative to the light; then, per face, the ranges of the
+        // directions toward it.
         double pad = REACH + 1e-6 * (1 + scale);
-        for (double[] b : boxes) {
+        double[][] ranges = new double[boxes.length][];
+        for (int i = 0; i < boxes.length; ++i) {
+            double[] b = boxes[i];
             b[0] -= x + pad;
             b[1] -= y + pad;
             b[2] -= z + pad;
             b[3] += pad - x;
             b[4] += pad - y;
             b[5] += pad - z;
+            ranges[i] = faceRanges(b);
         }
-        return sort(tree, new double[] { x, y, z }, null, FAR * (1 + scale), boxes, cells);
+        return sort(tree, new double[] { x, y, z }, null, FAR * (1 + scale), boxes, ranges, 6);
     }
 
     /**
@@ -142,8 +150,7 @@ public final class ShadowIndex {
      */
     static ShadowIndex along(Bvh tree, double x, double y, double z) {
         if (!(Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z)) || x == 0 && y == 0 && z == 0) return null;
-        int cells = CELLS * CELLS;
-        double[][] boxes = leafBoxes(tree, cells);
+        double[][] boxes = leafBoxes(tree, 1);
         if (boxes == null) return null;
         double scale = scale(boxes, x, y, z), margin = 1e-9 * (1 + scale);
         // Two unit vectors across the direction: u = d × (the axis least along d), v = d × u.
@@ -151,29 +158,22 @@ public final class ShadowIndex {
         Vector d = new Vector(x, y, z);
         Vector u = d.crossProduct(ax <= ay && ax <= az ? Vector.AXIS_X : ay <= az ? Vector.AXIS_Y : Vector.AXIS_Z).normalize();
         Vector v = d.crossProduct(u).normalize();
-        // Each box seen along the direction: its interval on u and on v, widened by the margin;
-        // the grid spans them all.
-        double uLow = Double.POSITIVE_INFINITY, uHigh = Double.NEGATIVE_INFINITY;
-        double vLow = Double.POSITIVE_INFINITY, vHigh = Double.NEGATIVE_INFINITY;
-        for (double[] b : boxes) {
-            double ul = project(u, b, false) - margin, uh = project(u, b, true) + margin;
-            double vl = project(v, b, false) - margin, vh = project(v, b, true) + margin;
-            b[0] = ul;
-            b[1] = uh;
-            b[2] = vl;
-            b[3] = vh;
-            uLow = Math.min(uLow, ul);
-            uHigh = Math.max(uHigh, uh);
-            vLow = Math.min(vLow, vl);
-            vHigh = Math.max(vHigh, vh);
-        }
-        return sort(tree, null, new Columns(d, u, v, uLow, uHigh, vLow, vHigh), FAR * (1 + scale), boxes, cells);
+        // Each box seen along the direction: its interval on u and on v, widened by the margin.
+        double[][] ranges = new double[boxes.length][];
+        for (int i = 0; i < boxes.length; ++i)
+            ranges[i] = new double[] { project(u, boxes[i], false) - margin, project(u, boxes[i], true) + margin,
+                    project(v, boxes[i], false) - margin, project(v, boxes[i], true) + margin };
+        double[] columns = { x, y, z, u.getX(), u.getY(), u.getZ(), v.getX(), v.getY(), v.getZ() };
+        return sort(tree, null, columns, FAR * (1 + scale), boxes, ranges, 1);
     }
 
-    /** @return the boxes (min x, y, z, max x, y, z) of the tree's leaves, or null when the index cannot take them or more than 4 a cell */
-    private static double[][] leafBoxes(Bvh tree, int cells) {
+    /**
+     * @return the boxes (min x, y, z, max x, y, z, then the node number) of the tree's leaves, or
+     *         null when the index cannot take them, or more than four a cell ({@code faces} grids)
+     */
+    private static double[][] leafBoxes(Bvh tree, int faces) {
         // More leaves than that would fill most cells (a mesh): not worth their sorting.
-        int[] leaves = tree.shadowIndexLeaves(4 * cells);
+        int[] leaves = tree.shadowIndexLeaves(4 * faces * CELLS * CELLS);
         if (leaves == null) return null;
         double[][] boxes = new double[leaves.length][7];
         float[] box = new float[6];
@@ -181,7 +181,7 @@ public final class ShadowIndex {
             tree.leafBox(leaves[i], box);
             for (int k = 0; k < 6; ++k)
                 boxes[i][k] = box[k];
-            boxes[i][6] = leaves[i]; // the node number, exact in a double
+            boxes[i][6] = leaves[i]; // exact in a double
         }
         return boxes;
     }
@@ -195,12 +195,82 @@ public final class ShadowIndex {
         return scale;
     }
 
-    /** Sorts the leaves into the cells their boxes {@code b} reach (see {@link #cover}): the index, or null when most cells are full. */
-    private static ShadowIndex sort(Bvh tree, double[] light, Columns columns, double far, double[][] boxes, int cells) {
+    /**
+     * The directions from the light toward the padded box {@code b} (relative to the light), per
+     * cube face: face f looks along axis f / 2, forwards for even f; its coordinates are the other
+     * two axes (in increasing order) over that one, in [-1, 1] (up to {@link #EDGE}).
+     *
+     * @return per face, the ranges of its two coordinates (a low, a high, b low, b high), with a
+     *         margin; NaN where the box is not seen through the face
+     */
+    private static double[] faceRanges(double[] b) {
+        double[] r = new double[24];
+        for (int face = 0; face < 6; ++face) {
+            int k = face / 2, i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
+            boolean forwards = face % 2 == 0;
+            double hi = forwards ? b[3 + k] : -b[k];
+            double lo = Math.max(forwards ? b[k] : -b[3 + k], 0);
+            double iLow = lowRatio(b[i], lo, hi), iHigh = highRatio(b[3 + i], lo, hi);
+            double jLow = lowRatio(b[j], lo, hi), jHigh = highRatio(b[3 + j], lo, hi);
+            // The ranges are cut a hair outside [-1, 1], the bound of a query's coordinates
+            // (|a| · (1 / m) ≤ m · (1 / m) ≤ 1 when rounded): no query on the face's edge falls out.
+            boolean seen = hi > 0 && iLow <= EDGE && iHigh >= -EDGE && jLow <= EDGE && jHigh >= -EDGE;
+            r[4 * face] = seen ? Math.max(iLow, -EDGE) : Double.NaN;
+            r[4 * face + 1] = seen ? Math.min(iHigh, EDGE) : Double.NaN;
+            r[4 * face + 2] = seen ? Math.max(jLow, -EDGE) : Double.NaN;
+            r[4 * face + 3] = seen ? Math.min(jHigh, EDGE) : Double.NaN;
+        }
+        return r;
+    }
+
+    /** A face's edge, its coordinates' bound (1) and a margin. */
+    private static final double EDGE = 1 + 1e-6;
+
+    /** The least of a / w over a in [low, ...) and w in [lo, hi], lo ≥ 0 < hi, less a margin. */
+    private static double lowRatio(double low, double lo, double hi) {
+        double r = low >= 0 ? low / hi : lo > 0 ? low / lo : Double.NEGATIVE_INFINITY;
+        return r - 1e-9;
+    }
+
+    /** The greatest of a / w over a in (..., high] and w in [lo, hi], lo ≥ 0 < hi, plus a margin. */
+    private static double highRatio(double high, double lo, double hi) {
+        double r = high <= 0 ? high / hi : lo > 0 ? high / lo : Double.POSITIVE_INFINITY;
+        return r + 1e-9;
+    }
+
+    /** @return the minimum of e · p over the box b (its maximum when {@code high}) */
+    private static double project(Vector e, double[] b, boolean high) {
+        double ex = e.getX(), ey = e.getY(), ez = e.getZ();
+        return (ex >= 0 == high ? ex * b[3] : ex * b[0]) + (ey >= 0 == high ? ey * b[4] : ey * b[1])
+                + (ez >= 0 == high ? ez * b[5] : ez * b[2]);
+    }
+
+    /**
+     * Sorts the leaves into the cells of their ranges ({@code ranges[i]}: per face, a low, a high,
+     * b low, b high; NaN where not seen), each face's grid spanning its leaves' ranges.
+     *
+     * @return the index, or null when most cells are full
+     */
+    private static ShadowIndex sort(Bvh tree, double[] light, double[] columns, double far, double[][] boxes,
+                                    double[][] ranges, int faces) {
+        double[] span = new double[4 * faces];
+        for (int f = 0; f < faces; ++f) {
+            span[4 * f] = span[4 * f + 2] = Double.POSITIVE_INFINITY;
+            span[4 * f + 1] = span[4 * f + 3] = Double.NEGATIVE_INFINITY;
+        }
+        for (double[] r : ranges)
+            for (int f = 0; f < faces; ++f) {
+                if (Double.isNaN(r[4 * f])) continue;
+                span[4 * f] = Math.min(span[4 * f], r[4 * f]);
+                span[4 * f + 1] = Math.max(span[4 * f + 1], r[4 * f + 1]);
+                span[4 * f + 2] = Math.min(span[4 * f + 2], r[4 * f + 2]);
+                span[4 * f + 3] = Math.max(span[4 * f + 3], r[4 * f + 3]);
+            }
+        Grids grids = new Grids(span); // a face no leaf is seen through spans nothing: every query there is outside
+        int cells = faces * CELLS * CELLS;
         int[] count = new int[cells];
-        int[] range = new int[4];
-        for (double[] b : boxes)
-            cover(columns, b, range, count, null, null);
+        for (double[] r : ranges)
+            cover(grids, r, faces, count, null, null, 0);
         int full = 0;
         for (int c = 0; c < cells; ++c)
             if (count[c] > MOST_LEAVES) ++full;
@@ -217,81 +287,27 @@ public final class ShadowIndex {
         int[] items = new int[start[cells]];
         for (int c = 0; c < cells; ++c)
             if (next[c] < 0) items[start[c]] = FULL;
-        for (double[] b : boxes)
-            cover(columns, b, range, null, next, items);
-        return new ShadowIndex(tree, light, columns, far, start, items);
+        for (int i = 0; i < boxes.length; ++i)
+            cover(grids, ranges[i], faces, null, next, items, (int) boxes[i][6]);
+        return new ShadowIndex(tree, light, columns, far, grids, start, items);
     }
 
     /**
-     * The cells leaf box {@code b} reaches: counted into {@code count}, or, when {@code count} is
-     * null, its leaf ({@code b[6]}) written at {@code next} into {@code items} (not into a full cell).
-     * A point light's {@code b} is the padded box relative to the light; a directional light's
-     * ({@code columns} not null), its intervals on the grid's two axes.
+     * The cells of ranges {@code r}: counted into {@code count}, or, when {@code count} is null,
+     * {@code leaf} written at {@code next} into {@code items} (not into a full cell).
      */
-    private static void cover(Columns columns, double[] b, int[] range, int[] count, int[] next, int[] items) {
-        int leaf = (int) b[6];
-        if (columns != null) {
-            range[0] = columns.uCell(b[0]);
-            range[1] = columns.uCell(b[1]);
-            range[2] = columns.vCell(b[2]);
-            range[3] = columns.vCell(b[3]);
-            add(0, range, count, next, items, leaf);
-            return;
+    private static void cover(Grids grids, double[] r, int faces, int[] count, int[] next, int[] items, int leaf) {
+        for (int f = 0; f < faces; ++f) {
+            if (Double.isNaN(r[4 * f])) continue;
+            int a0 = grids.aCell(f, r[4 * f]), a1 = grids.aCell(f, r[4 * f + 1]);
+            int b0 = grids.bCell(f, r[4 * f + 2]), b1 = grids.bCell(f, r[4 * f + 3]);
+            for (int a = a0; a <= a1; ++a)
+                for (int b = b0; b <= b1; ++b) {
+                    int c = (f * CELLS + a) * CELLS + b;
+                    if (count != null) ++count[c];
+                    else if (next[c] >= 0) items[next[c]++] = leaf;
+                }
         }
-        // Face f looks along axis f / 2, forwards for even f; its cell coordinates are the other
-        // two axes (in increasing order) over that one.
-        for (int face = 0; face < 6; ++face) {
-            int k = face / 2, i = k == 0 ? 1 : 0, j = k == 2 ? 1 : 2;
-            boolean forwards = face % 2 == 0;
-            double hi = forwards ? b[3 + k] : -b[k];
-            if (!(hi > 0)) continue;
-            double lo = Math.max(forwards ? b[k] : -b[3 + k], 0);
-            double iLow = lowRatio(b[i], lo, hi), iHigh = highRatio(b[3 + i], lo, hi);
-            double jLow = lowRatio(b[j], lo, hi), jHigh = highRatio(b[3 + j], lo, hi);
-            if (iLow > 1 || iHigh < -1 || jLow > 1 || jHigh < -1) continue;
-            range[0] = faceCell(iLow);
-            range[1] = faceCell(iHigh);
-            range[2] = faceCell(jLow);
-            range[3] = faceCell(jHigh);
-            add(face * CELLS * CELLS, range, count, next, items, leaf);
-        }
-    }
-
-    /** The least of a / w over a in [low, ...) and w in [lo, hi], lo ≥ 0 < hi, less a margin. */
-    private static double lowRatio(double low, double lo, double hi) {
-        double r = low >= 0 ? low / hi : lo > 0 ? low / lo : Double.NEGATIVE_INFINITY;
-        return r - 1e-9;
-    }
-
-    /** The greatest of a / w over a in (..., high] and w in [lo, hi], lo ≥ 0 < hi, plus a margin. */
-    private static double highRatio(double high, double lo, double hi) {
-        double r = high <= 0 ? high / hi : lo > 0 ? high / lo : Double.POSITIVE_INFINITY;
-        return r + 1e-9;
-    }
-
-    private static void add(int base, int[] range, int[] count, int[] next, int[] items, int leaf) {
-        for (int i = range[0]; i <= range[1]; ++i)
-            for (int j = range[2]; j <= range[3]; ++j) {
-                int c = base + i * CELLS + j;
-                if (count != null) ++count[c];
-                else if (next[c] >= 0) items[next[c]++] = leaf;
-            }
-    }
-
-    /** @return the minimum of e · p over the box b (its maximum when {@code high}) */
-    private static double project(Vector e, double[] b, boolean high) {
-        double ex = e.getX(), ey = e.getY(), ez = e.getZ();
-        return (ex >= 0 == high ? ex * b[3] : ex * b[0]) + (ey >= 0 == high ? ey * b[4] : ey * b[1])
-                + (ez >= 0 == high ? ez * b[5] : ez * b[2]);
-    }
-
-    /** @return the cell of a face coordinate in [-1, 1] (monotone in it), clamped to the face */
-    private static int faceCell(double r) {
-        return clamp((int) ((r + 1) * (CELLS / 2.0)));
-    }
-
-    private static int clamp(int cell) {
-        return cell < 0 ? 0 : Math.min(cell, CELLS - 1);
     }
 
     /**
@@ -316,11 +332,11 @@ public final class ShadowIndex {
             if (!(ex * ex + ey * ey + ez * ez <= REACH * REACH)) return false;
             cell = pointCell(-dx, -dy, -dz);
         } else {
-            Columns c = columns;
-            if (dx != c.dx || dy != c.dy || dz != c.dz) return false;
-            // Outside the grid the ray's column meets no leaf: only the shapes without a box remain.
-            cell = c.cellOf(ox, oy, oz);
+            double[] c = columns;
+            if (dx != c[0] || dy != c[1] || dz != c[2]) return false;
+            cell = grids.cell(0, ox * c[3] + oy * c[4] + oz * c[5], ox * c[6] + oy * c[7] + oz * c[8]);
         }
+        // Outside every leaf's cells (cell -1) only the shapes without a box remain to be asked.
         int from = 0, to = 0;
         if (cell >= 0) {
             from = start[cell];
@@ -330,8 +346,8 @@ public final class ShadowIndex {
         return tree.clearOf(items, from, to, query, maxDistance);
     }
 
-    /** @return the cell of the unit direction (wx, wy, wz) from a point light, as {@link #cover} numbers them */
-    private static int pointCell(double wx, double wy, double wz) {
+    /** @return the cell of the unit direction (wx, wy, wz) from a point light, as {@link #faceRanges} numbers the faces; -1 where no leaf is */
+    private int pointCell(double wx, double wy, double wz) {
         double ax = Math.abs(wx), ay = Math.abs(wy), az = Math.abs(wz);
         int face;
         double m, a, b;
@@ -351,6 +367,8 @@ public final class ShadowIndex {
             a = wx;
             b = wy;
         }
-        return (face * CELLS + faceCell(a / m)) * CELLS + faceCell(b / m);
+        // One division: the ratios differ from a / m and b / m by an ulp, far inside the build's margin.
+        double inverse = 1 / m;
+        return grids.cell(face, a * inverse, b * inverse);
     }
 }

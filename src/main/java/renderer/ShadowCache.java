@@ -12,7 +12,8 @@ import primitives.Double3;
 /**
  * A worker's last opaque occluder per light (Haines and Greenberg's shadow cache): the shape
  * that stopped the previous shadow ray toward a light usually stops the next one too (the next
- * pixel, the next sample of a soft light's disk), so it is asked first, before the walk.
+ * pixel, the next sample of a soft light's disk), so it is asked before the walk. The light's
+ * buffer ({@link ShadowIndex}), where it has one, is asked before both: it answers the lit points.
  *
  * <p>Exact: when a shape whose kT is zero in every channel crosses the shadow ray within its
  * distance, the product of kT along that ray is 0 whatever else is on it, which is what the walk
@@ -27,19 +28,20 @@ final class ShadowCache {
 
     /**
      * The product of kT along {@code shadow} up to {@code distance} toward light {@code light}, into
-     * {@code tr} (as {@code LeanQueries.visitHits(world, shadow, distance, tr.reset())} would leave it): 0 at once
-     * when the light's last opaque occluder crosses the ray, the reset value when the light's
-     * {@code index} (null: none) proves the ray clear, else the walk, whose opaque occluder, if it
+     * {@code tr} (as {@code LeanQueries.visitHits(world, shadow, distance, tr.reset())} would leave it): the
+     * reset value when the light's {@code index} (null: none) proves the ray clear, 0 when the
+     * light's last opaque occluder crosses the ray, else the walk, whose opaque occluder, if it
      * found one, is kept for the next ray.
      */
     void trace(Intersectable world, Hit shadow, double distance, int light, ShadowIndex index, Transmittance tr) {
         tr.reset();
+        // A lit point, most shadow rays: the walk would visit nothing, and tr stays as reset.
+        // Asked before the last occluder, which then costs a test only where there is a shadow.
+        if (index != null && index.clear(shadow, distance)) return;
         if (blocks(light, shadow, distance)) {
             tr.product.setZero();
             return;
         }
-        // A lit point, most shadow rays: the walk would visit nothing, and tr stays as reset.
-        if (index != null && index.clear(shadow, distance)) return;
         LeanQueries.visitHits(world, shadow, distance, tr);
         Geometry occluder = tr.opaque;
         // A mesh is kept out: asking it again would be a walk of its own over its triangles.

@@ -177,6 +177,30 @@ class ShadowIndexTest {
         assertThat(index.clear(beside, 10)).isTrue();
     }
 
+    @Test
+    @DisplayName("rays along the edges and corners of the cube of directions, where two or three faces meet: a sphere on each is found")
+    void facesEdgesAndCorners() {
+        Geometries spheres = new Geometries();
+        List<Vector> directions = new java.util.ArrayList<>();
+        for (int x = -1; x <= 1; ++x)
+            for (int y = -1; y <= 1; ++y)
+                for (int z = -1; z <= 1; ++z)
+                    if (x != 0 || y != 0 || z != 0) directions.add(new Vector(x, y, z).normalize());
+        for (Vector d : directions)
+            spheres.add(new Sphere(Point.ZERO.add(d.scale(5)), 0.3));
+        Bvh tree = Bvh.build(spheres);
+        ShadowIndex index = LeanQueries.shadowIndexFrom(tree, 0, 0, 0);
+        for (Vector d : directions) {
+            Point from = Point.ZERO.add(d.scale(8));
+            Hit shadow = Hit.of(new Ray(from, d.scale(-1)));
+            assertThat(walkVisits(tree, shadow, 8)).as("the walk along %s", d).isPositive();
+            assertThat(index.clear(shadow, 8)).as("along %s", d).isFalse();
+            // Just past the light, outward again: nothing there.
+            Hit beyond = Hit.of(new Ray(Point.ZERO.add(d.scale(12)), d.scale(-1)));
+            assertThat(index.clear(beyond, 12)).as("the ray from 12 along %s", d).isFalse(); // crosses the sphere at 5 too
+        }
+    }
+
     @Nested
     @DisplayName("rays that are not the index's")
     class NotItsRays {

@@ -13,7 +13,9 @@ import org.junit.jupiter.params.provider.ValueSource;
 import geometries.CountingGeometries;
 import geometries.Geometry;
 import geometries.Hit;
+import geometries.Intersectable;
 import geometries.LeanQueries;
+import geometries.ShadowIndex;
 import geometries.Sphere;
 import geometries.Triangle;
 import geometries.TriangleMesh;
@@ -96,6 +98,47 @@ class ShadowCacheTest {
                     .containsExactly(channels(walked));
         }
         assertThat(blocked).as("shadow rays answered by the cache (the test must not be vacuous)").isGreaterThan(rays / 20);
+    }
+
+    @ParameterizedTest(name = "seed {0}")
+    @ValueSource(longs = { 4, 5 })
+    @DisplayName("with the lights' buffers, over a tree: the same product of kT as the walk alone, bit for bit, and most lit rays answered by the buffer")
+    void withShadowIndexes(long seed) {
+        CountingGeometries shapes = new CountingGeometries();
+        Random rnd = new Random(seed);
+        for (int i = 0; i < 200; ++i) { // library shapes only: a user's shape keeps a tree from having buffers
+            Point c = new Point(rnd.nextDouble(-10, 10), rnd.nextDouble(-10, 10), rnd.nextDouble(-10, 10));
+            Double3 kT = rnd.nextBoolean() ? Double3.ZERO : new Double3(rnd.nextDouble(0.2, 0.9));
+            shapes.add((i % 2 == 0 ? new Sphere(c, rnd.nextDouble(0.3, 1.2))
+                    : new Triangle(c, c.add(new primitives.Vector(rnd.nextDouble(1, 3), 0, 0.2)),
+                            c.add(new primitives.Vector(0.1, rnd.nextDouble(1, 3), 0)))).setMaterial(new Material().setKt(kT)));
+        }
+        Intersectable world = geometries.Bvh.build(shapes);
+        double[][] lights = { { 40, 50, 20 }, { -3, 2, 4 } };
+        ShadowIndex[] indexes = new ShadowIndex[lights.length];
+        for (int i = 0; i < lights.length; ++i)
+            indexes[i] = LeanQueries.shadowIndexFrom(world, lights[i][0], lights[i][1], lights[i][2]);
+        ShadowCache cache = new ShadowCache();
+        Transmittance traced = new Transmittance(THRESHOLD), walked = new Transmittance(THRESHOLD);
+        RayHit a = new RayHit(), b = new RayHit();
+        int lit = 0, answered = 0;
+        for (int i = 0; i < 4000; ++i) {
+            int light = i % 2;
+            double px = rnd.nextDouble(-12, 12), py = rnd.nextDouble(-12, 12), pz = rnd.nextDouble(-12, 12);
+            double dx = lights[light][0] - px, dy = lights[light][1] - py, dz = lights[light][2] - pz;
+            double distance = Math.sqrt(dx * dx + dy * dy + dz * dz);
+            a.ray(px, py, pz, dx, dy, dz);
+            b.ray(px, py, pz, dx, dy, dz);
+            cache.trace(world, a, distance, light, indexes[light], traced);
+            LeanQueries.visitHits(world, b, distance, walked.reset());
+            assertThat(channels(traced)).as("ray %d", i).containsExactly(channels(walked));
+            if (channels(walked)[0] == 1 && walked.opaque == null) {
+                ++lit;
+                if (indexes[light].clear(a, distance)) ++answered;
+            }
+        }
+        assertThat(lit).as("lit rays").isGreaterThan(400);
+        assertThat(answered).as("lit rays the buffers answered, of %d", lit).isGreaterThan(lit * 9 / 10);
     }
 
     @Nested
