@@ -91,7 +91,6 @@ final class WhittedShader implements PreparedTracer {
         this.shadowSamples = shadowSamples;
     }
 
-    /** The scene's tree may take its vector walk from the first ray ({@link LeanQueries#expectCameraRays}). */
     /**
      * The light buffer of each library light whose shadow ray is one ray (a point, spot or
      * directional light of radius 0), over {@code world}. The index answers for a ray's geometry
@@ -117,6 +116,7 @@ final class WhittedShader implements PreparedTracer {
         return indexes;
     }
 
+    /** The scene's tree may take its vector walk from the first ray ({@link LeanQueries#expectCameraRays}). */
     @Override
     public void expectCameraRays(long cameraRays) {
         LeanQueries.expectCameraRays(world, cameraRays);
