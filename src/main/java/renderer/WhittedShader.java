@@ -116,6 +116,11 @@ final class WhittedShader implements PreparedTracer {
         return indexes;
     }
 
+    /** @return light {@code light}'s buffer, or null (for the tests) */
+    ShadowIndex shadowIndex(int light) {
+        return shadowIndexes[light];
+    }
+
     /** The scene's tree may take its vector walk from the first ray ({@link LeanQueries#expectCameraRays}). */
     @Override
     public void expectCameraRays(long cameraRays) {

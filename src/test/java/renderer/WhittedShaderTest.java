@@ -146,4 +146,62 @@ class WhittedShaderTest {
                     .containsExactly(lit(longNormalFloor(), new Material().setKd(0.5)));
         }
     }
+
+    @Nested
+    @DisplayName("the lights' buffers for shadow rays")
+    class LightBuffers {
+        /** Opaque spheres and triangles over a floor plane (opaque: a product of kT is then the same in any order). */
+        private Scene scene() {
+            Scene scene = new Scene("buffers").setBackground(new Color(10, 20, 30));
+            java.util.Random rnd = new java.util.Random(11);
+            for (int i = 0; i < 40; ++i) {
+                Point c = new Point(rnd.nextDouble(-8, 8), rnd.nextDouble(0.5, 6), rnd.nextDouble(-8, 8));
+                Geometry g = i % 2 == 0 ? new geometries.Sphere(c, rnd.nextDouble(0.3, 1))
+                        : new geometries.Triangle(c, c.add(new Vector(1.5, 0, 0.3)), c.add(new Vector(0, 1.5, 0.2)));
+                scene.geometries.add(g.setMaterial(new Material().setKd(0.6).setKs(0.3).setShininess(20).setKr(0.2)));
+            }
+            scene.geometries.add(new Plane(Point.ZERO, new Vector(0, 1, 0)).setMaterial(new Material().setKd(0.5).setKr(0.3)));
+            scene.lights.add(new PointLight(new Color(300, 300, 300), new Point(-4, 12, 6)).setKq(0.01));
+            scene.lights.add(new lighting.SpotLight(new Color(200, 100, 50), new Point(5, 9, -3), new Vector(-1, -2, 1)).setKl(0.1));
+            scene.lights.add(new lighting.DirectionalLight(new Color(80, 80, 80), new Vector(1, -3, -1)));
+            scene.lights.add(new PointLight(new Color(50, 50, 50), new Point(0, 15, 0)).setRadius(1)); // soft: no buffer
+            scene.lights.add(new PointLight(new Color(20, 20, 20), new Point(3, 10, 3)) { // a user's light: no buffer
+            });
+            return scene;
+        }
+
+        private static WhittedShader shader(Scene scene, geometries.Intersectable world) {
+            return new WhittedShader(scene.background, scene.ambientLight.getIntensity(), world, scene.lights.toArray(new LightSource[0]), 1, 4);
+        }
+
+        @Test
+        @DisplayName("point, spot and directional lights of radius 0 get one over a tree; a soft light, a user's light and the flat walk do not")
+        void whichLights() {
+            Scene scene = scene();
+            WhittedShader tree = shader(scene, geometries.Bvh.build(scene.geometries));
+            assertThat(new boolean[] { tree.shadowIndex(0) != null, tree.shadowIndex(1) != null, tree.shadowIndex(2) != null,
+                    tree.shadowIndex(3) != null, tree.shadowIndex(4) != null }).containsExactly(true, true, true, false, false);
+            WhittedShader flat = shader(scene, scene.geometries);
+            for (int i = 0; i < 5; ++i)
+                assertThat(flat.shadowIndex(i)).isNull();
+        }
+
+        @Test
+        @DisplayName("the colours with buffers over the tree are the flat walk's, bit for bit, ray by ray")
+        void sameColours() {
+            Scene scene = scene();
+            WhittedShader tree = shader(scene, geometries.Bvh.build(scene.geometries)), flat = shader(scene, scene.geometries);
+            TraceContext other = new TraceContext(MAX_CALC_COLOR_LEVEL, MIN_CALC_COLOR_K);
+            java.util.Random rnd = new java.util.Random(12);
+            for (int i = 0; i < 3000; ++i) {
+                double tx = rnd.nextDouble(-9, 9), tz = rnd.nextDouble(-9, 9);
+                ctx.random.reset(5, i, 0, 0);
+                other.random.reset(5, i, 0, 0);
+                ctx.cameraRay().ray(0, 8, 20, tx, -8, tz - 20);
+                other.cameraRay().ray(0, 8, 20, tx, -8, tz - 20);
+                Rgb a = tree.traceRay(ctx), b = flat.traceRay(other);
+                assertThat(new double[] { a.r(), a.g(), a.b() }).as("ray %d", i).containsExactly(b.r(), b.g(), b.b());
+            }
+        }
+    }
 }
