@@ -566,12 +566,13 @@ public final class Bvh extends Intersectable {
 
     /**
      * The leaves a {@link ShadowIndex} sorts, as node numbers: every leaf node of the binary
-     * tree, whose box holds its primitives.
+     * tree, whose box holds its primitives. A leaf that holds a user's shape comes as
+     * {@code -1 - n}: the index may not ask it (a user's shape may count its calls, and the index
+     * would call it more often than the walk), so its cells are left to the walk.
      *
      * @param most the most leaves wanted
-     * @return the leaf nodes, or null when there are none or more than {@code most}, or when some
-     *         shape may not be asked more often than the walk asks it (a user's shape may count
-     *         its calls)
+     * @return the leaf nodes, or null when there are none or more than {@code most}, or when a
+     *         shape without a box (asked by every ray) is a user's
      */
     int[] shadowIndexLeaves(int most) {
         int leaves = 0;
@@ -580,11 +581,15 @@ public final class Bvh extends Intersectable {
         if (leaves == 0 || leaves > most) return null;
         for (Intersectable u : unbounded)
             if (!(u instanceof Geometry g && g.isLibraryShape())) return null;
-        for (Intersectable o : owner)
-            if (!(o instanceof Geometry g && g.isLibraryShape())) return null;
         int[] found = new int[leaves];
-        for (int n = 0, i = 0; n < nodeCount; ++n)
-            if (BvhNodes.count(node, BvhNodes.at(n)) > 0) found[i++] = n;
+        for (int n = 0, i = 0; n < nodeCount; ++n) {
+            int at = BvhNodes.at(n), count = BvhNodes.count(node, at);
+            if (count <= 0) continue; // an inner node
+            boolean library = true;
+            for (int k = BvhNodes.first(node, at), end = k + count; k < end; ++k)
+                library &= owner[k] instanceof Geometry g && g.isLibraryShape();
+            found[i++] = library ? n : -1 - n;
+        }
         return found;
     }
 

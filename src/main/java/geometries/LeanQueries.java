@@ -98,7 +98,7 @@ public final class LeanQueries {
      * @param y     its y coordinate
      * @param z     its z coordinate
      * @return the index, or null where it would not pay or cannot be exact (a world that is not a
-     *         tree, a user's shape in it, a tree too large for its cells)
+     *         tree, a user's shape without a box in it, a tree too large for its cells)
      */
     public static ShadowIndex shadowIndexFrom(Intersectable world, double x, double y, double z) {
         return world instanceof Bvh tree ? ShadowIndex.fromPoint(tree, x, y, z) : null;

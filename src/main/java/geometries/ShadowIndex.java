@@ -16,8 +16,8 @@ import primitives.Vector;
  * ({@link Bvh#visitHits}) would give its visitor no hit. It runs the walk's own tests (the box
  * test, then the primitives' tests, as the walk does them) on every leaf the ray can reach, and
  * on the shapes without a box. Every other answer is false, and the caller walks the tree as
- * without the index: a cell with more than {@link #MOST_LEAVES} leaves, a ray that is not one of
- * this light's shadow rays, a shape that crosses the ray. The index is immutable; any number of
+ * without the index: a cell with more than {@link #MOST_LEAVES} leaves or with a user's shape, a
+ * ray that is not one of this light's shadow rays, a shape that crosses the ray. The index is immutable; any number of
  * render threads may ask it.
  *
  * @hidden internal: built per light by the renderer ({@link LeanQueries#shadowIndexFrom},
@@ -117,8 +117,8 @@ public final class ShadowIndex {
     /**
      * The index of a point light at (x, y, z) (its radius 0: every shadow ray ends at it).
      *
-     * @return the index, or null when it would not pay: a tree with no bounded leaf, a leaf the
-     *         index may not test twice (a user's shape), or cells too full
+     * @return the index, or null when it would not pay: a tree with no bounded leaf, a user's
+     *         shape without a box (every ray would walk), or cells mostly full
      */
     static ShadowIndex fromPoint(Bvh tree, double x, double y, double z) {
         if (!(Double.isFinite(x) && Double.isFinite(y) && Double.isFinite(z))) return null;
@@ -178,10 +178,10 @@ public final class ShadowIndex {
         double[][] boxes = new double[leaves.length][7];
         float[] box = new float[6];
         for (int i = 0; i < leaves.length; ++i) {
-            tree.leafBox(leaves[i], box);
+            tree.leafBox(leaves[i] < 0 ? -1 - leaves[i] : leaves[i], box);
             for (int k = 0; k < 6; ++k)
                 boxes[i][k] = box[k];
-            boxes[i][6] = leaves[i]; // exact in a double
+            boxes[i][6] = leaves[i]; // exact in a double; negative for a leaf with a user's shape
         }
         return boxes;
     }
@@ -269,8 +269,9 @@ public final class ShadowIndex {
         Grids grids = new Grids(span); // a face no leaf is seen through spans nothing: every query there is outside
         int cells = faces * CELLS * CELLS;
         int[] count = new int[cells];
-        for (double[] r : ranges)
-            cover(grids, r, faces, count, null, null, 0);
+        // A leaf with a user's shape counts as a full cell's worth: its cells are left to the walk.
+        for (int i = 0; i < boxes.length; ++i)
+            cover(grids, ranges[i], faces, count, null, null, boxes[i][6] < 0 ? MOST_LEAVES + 1 : 1);
         int full = 0;
         for (int c = 0; c < cells; ++c)
             if (count[c] > MOST_LEAVES) ++full;
@@ -293,10 +294,11 @@ public final class ShadowIndex {
     }
 
     /**
-     * The cells of ranges {@code r}: counted into {@code count}, or, when {@code count} is null,
-     * {@code leaf} written at {@code next} into {@code items} (not into a full cell).
+     * The cells of ranges {@code r}: {@code value} (a leaf's weight) added to their {@code count}s,
+     * or, when {@code count} is null, {@code value} (the leaf's node) written at {@code next} into
+     * {@code items} (not into a full cell).
      */
-    private static void cover(Grids grids, double[] r, int faces, int[] count, int[] next, int[] items, int leaf) {
+    private static void cover(Grids grids, double[] r, int faces, int[] count, int[] next, int[] items, int value) {
         for (int f = 0; f < faces; ++f) {
             if (Double.isNaN(r[4 * f])) continue;
             int a0 = grids.aCell(f, r[4 * f]), a1 = grids.aCell(f, r[4 * f + 1]);
@@ -304,8 +306,8 @@ public final class ShadowIndex {
             for (int a = a0; a <= a1; ++a)
                 for (int b = b0; b <= b1; ++b) {
                     int c = (f * CELLS + a) * CELLS + b;
-                    if (count != null) ++count[c];
-                    else if (next[c] >= 0) items[next[c]++] = leaf;
+                    if (count != null) count[c] += value;
+                    else if (next[c] >= 0) items[next[c]++] = value;
                 }
         }
     }

@@ -201,6 +201,40 @@ class ShadowIndexTest {
         }
     }
 
+    @Test
+    @DisplayName("a user's shape: its cells are left to the walk, so the index never asks it; the other cells answer")
+    void userShape() {
+        int[] asked = { 0 };
+        Sphere user = new Sphere(new Point(5, 0, 0), 1) {
+            @Override
+            protected java.util.List<GeoPoint> findGeoIntersectionsHelper(Ray ray, double maxDistance) {
+                ++asked[0];
+                return super.findGeoIntersectionsHelper(ray, maxDistance);
+            }
+        };
+        Bvh tree = Bvh.build(new Geometries(new Sphere(new Point(-5, 0, 0), 1), user));
+        ShadowIndex index = LeanQueries.shadowIndexFrom(tree, 0, 10, 0);
+        assertThat(index).isNotNull();
+        Random rnd = new Random(8);
+        int userCells = 0, answered = 0;
+        for (int i = 0; i < 2000; ++i) {
+            Point from = new Point(rnd.nextDouble(-8, 8), -3, rnd.nextDouble(-3, 3));
+            Vector toLight = new Point(0, 10, 0).subtract(from);
+            Hit shadow = Hit.of(new Ray(from, toLight));
+            int before = asked[0];
+            boolean clear = index.clear(shadow, toLight.length());
+            assertThat(asked[0]).as("calls to the user's shape by the index").isEqualTo(before);
+            if (clear) {
+                ++answered;
+                assertThat(walkVisits(tree, shadow, toLight.length())).isZero();
+            } else if (from.getX() > 2) ++userCells;
+        }
+        assertThat(answered).as("rays answered away from the user's shape").isGreaterThan(500);
+        assertThat(userCells).as("rays toward the user's shape, left to the walk").isGreaterThan(100);
+        walkVisits(tree, Hit.of(new Ray(new Point(5, -3, 0), new Vector(0, 1, 0))), 20);
+        assertThat(asked[0]).as("the walk asks the user's shape (the count works)").isPositive();
+    }
+
     @Nested
     @DisplayName("rays that are not the index's")
     class NotItsRays {
@@ -231,14 +265,15 @@ class ShadowIndexTest {
     @DisplayName("not built")
     class NotBuilt {
         @Test
-        @DisplayName("a world that is not a tree, or a tree with a user's shape in it (the index would ask it more often than the walk)")
+        @DisplayName("a world that is not a tree, or a user's shape without a box (every ray asks it)")
         void notExact() {
             Geometries list = new Geometries(new Sphere(new Point(0, 0, 0), 1));
             assertThat(LeanQueries.shadowIndexFrom(list, 0, 10, 0)).isNull();
-            Geometries withUser = new Geometries(new Sphere(new Point(0, 0, 0), 1), new Sphere(new Point(3, 0, 0), 1) {
-            });
-            assertThat(LeanQueries.shadowIndexFrom(Bvh.build(withUser), 0, 10, 0)).isNull();
-            assertThat(LeanQueries.shadowIndexAlong(Bvh.build(withUser), 0, 1, 0)).isNull();
+            Geometries withUserPlane = new Geometries(new Sphere(new Point(0, 0, 0), 1),
+                    new Plane(new Point(0, -5, 0), new Vector(0, 1, 0)) {
+                    });
+            assertThat(LeanQueries.shadowIndexFrom(Bvh.build(withUserPlane), 0, 10, 0)).isNull();
+            assertThat(LeanQueries.shadowIndexAlong(Bvh.build(withUserPlane), 0, 1, 0)).isNull();
         }
 
         @Test
