@@ -36,6 +36,9 @@ public final class ShadowIndex {
      * moved off the surface by {@link Ray#DELTA}, so the ray ends that far from the light, not on it.
      */
     static final double REACH = 2 * Ray.DELTA;
+    /** A face's edge, its coordinates' bound (1) and a margin. */
+    private static final double EDGE = 1 + 1e-6;
+
     /** A cell's one item when it has more than {@link #MOST_LEAVES} leaves: the caller walks. */
     private static final int FULL = -1;
     /**
@@ -222,9 +225,6 @@ public final class ShadowIndex {
         }
         return r;
     }
-
-    /** A face's edge, its coordinates' bound (1) and a margin. */
-    private static final double EDGE = 1 + 1e-6;
 
     /** The least of a / w over a in [low, ...) and w in [lo, hi], lo ≥ 0 < hi, less a margin. */
     private static double lowRatio(double low, double lo, double hi) {
