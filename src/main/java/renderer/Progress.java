@@ -5,6 +5,7 @@ import java.util.Locale;
 import java.util.Objects;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.AtomicReference;
 
 /**
  * Progress lines of one render: a full line (no carriage-return tricks, so IDE consoles show it)
@@ -26,6 +27,11 @@ public final class Progress {
     private final AtomicLong done = new AtomicLong();
     /** Index of the next step to report; updated under the lock by the worker that prints. */
     private final AtomicInteger nextStep = new AtomicInteger(1);
+    /**
+     * Where the trusted pace starts ({@link #remainingSecondsAfter}): {nanoTime, units done},
+     * set once by the first caller after the warm-up; null before.
+     */
+    private final AtomicReference<long[]> paceFrom = new AtomicReference<>();
 
     /** @param step percent between lines; 0 reports nothing */
     Progress(String label, long total, double step, PrintStream out) {
@@ -89,12 +95,29 @@ public final class Progress {
     }
 
     /**
-     * @return the seconds the work still needs at the pace so far (the ETA its lines print);
-     *         +∞ before anything is done
+     * The seconds the work still needs at its pace after a warm-up: the first call from
+     * {@code warmUpSeconds} into the work marks where the pace starts, and the pace is measured
+     * from there once {@code warmUpSeconds} more have passed. The pace so far would count the first
+     * tiles, which run while the code is still being compiled: on a 6 s render of a 10⁵-triangle
+     * mesh (2 threads, a slow 2-core host) it promised 8.9 s more at its first second, when 3.1 s
+     * were left (BENCHMARKS.md, issue 50, the closing session).
+     *
+     * @param warmUpSeconds seconds not trusted at the start, and then the shortest span of pace
+     *                      trusted; at least 0
+     * @return the seconds left at the pace since the mark; NaN while that pace is not known yet
+     *         (before the mark and for {@code warmUpSeconds} after it, or nothing done since)
      */
-    double remainingSeconds() {
-        long now = done.get();
-        return now == 0 ? Double.POSITIVE_INFINITY : elapsedSeconds() * (total - now) / now;
+    double remainingSecondsAfter(double warmUpSeconds) {
+        long nanos = System.nanoTime(), now = done.get();
+        long[] from = paceFrom.get();
+        if (from == null) {
+            if (nanos - start >= warmUpSeconds * 1e9) paceFrom.compareAndSet(null, new long[] { nanos, now });
+            return Double.NaN;
+        }
+        double seconds = (nanos - from[0]) / 1e9;
+        long since = now - from[1];
+        if (seconds < warmUpSeconds || since <= 0) return Double.NaN;
+        return seconds * (total - now) / since;
     }
 
     /** @return seconds since this progress was made */

@@ -29,12 +29,15 @@ final class RenderLoop {
      * ({@link PreparedTracer#expectLongRender}): the vector walk's warm-up costs 1.1–1.4 s of
      * processor time (its thread and the compiler's, measured), which the vector walk, about 12 %
      * faster in a whole render, pays back only after some 5 s of a 2-thread render (an estimate
-     * from those two figures; BENCHMARKS.md, "The vector walk without asking").
+     * from those two figures; BENCHMARKS.md, "The vector walk without asking"). On a host twice as
+     * slow, the switch held a 2-thread render back by about 2 s, and the vector walk ran 25 %
+     * faster after it: again about 8 s to break even (BENCHMARKS.md, issue 50, the closing session).
      */
     static final double LONG_RENDER_SECONDS = 8;
     /**
-     * Seconds of render before its pace is trusted: the first tiles run while the code is still
-     * compiled, so the pace at first promises more time than the render takes.
+     * Seconds of render before its pace is measured, and then the shortest span it is measured
+     * over ({@link Progress#remainingSecondsAfter}): the first tiles run while the code is still
+     * compiled, so the pace from the start promises more time than the render takes.
      */
     static final double PACE_SECONDS = 1;
 
@@ -290,8 +293,9 @@ final class RenderLoop {
                             noCollectionSince = new WeakReference<>(new Object());
                         }
                         progress.advance(renderTile(t, sampler, ctx, tilePixels));
-                        // Only once the pace is known: the first tiles include the code's warm-up.
-                        if (progress.elapsedSeconds() >= PACE_SECONDS && progress.remainingSeconds() >= LONG_RENDER_SECONDS)
+                        // Only at the pace after the first tiles, which include the code's warm-up
+                        // (NaN until it is known: not long).
+                        if (progress.remainingSecondsAfter(PACE_SECONDS) >= LONG_RENDER_SECONDS)
                             prepared.expectLongRender();
                     }
                 } catch (CancellationException e) {

@@ -22,8 +22,9 @@ import scene.Scene;
  * The render loop tells its prepared tracer how many camera rays the render traces at least,
  * before any of them ({@link PreparedTracer#expectCameraRays}), and that the render is long
  * ({@link PreparedTracer#expectLongRender}, where the scene's tree warms its vector walk) once its
- * pace, trusted after {@link RenderLoop#PACE_SECONDS}, leaves {@link RenderLoop#LONG_RENDER_SECONDS}
- * or more of work; a short render never does.
+ * pace, measured after its first {@link RenderLoop#PACE_SECONDS} over at least as long, leaves
+ * {@link RenderLoop#LONG_RENDER_SECONDS} or more of work; a short render never does, even one whose
+ * first tiles were slow.
  */
 @DisplayName("a render says when it is long, and a short one never does")
 class LongRenderTest {
@@ -101,6 +102,22 @@ class LongRenderTest {
         Paced tracer = new Paced(2_000_000);
         camera(tracer).render();
         assertThat(tracer.told.get()).as("calls once the pace promised 8 s more").isPositive();
+    }
+
+    @Test
+    @DisplayName("slow for its first 1.2 s, then 0.4 s of work: never told (the pace from the start promised 20 s more)")
+    void slowOnlyWhileWarmingUp() {
+        Paced tracer = new Paced(2_000_000);
+        long fastFrom = System.nanoTime() + 1_200_000_000L;
+        Camera camera = builder(tracer).build();
+        Thread warmedUp = new Thread(() -> {
+            LockSupport.parkNanos(fastFrom - System.nanoTime());
+            tracer.nanosPerSample = 40_000; // as the code's compilation ends
+        });
+        warmedUp.start();
+        camera.render();
+        assertThat(tracer.told.get()).isZero();
+        assertThat(tracer.nanosPerSample).as("the render outlasted its warm-up").isEqualTo(40_000);
     }
 
     @Test

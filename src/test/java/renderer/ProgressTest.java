@@ -3,9 +3,11 @@ package renderer;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.ByteArrayOutputStream;
+import java.io.OutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.util.List;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.UnaryOperator;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -86,6 +88,24 @@ class ProgressTest {
         List<String> lines = printed(b -> b.setDebugPrint(0.001).setMultithreading(0).setSummary(false));
         assertThat(lines).hasSize(16).doesNotHaveDuplicates();
         assertThat(lines.get(15)).contains("100.0%");
+    }
+
+    @Test
+    @DisplayName("the pace left after a warm-up: unknown until it is measured, then counted from the mark, not from the start")
+    void paceAfterWarmUp() {
+        Progress progress = new Progress("pace", 100, "px", 0, new PrintStream(OutputStream.nullOutputStream()));
+        double warmUp = 0.05;
+        progress.advance(50); // the first tiles, before the mark
+        assertThat(progress.remainingSecondsAfter(warmUp)).as("within the warm-up").isNaN();
+        LockSupport.parkNanos(60_000_000L);
+        assertThat(progress.remainingSecondsAfter(warmUp)).as("the first call after the warm-up: the mark").isNaN();
+        assertThat(progress.remainingSecondsAfter(warmUp)).as("right after the mark").isNaN();
+        LockSupport.parkNanos(60_000_000L);
+        assertThat(progress.remainingSecondsAfter(warmUp)).as("nothing done since the mark").isNaN();
+        progress.advance(10);
+        // 40 units left at 10 units per span of at least 0.05 s: at least 0.2 s; the pace from the
+        // start (60 units in about 0.12 s) would promise about 0.08 s.
+        assertThat(progress.remainingSecondsAfter(warmUp)).isGreaterThanOrEqualTo(4 * warmUp);
     }
 
     @Test
