@@ -317,6 +317,32 @@ def test_a_spare_core_keeps_both_tiers(tmp_path, threads, quick):
         assert ("-XX:TieredStopAtLevel=1" in done.stdout.splitlines()) == quick, (scene.name, args)
 
 
+SPHERE = '<sphere center="0 0 0" radius="1"/>'
+LONG = IMAGE + '<render><anti-aliasing mode="random" grid="4 4"/></render>'  # 5.8x10^6 rays: both tiers
+
+
+@pytest.mark.parametrize("body, args, asked, vector", [
+    # fewer than 512 shapes and no mesh: no tree the vector walk takes, so no module to resolve
+    (LONG + "<geometries>" + SPHERE * 511 + "</geometries>", [], "", False),
+    (LONG + "<geometries>" + SPHERE * 511 + "</geometries>", [], "1", True),  # unless asked for
+    (LONG + "<geometries>" + SPHERE * 300 + '<plane point="0 0 0" normal="0 1 0"/>' * 100
+     + '<polygon vertices="0 0 0, 1 0 0, 0 1 0"/>' * 112 + "</geometries>", [], "", True),  # 512 shapes
+    (LONG + '<geometries><mesh file="m.obj"/></geometries>', [], "", True),  # a mesh may hold any number
+    (LONG + '<geometries><mesh file="m.obj"/></geometries><render bvh="false"/>', [], "", False),  # no tree
+    (LONG + "<!-- " + "<mesh file='m.obj'/>" + " -->", [], "", False),  # a comment is not a mesh
+    (LONG, ["--help"], "", True),  # what the launcher does not read: the module, as before
+    (IMAGE + '<geometries><mesh file="m.obj"/></geometries>', [], "", False),  # the quick tier alone
+])
+def test_the_vector_module_is_left_out_for_a_scene_too_small_for_the_vector_walk(tmp_path, body, args, asked,
+                                                                                  vector):
+    folder = fake_project(tmp_path)
+    home = fake_jdk(tmp_path, "17.0.12", "java.base jdk.incubator.vector")
+    scene = scene_file(tmp_path, body)
+    done = run(folder, str(scene), *args, env={"JAVA_HOME": str(home), "RAYTRACER_VECTOR": asked})
+    assert done.returncode == 3, done.stderr
+    assert ("jdk.incubator.vector" in done.stdout.splitlines()) == vector
+
+
 def test_without_a_scene_the_showcase_is_estimated_and_a_big_file_is_not_read(tmp_path):
     folder = fake_project(tmp_path)
     home = fake_jdk(tmp_path, "17.0.12")
