@@ -17,8 +17,8 @@ import primitives.Vector;
  * test, then the primitives' tests, as the walk does them) on every leaf the ray can reach, and
  * on the shapes without a box. Every other answer is false, and the caller walks the tree as
  * without the index: a cell with more than {@link #MOST_LEAVES} leaves or with a user's shape, a
- * ray that is not one of this light's shadow rays, a shape that crosses the ray. The index is immutable; any number of
- * render threads may ask it.
+ * ray that is not one of this light's shadow rays, a shape that crosses the ray. The index is
+ * immutable; any number of render threads may ask it.
  *
  * @hidden internal: built per light by the renderer ({@link LeanQueries#shadowIndexFrom},
  *         {@link LeanQueries#shadowIndexAlong})
